@@ -1,0 +1,147 @@
+// coldblast theory: the paper's Table 2 (exact rational exponents) for any dimension d.
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "cli/commands.hpp"
+#include "common/validate.hpp"
+#include "theory/exponents.hpp"
+
+namespace coldblast::cli {
+
+namespace {
+
+struct TheoryOptions {
+  int d = 2;
+  std::string d_range;
+  Format format = Format::table;
+};
+
+common::Json rational_json(const theory::Rational& value) {
+  return {{"rational", theory::to_string(value)}, {"value", theory::to_double(value)}};
+}
+
+common::Json dimension_json(int d) {
+  const theory::ScalingExponents s = theory::scaling_exponents(d);
+  const theory::ConvectionDiffusionExponents c = theory::convection_diffusion_exponents(d);
+  common::Json exponents = common::Json::object();
+  for (const auto& [name, e] : s.named()) {
+    common::Json entry = rational_json(e.in_time);
+    entry["R_over_lambda"] = rational_json(e.in_R_over_lambda);
+    exponents[name] = entry;
+  }
+  return {{"d", d},
+          {"pathological", s.pathological},
+          {"h_d", rational_json(s.h_d)},
+          {"omega_d", rational_json(s.omega_d)},
+          {"exponents", exponents},
+          {"convection_diffusion",
+           {{"drift", rational_json(c.drift)},
+            {"diffusion", rational_json(c.diffusion)},
+            {"spread", rational_json(c.spread)},
+            {"density", rational_json(c.density)},
+            {"gaussian_coefficient", rational_json(c.gaussian_coefficient)}}}};
+}
+
+std::string cell(const theory::Rational& value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%-9s %9.6f", theory::to_string(value).c_str(),
+                theory::to_double(value));
+  return buffer;
+}
+
+void print_detail(int d) {
+  const theory::ScalingExponents s = theory::scaling_exponents(d);
+  const theory::ConvectionDiffusionExponents c = theory::convection_diffusion_exponents(d);
+  std::cout << "d = " << d << (s.pathological ? "  (pathological: no hydrodynamics in 1D, paper Sec. II)" : "")
+            << "\n  h_d     = " << cell(s.h_d) << "\n  omega_d = " << cell(s.omega_d) << "\n\n"
+            << "  quantity  time exponent         exponent in R/lambda\n";
+  for (const auto& [name, e] : s.named()) {
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-8s  %s   %s\n", name.c_str(), cell(e.in_time).c_str(),
+                  cell(e.in_R_over_lambda).c_str());
+    std::cout << line;
+  }
+  std::cout << "\n  convection-diffusion (Sec. IV): (d/dt + t^(" << theory::to_string(c.drift)
+            << ") d/dr) P = t^(" << theory::to_string(c.diffusion) << ") Laplacian P\n"
+            << "    P = t^(-" << theory::to_string(c.density) << ") Pscaled(eta), eta = r t^(-"
+            << theory::to_string(c.spread) << "), Pscaled ~ exp(-" << theory::to_string(c.gaussian_coefficient)
+            << " eta^2)\n";
+}
+
+void print_table(int d_first, int d_last) {
+  // Column order of the paper's Table 2, then R, H and D0.
+  const char* names[] = {"C_imp", "R_imp", "V_imp", "u_imp", "n0", "T0", "R", "H", "D0"};
+  std::cout << "time exponents t^alpha (paper Table 2 for any d)\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "%-4s %-11s %-11s", "d", "h_d", "omega_d");
+  std::cout << line;
+  for (const char* name : names) {
+    std::snprintf(line, sizeof line, "%-13s", name);
+    std::cout << line;
+  }
+  std::cout << '\n';
+  for (int d = d_first; d <= d_last; ++d) {
+    const theory::ScalingExponents s = theory::scaling_exponents(d);
+    std::snprintf(line, sizeof line, "%-4d %-11s %-11s", d, theory::to_string(s.h_d).c_str(),
+                  theory::to_string(s.omega_d).c_str());
+    std::cout << line;
+    for (const char* name : names) {
+      std::snprintf(line, sizeof line, "%-13s", theory::to_string(s.at(name).in_time).c_str());
+      std::cout << line;
+    }
+    std::cout << (s.pathological ? "  (pathological)" : "") << '\n';
+  }
+}
+
+std::pair<int, int> parse_range(const std::string& text) {
+  const auto dots = text.find("..");
+  int first = 0, last = 0;
+  try {
+    if (dots == std::string::npos) throw std::invalid_argument("");
+    std::size_t used1 = 0, used2 = 0;
+    first = std::stoi(text.substr(0, dots), &used1);
+    last = std::stoi(text.substr(dots + 2), &used2);
+    if (used1 != dots || used2 != text.size() - dots - 2) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw std::invalid_argument("--d-range = " + text + " is not of the form FIRST..LAST (e.g. 2..6)");
+  }
+  common::require_integer_in_range("--d-range first", first, theory::min_dimension, theory::max_dimension);
+  common::require_integer_in_range("--d-range last", last, first, std::min(first + 999, theory::max_dimension),
+                           "(at most 1000 dimensions, last >= first)");
+  return {first, last};
+}
+
+void run(const TheoryOptions& options) {
+  if (options.d_range.empty()) {
+    common::require_integer_in_range("--d", options.d, theory::min_dimension, theory::max_dimension);
+    if (options.format == Format::json) print_json(dimension_json(options.d));
+    else print_detail(options.d);
+    return;
+  }
+  const auto [first, last] = parse_range(options.d_range);
+  if (options.format == Format::json) {
+    common::Json all = common::Json::array();
+    for (int d = first; d <= last; ++d) all.push_back(dimension_json(d));
+    print_json(all);
+  } else {
+    print_table(first, last);
+  }
+}
+
+}  // namespace
+
+void add_theory_command(CLI::App& app) {
+  auto options = std::make_shared<TheoryOptions>();
+  CLI::App* command = app.add_subcommand(
+      "theory", "Exact rational scaling exponents of the paper (Table 2, Eqs. 4-12, 21-24, Sec. IV) for any d");
+  auto* d_option = command->add_option("--d", options->d, "Spatial dimension d (integer, 1..10000)")
+                       ->capture_default_str();
+  command->add_option("--d-range", options->d_range, "Range of dimensions FIRST..LAST, e.g. 2..6")
+      ->excludes(d_option);
+  add_format_option(*command, options->format);
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace coldblast::cli

@@ -1,0 +1,36 @@
+#pragma once
+// One registration function per subcommand (cli/cmd_<name>.cpp), called once by main().
+// Each maps flags to its module's Config, calls run_<x>() and writes files and the summary.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "common/output.hpp"
+
+namespace coldblast::cli {
+
+void add_theory_command(CLI::App& app);
+
+/// Output format shared by every subcommand (--format table|json).
+enum class Format { table, json };
+
+/// Adds `--format table|json` (default table) to a subcommand.
+inline CLI::Option* add_format_option(CLI::App& command, Format& format) {
+  return command
+      .add_option("--format", format, "Output format of the stdout summary: table or json")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, Format>{{"table", Format::table}, {"json", Format::json}},
+          CLI::ignore_case))
+      ->default_str("table");
+}
+
+/// Thrown by a subcommand that finished its work but must exit with a specific non-zero status
+/// (coldblast compare: 3 when the verdict is "fail"); main() returns `code`.
+struct ExitStatus {
+  int code;
+};
+
+/// Prints a JSON document to stdout (2-space indentation, trailing newline).
+void print_json(const common::Json& document);
+
+}  // namespace coldblast::cli

@@ -1,0 +1,50 @@
+// coldblast: one binary, one subcommand per flow. Exit codes: 0 success, 1 runtime failure,
+// 2 usage or parameter error, 3 a comparison verdict of "fail" (coldblast compare).
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <stdexcept>
+
+#include <gsl/gsl_errno.h>
+
+#include "cli/commands.hpp"
+#include "coldblast/build_info.hpp"
+
+namespace coldblast::cli {
+void print_json(const common::Json& document) { std::cout << document.dump(2) << '\n'; }
+}  // namespace coldblast::cli
+
+int main(int argc, char** argv) {
+  using namespace coldblast;
+  gsl_set_error_handler_off();  // GSL aborts by default; every status is checked instead
+  common::set_command_line(argc, argv);
+
+  CLI::App app{"coldblast: theory, hydrodynamics and molecular dynamics of a blast in a "
+               "zero-temperature hard-sphere gas (units: m = 1, k_B = 1, a = particle radius)"};
+  app.set_version_flag("--version", std::string("coldblast ") + common::version + " (" +
+                                        common::git_commit + ")");
+  app.require_subcommand(1);
+  cli::add_theory_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const cli::ExitStatus& status) {
+    return status.code;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "coldblast: error: " << e.what() << "\n(run with --help for the options)\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "coldblast: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "coldblast: failed: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

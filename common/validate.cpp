@@ -1,0 +1,42 @@
+#include "common/validate.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace coldblast::common {
+
+std::string format_number(double value) {
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  if (std::isnan(value)) return "nan";
+  char buffer[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+    if (std::strtod(buffer, nullptr) == value) break;
+  }
+  return buffer;
+}
+
+void require_in_range(const std::string& name, double value, double lo, double hi, Bound lo_bound,
+                      Bound hi_bound, const std::string& context) {
+  const bool above = lo_bound == Bound::open ? value > lo : value >= lo;
+  const bool below = hi_bound == Bound::open ? value < hi : value <= hi;
+  if (std::isfinite(value) && above && below) return;
+  const std::string range = std::string(lo_bound == Bound::open ? "(" : "[") + format_number(lo) +
+                            ", " + format_number(hi) + (hi_bound == Bound::open ? ")" : "]");
+  throw std::invalid_argument(name + " = " + format_number(value) + " is outside " + range +
+                              (context.empty() ? "" : " " + context));
+}
+
+void require_integer_in_range(const std::string& name, long long value, long long lo, long long hi,
+                      const std::string& context) {
+  if (value >= lo && value <= hi) return;
+  const std::string hi_text =
+      hi == std::numeric_limits<long long>::max() ? "inf" : std::to_string(hi);
+  throw std::invalid_argument(name + " = " + std::to_string(value) + " is outside [" +
+                              std::to_string(lo) + ", " + hi_text + "]" +
+                              (context.empty() ? "" : " " + context));
+}
+
+}  // namespace coldblast::common
