@@ -1,0 +1,92 @@
+#include "compare/power_law.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace coldblast::compare {
+
+JackknifeResult jackknife(const BlockSeries& series,
+                          const std::function<Eigen::VectorXd(const std::vector<double>&)>& estimator) {
+  std::vector<long> used;
+  for (std::size_t b = 0; b < series.block_count(); ++b) {
+    double count = 0;
+    for (double c : series.counts[b]) count += c;
+    if (count > 0) used.push_back(static_cast<long>(b));
+  }
+  if (used.size() < 2)
+    throw std::invalid_argument("observable " + series.observable + ": " + std::to_string(used.size()) +
+                                " non-empty block(s); an error bar needs at least 2 (raise realizations "
+                                "or lower block_size)");
+  JackknifeResult result;
+  result.blocks = static_cast<int>(used.size());
+  result.value = estimator(series.ensemble_values());
+  const auto B = static_cast<double>(used.size());
+  std::vector<Eigen::VectorXd> samples;
+  samples.reserve(used.size());
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero(result.value.size());
+  for (long b : used) {
+    samples.push_back(estimator(series.ensemble_values(b)));
+    mean += samples.back();
+  }
+  mean /= B;
+  result.covariance = Eigen::MatrixXd::Zero(result.value.size(), result.value.size());
+  for (const auto& sample : samples) result.covariance += (sample - mean) * (sample - mean).transpose();
+  result.covariance *= (B - 1.0) / B;
+  return result;
+}
+
+std::vector<RunningExponent> running_exponents(const BlockSeries& series) {
+  const std::size_t K = series.time_count();
+  if (K < 2)
+    throw std::invalid_argument("observable " + series.observable + ": a running exponent needs at least 2 recording times");
+  auto estimator = [&](const std::vector<double>& A) {
+    Eigen::VectorXd alpha(static_cast<Eigen::Index>(K - 1));
+    for (std::size_t k = 0; k + 1 < K; ++k)
+      alpha[static_cast<Eigen::Index>(k)] =
+          std::log(A[k + 1] / A[k]) / std::log(series.t[k + 1] / series.t[k]);  // Sec. V running exponent
+    return alpha;
+  };
+  const JackknifeResult j = jackknife(series, estimator);
+  std::vector<RunningExponent> out(K - 1);
+  for (std::size_t k = 0; k + 1 < K; ++k) {
+    const auto i = static_cast<Eigen::Index>(k);
+    out[k] = {series.t[k], series.t[k + 1], j.value[i], std::sqrt(j.covariance(i, i))};
+  }
+  return out;
+}
+
+PowerLawFit fit_power_law(const BlockSeries& series, double t_first, double t_last) {
+  std::vector<std::size_t> inside;
+  for (std::size_t k = 0; k < series.time_count(); ++k)
+    if (series.t[k] >= t_first && series.t[k] <= t_last) inside.push_back(k);
+  if (inside.size() < 2)
+    throw std::invalid_argument("observable " + series.observable + ": the fit window [" + std::to_string(t_first) +
+                                ", " + std::to_string(t_last) + "] holds " + std::to_string(inside.size()) +
+                                " recording time(s); at least 2 are needed");
+  Eigen::MatrixXd X(static_cast<Eigen::Index>(inside.size()), 2);
+  for (std::size_t i = 0; i < inside.size(); ++i) {
+    X(static_cast<Eigen::Index>(i), 0) = 1.0;
+    X(static_cast<Eigen::Index>(i), 1) = std::log(series.t[inside[i]]);
+  }
+  const auto qr = X.colPivHouseholderQr();
+  auto estimator = [&](const std::vector<double>& A) {
+    Eigen::VectorXd y(static_cast<Eigen::Index>(inside.size()));
+    for (std::size_t i = 0; i < inside.size(); ++i) y[static_cast<Eigen::Index>(i)] = std::log(A[inside[i]]);
+    return Eigen::VectorXd(qr.solve(y));
+  };
+  const JackknifeResult j = jackknife(series, estimator);
+  PowerLawFit fit;
+  fit.log_amplitude = j.value[0];
+  fit.exponent = j.value[1];
+  fit.covariance = j.covariance;
+  fit.log_amplitude_error = std::sqrt(j.covariance(0, 0));
+  fit.exponent_error = std::sqrt(j.covariance(1, 1));
+  fit.t_first = series.t[inside.front()];
+  fit.t_last = series.t[inside.back()];
+  fit.points = static_cast<int>(inside.size());
+  fit.blocks = j.blocks;
+  return fit;
+}
+
+}  // namespace coldblast::compare

@@ -1,0 +1,54 @@
+#pragma once
+// Reads an MD run directory (the contract of docs/md-output.md): blocks.csv holds, per block of
+// realizations, time and observable, the sum of the per-realization inner values and their count;
+// summary.json holds the scene. Jackknife errors in compare/ are computed from these blocks.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/output.hpp"
+
+namespace coldblast::compare {
+
+/// How an observable is built from the ensemble mean m of its per-realization inner value.
+enum class Transform {
+  identity,  ///< A = m (C_imp, u_imp, n0, T0, R)
+  sqrt       ///< A = sqrt(m) (R_imp = <r²/2>^(1/2), V_imp = <v²/2>^(1/2), Eq. (38))
+};
+
+/// The transform of a known observable name; throws std::invalid_argument for an unknown one.
+Transform transform_for(const std::string& observable);
+
+/// Block sums of one observable: sums[b][k] over the realizations of block b at time t[k].
+struct BlockSeries {
+  std::string observable;
+  Transform transform = Transform::identity;
+  std::vector<double> t;
+  std::vector<std::vector<double>> sums;    ///< [block][time]
+  std::vector<std::vector<double>> counts;  ///< [block][time]
+
+  std::size_t block_count() const { return sums.size(); }
+  std::size_t time_count() const { return t.size(); }
+  /// A(t_k) from all blocks, or with block `excluded` left out (jackknife); count-weighted.
+  std::vector<double> ensemble_values(long excluded = -1) const;
+  /// Total number of realizations at time index k.
+  double realizations_at(std::size_t k) const;
+};
+
+/// Everything compare/ needs from a run directory.
+struct RunData {
+  std::filesystem::path directory;
+  common::Json summary;
+  int d = 0;
+  std::map<std::string, BlockSeries> series;  ///< keyed by observable name
+};
+
+/// Reads blocks.csv and summary.json from `directory`; throws std::invalid_argument naming the
+/// file (and line) when the directory, a file or a field is missing or malformed.
+RunData read_run(const std::filesystem::path& directory);
+
+/// Parses the blocks.csv text (header `block,t,observable,sum,count`, '#' comment lines allowed).
+std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, const std::string& source);
+
+}  // namespace coldblast::compare
