@@ -33,3 +33,28 @@ inline BlockSeries synthetic_series(unsigned seed, int blocks, int per_block, in
 }
 
 }  // namespace coldblast::compare::testing
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "common/output.hpp"
+
+namespace coldblast::compare::testing {
+
+/// Writes a run directory (summary.json + blocks.csv) holding the given series.
+inline void write_synthetic_run(const std::filesystem::path& dir, int d,
+                                const std::map<std::string, BlockSeries>& series) {
+  std::ostringstream csv;
+  csv.precision(17);
+  csv << "# synthetic run\nblock,t,observable,sum,count\n";
+  for (const auto& [name, s] : series)
+    for (std::size_t b = 0; b < s.block_count(); ++b)
+      for (std::size_t k = 0; k < s.time_count(); ++k)
+        csv << b << ',' << s.t[k] << ',' << name << ',' << s.sums[b][k] << ',' << s.counts[b][k] << '\n';
+  std::filesystem::remove_all(dir);
+  common::write_file_atomic(dir / "blocks.csv", csv.str());
+  common::write_file_atomic(dir / "summary.json", "{\"scene\": {\"d\": " + std::to_string(d) + "}}");
+}
+
+}  // namespace coldblast::compare::testing

@@ -1,0 +1,144 @@
+#include "compare/verdict.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/validate.hpp"
+#include "theory/exponents.hpp"
+
+namespace coldblast::compare {
+
+Reference parse_reference(const std::string& text) {
+  if (text == "theory") return Reference::theory;
+  if (text == "paper") return Reference::paper;
+  if (text == "hydro") return Reference::hydro;
+  throw std::invalid_argument("--against = " + text + " is not one of theory, paper, hydro");
+}
+
+std::string to_string(Reference reference) {
+  switch (reference) {
+    case Reference::theory: return "theory";
+    case Reference::paper: return "paper";
+    case Reference::hydro: return "hydro";
+  }
+  throw std::logic_error("unknown Reference");
+}
+
+const std::vector<std::string>& table1_observables() {
+  static const std::vector<std::string> names = {"R_imp", "C_imp", "V_imp", "u_imp", "T0", "n0"};
+  return names;
+}
+
+PaperValue paper_table1(const std::string& observable) {
+  // Paper Table 1 (tbl:results; macros \aRimp ... \daTo of the source): 3e4 realizations
+  // (5e3 for the core quantities), N = 40000, n = 0.15, a = 1/2, exponent at the last two times.
+  if (observable == "R_imp") return {0.423, 0.014};
+  if (observable == "C_imp") return {0.363, 0.007};
+  if (observable == "V_imp") return {-0.399, 0.017};
+  if (observable == "u_imp") return {-0.446, 0.042};
+  if (observable == "T0") return {-0.692, 0.035};
+  if (observable == "n0") return {-0.168, 0.034};
+  throw std::invalid_argument("observable = " + observable +
+                              " is not in the paper's Table 1 (R_imp, C_imp, V_imp, u_imp, T0, n0)");
+}
+
+void CompareConfig::validate() const {
+  using common::require_in_range;
+  using common::Bound;
+  require_in_range("--sigma", sigma, 0.0, 10.0, Bound::open, Bound::closed);
+  if (allowance >= 0) require_in_range("--allowance", allowance, 0.0, 1.0, Bound::closed, Bound::closed);
+  require_in_range("--window-decades", window_decades, 0.0, 6.0, Bound::open, Bound::closed);
+  for (const auto& name : observables) {
+    const auto& known = table1_observables();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw std::invalid_argument("--observables: " + name +
+                                  " is unknown; allowed: R_imp, C_imp, V_imp, u_imp, T0, n0");
+  }
+}
+
+double CompareConfig::effective_allowance() const {
+  if (allowance >= 0) return allowance;
+  switch (against) {
+    case Reference::theory: return 0.10;
+    case Reference::hydro: return 0.05;
+    case Reference::paper: return 0.0;
+  }
+  throw std::logic_error("unknown Reference");
+}
+
+CompareResult run_compare(const CompareConfig& config) {
+  if (config.against == Reference::hydro)
+    throw std::invalid_argument("--against hydro needs the Navier–Stokes prediction: call run_compare with reference exponents");
+  return run_compare(config, nullptr);
+}
+
+CompareResult run_compare(const CompareConfig& config, const ReferenceExponents& reference) {
+  config.validate();
+  CompareResult result;
+  result.run = read_run(config.run_dir);
+  result.d = result.run.d;
+  result.against = config.against;
+  result.sigma = config.sigma;
+  result.allowance = config.effective_allowance();
+  if (config.against == Reference::paper && result.d != 2)
+    throw std::invalid_argument("--against paper: the paper's Table 1 is for d = 2, the run has d = " +
+                                std::to_string(result.d));
+  if (config.against == Reference::hydro && !reference)
+    throw std::invalid_argument("--against hydro: no hydro reference exponents were supplied");
+
+  std::vector<std::string> names = config.observables;
+  if (names.empty())
+    for (const auto& name : table1_observables())
+      if (result.run.series.count(name)) names.push_back(name);
+  if (names.empty())
+    throw std::invalid_argument("RUN_DIR = " + config.run_dir.string() +
+                                ": blocks.csv holds none of R_imp, C_imp, V_imp, u_imp, T0, n0");
+
+  const theory::ScalingExponents exact = theory::scaling_exponents(result.d);
+  result.pass = true;
+  for (const auto& name : names) {
+    const auto found = result.run.series.find(name);
+    if (found == result.run.series.end())
+      throw std::invalid_argument("--observables: " + name + " is not recorded in " + config.run_dir.string());
+    const BlockSeries& series = found->second;
+    ObservableVerdict v;
+    v.name = name;
+    v.alpha_theory = theory::to_double(exact.at(name).in_time);
+    v.alpha_theory_rational = theory::to_string(exact.at(name).in_time);
+    v.running = running_exponents(series);
+    v.alpha_measured = v.running.back().alpha;
+    v.alpha_error = v.running.back().error;
+    v.t_measured = v.running.back().t;
+    const double t_last = series.t.back();
+    v.window = fit_power_law(series, t_last * std::pow(10.0, -config.window_decades), t_last);
+
+    double combined = v.alpha_error;
+    switch (config.against) {
+      case Reference::theory:
+        v.alpha_reference = v.alpha_theory;
+        v.tolerance = config.sigma * v.alpha_error + result.allowance;
+        break;
+      case Reference::paper: {
+        const PaperValue p = paper_table1(name);
+        v.alpha_reference = p.alpha;
+        v.alpha_reference_error = p.error;
+        combined = std::hypot(v.alpha_error, p.error);
+        v.tolerance = config.sigma * combined;
+        break;
+      }
+      case Reference::hydro:
+        v.alpha_reference = reference(name, v.t_measured);
+        v.tolerance = config.sigma * v.alpha_error + result.allowance;
+        break;
+    }
+    const double difference = v.alpha_measured - v.alpha_reference;
+    v.deviation_sigma = combined > 0 ? difference / combined : (difference == 0 ? 0.0 : INFINITY);
+    v.pass = std::isfinite(v.alpha_measured) && std::abs(difference) <= v.tolerance;
+    result.pass = result.pass && v.pass;
+    result.observables.push_back(std::move(v));
+  }
+  return result;
+}
+
+}  // namespace coldblast::compare

@@ -1,0 +1,116 @@
+// Verdicts on synthetic runs whose exponents are known: the exact rationals pass against theory,
+// a wrong exponent fails, the paper reference combines both errors, and bad configs are rejected.
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+#include "compare/verdict.hpp"
+#include "synthetic.hpp"
+#include "theory/exponents.hpp"
+
+using namespace coldblast::compare;
+using coldblast::compare::testing::synthetic_series;
+using coldblast::compare::testing::write_synthetic_run;
+namespace fs = std::filesystem;
+
+namespace {
+// A run whose observables follow the theory's exponents exactly (up to noise), with one
+// observable's exponent shifted by `shift`.
+fs::path make_run(int d, const std::string& shifted = "", double shift = 0.0, double sigma = 0.05) {
+  const auto exact = coldblast::theory::scaling_exponents(d);
+  std::map<std::string, BlockSeries> series;
+  unsigned seed = 11;
+  for (const auto& name : table1_observables()) {
+    const Transform transform = transform_for(name);
+    double beta = coldblast::theory::to_double(exact.at(name).in_time) + (name == shifted ? shift : 0.0);
+    if (transform == Transform::sqrt) beta *= 2.0;  // inner value is r²/2 or v²/2
+    BlockSeries s = synthetic_series(seed++, 30, 4, 20, beta, sigma, 0.7, transform);
+    s.observable = name;
+    series[name] = s;
+  }
+  const fs::path dir = fs::temp_directory_path() / ("coldblast_verdict_" + std::to_string(d) + shifted);
+  write_synthetic_run(dir, d, series);
+  return dir;
+}
+}  // namespace
+
+TEST_CASE("exact exponents pass against theory; a shifted one fails", "[fast]") {
+  CompareConfig config;
+  config.run_dir = make_run(2);
+  config.allowance = 0.0;
+  config.sigma = 4.0;
+  const CompareResult good = run_compare(config);
+  CHECK(good.pass);
+  REQUIRE(good.observables.size() == 6);
+  for (const auto& v : good.observables) {
+    INFO(v.name << ": " << v.alpha_measured << " +- " << v.alpha_error);
+    CHECK(std::abs(v.deviation_sigma) < 4.0);
+    CHECK(v.alpha_error > 0.0);
+    CHECK(v.window.exponent == Approx(v.alpha_theory).margin(4 * v.window.exponent_error));
+  }
+  CHECK(good.observables[0].alpha_theory_rational == "2/5");
+
+  config.run_dir = make_run(2, "T0", 0.2);
+  const CompareResult bad = run_compare(config);
+  CHECK_FALSE(bad.pass);
+  for (const auto& v : bad.observables) CHECK(v.pass == (v.name != "T0"));
+  fs::remove_all(config.run_dir);
+}
+
+TEST_CASE("the allowance widens the tolerance by exactly its value", "[fast]") {
+  CompareConfig config;
+  config.run_dir = make_run(3, "n0", 0.2, 0.0);  // noise-free: error 0, deviation exactly 0.2
+  config.allowance = 0.19;
+  CHECK_FALSE(run_compare(config).pass);
+  config.allowance = 0.21;
+  CHECK(run_compare(config).pass);
+  CHECK(run_compare(config).observables[0].alpha_theory_rational == "62/175");
+  fs::remove_all(config.run_dir);
+}
+
+TEST_CASE("against the paper: Table 1 values and combined 2-sigma errors", "[fast]") {
+  CHECK(paper_table1("T0").alpha == -0.692);
+  CHECK(paper_table1("u_imp").error == 0.042);
+  CHECK_THROWS_WITH(paper_table1("R"), Catch::Contains("Table 1"));
+  CompareConfig config;
+  config.run_dir = make_run(2, "", 0.0, 0.0);  // exact theory exponents, zero error
+  config.against = Reference::paper;
+  const CompareResult result = run_compare(config);
+  for (const auto& v : result.observables) {
+    const PaperValue p = paper_table1(v.name);
+    INFO(v.name);
+    CHECK(v.deviation_sigma == Approx((v.alpha_theory - p.alpha) / p.error).epsilon(1e-9));
+    CHECK(v.pass == (std::abs(v.alpha_theory - p.alpha) <= 2 * p.error));
+  }
+  // The paper's own numbers: u_imp (-0.446 ± 0.042 vs -3/5) and T0 are > 2 sigma from theory.
+  CHECK_FALSE(result.pass);
+  config.run_dir = make_run(3);
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("d = 2"));
+}
+
+TEST_CASE("hydro references come from the supplied function at the measured time", "[fast]") {
+  CompareConfig config;
+  config.run_dir = make_run(2, "", 0.0, 0.0);
+  config.against = Reference::hydro;
+  config.allowance = 1e-12;  // noise-free data: only round-off separates the exponents
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("hydro"));
+  const auto exact = coldblast::theory::scaling_exponents(2);
+  const CompareResult result = run_compare(config, [&](const std::string& name, double) {
+    return coldblast::theory::to_double(exact.at(name).in_time);
+  });
+  CHECK(result.pass);
+}
+
+TEST_CASE("bad compare configs name the option", "[fast]") {
+  CompareConfig config;
+  config.run_dir = make_run(2);
+  config.sigma = 0.0;
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--sigma"));
+  config.sigma = 2.0;
+  config.observables = {"speed"};
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("speed"));
+  config.observables = {};
+  config.allowance = 2.0;
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--allowance"));
+  CHECK_THROWS_WITH(parse_reference("md"), Catch::Contains("--against"));
+}
