@@ -1,0 +1,94 @@
+// coldblast compare: MD running exponents against theory, the paper's Table 1 or hydro, with a
+// verdict (exit 0 pass, 3 fail), a Markdown report and figures.
+#include <iostream>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "common/validate.hpp"
+#include "compare/report.hpp"
+#include "compare/verdict.hpp"
+
+namespace coldblast::cli {
+
+namespace {
+
+struct CompareOptions {
+  std::string run_dir;
+  std::string against = "theory";
+  std::string observables;
+  std::string out;
+  bool no_figures = false;
+  Format format = Format::table;
+  compare::CompareConfig config;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+void print_table(const compare::CompareResult& result) {
+  std::printf("MD (d = %d) against %s: errors by delete-one-block jackknife, tolerance %g sigma%s\n\n", result.d,
+              compare::to_string(result.against).c_str(), result.sigma,
+              result.against == compare::Reference::paper
+                  ? " (combined with the paper's error)"
+                  : (" + allowance " + common::format_number(result.allowance)).c_str());
+  std::printf("%-7s %-10s %-17s %-24s %-19s %8s  %s\n", "obs", "alpha_T", "reference", "alpha_S(last two t)",
+              "window fit", "dev/sig", "verdict");
+  for (const auto& v : result.observables) {
+    char reference[64], measured[64], window[64];
+    std::snprintf(reference, sizeof reference, v.alpha_reference_error > 0 ? "%.4f±%.3f" : "%.4f",
+                  v.alpha_reference, v.alpha_reference_error);
+    std::snprintf(measured, sizeof measured, "%.4f±%.4f @%g", v.alpha_measured, v.alpha_error, v.t_measured);
+    std::snprintf(window, sizeof window, "%.4f±%.4f", v.window.exponent, v.window.exponent_error);
+    std::printf("%-7s %-10s %-17s %-24s %-19s %+8.2f  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(),
+                reference, measured, window, v.deviation_sigma, v.pass ? "pass" : "FAIL");
+  }
+  std::printf("\nverdict: %s\n", result.pass ? "PASS" : "FAIL");
+}
+
+void run(CompareOptions& options) {
+  options.config.run_dir = options.run_dir;
+  options.config.against = compare::parse_reference(options.against);
+  options.config.observables = split_list(options.observables);
+  const compare::CompareResult result = compare::run_compare(options.config);
+  if (!options.out.empty()) {
+    const auto files = compare::write_report(result, {options.out, !options.no_figures});
+    std::cerr << "compare: wrote " << files.size() << " files to " << options.out << '\n';
+  }
+  if (options.format == Format::json) print_json(compare::verdict_json(result));
+  else print_table(result);
+  if (!result.pass) throw ExitStatus{3};
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app) {
+  auto options = std::make_shared<CompareOptions>();
+  CLI::App* command = app.add_subcommand(
+      "compare", "Check an MD run's exponents against theory, the paper's Table 1 or hydro; exit 0 pass, 3 fail");
+  command->add_option("RUN_DIR", options->run_dir, "Output directory of `coldblast md run` (blocks.csv, summary.json)")
+      ->required();
+  command->add_option("--against", options->against, "Reference: theory (exact rationals), paper (Table 1) or hydro")
+      ->capture_default_str();
+  command->add_option("--sigma", options->config.sigma, "k: pass when |alpha_S - alpha_ref| <= k*error (+ allowance); (0, 10]")
+      ->capture_default_str();
+  command->add_option("--allowance", options->config.allowance,
+                      "Finite-time allowance on |alpha_S - alpha_ref| for theory/hydro, [0, 1]; "
+                      "default 0.10 (theory), 0.05 (hydro), 0 (paper)");
+  command->add_option("--window-decades", options->config.window_decades,
+                      "Window fit over the last W decades of recorded time, (0, 6]")
+      ->capture_default_str();
+  command->add_option("--observables", options->observables,
+                      "Comma-separated subset of R_imp,C_imp,V_imp,u_imp,T0,n0 (default: all recorded)");
+  command->add_option("--out", options->out, "Report directory (report.md, verdict.json, exponents.csv, figures/)");
+  command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
+  add_format_option(*command, options->format);
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace coldblast::cli

@@ -1,0 +1,189 @@
+#include "compare/report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+#include "common/validate.hpp"
+
+namespace coldblast::compare {
+
+namespace fs = std::filesystem;
+using common::format_number;
+
+common::Json verdict_json(const CompareResult& result) {
+  common::Json observables = common::Json::array();
+  for (const auto& v : result.observables) {
+    common::Json running = common::Json::array();
+    for (const auto& r : v.running) running.push_back({{"t", r.t}, {"alpha", r.alpha}, {"error", r.error}});
+    observables.push_back({{"name", v.name},
+                           {"alpha_theory", v.alpha_theory},
+                           {"alpha_theory_rational", v.alpha_theory_rational},
+                           {"alpha_reference", v.alpha_reference},
+                           {"alpha_reference_error", v.alpha_reference_error},
+                           {"alpha_measured", v.alpha_measured},
+                           {"alpha_error", v.alpha_error},
+                           {"t_measured", v.t_measured},
+                           {"window", {{"exponent", v.window.exponent},
+                                       {"error", v.window.exponent_error},
+                                       {"t_first", v.window.t_first},
+                                       {"t_last", v.window.t_last},
+                                       {"points", v.window.points}}},
+                           {"deviation_sigma", v.deviation_sigma},
+                           {"tolerance", v.tolerance},
+                           {"pass", v.pass},
+                           {"running", running}});
+  }
+  return {{"d", result.d},
+          {"against", to_string(result.against)},
+          {"sigma", result.sigma},
+          {"allowance", result.allowance},
+          {"run_dir", result.run.directory.string()},
+          {"observables", observables},
+          {"pass", result.pass}};
+}
+
+std::string running_exponents_csv(const CompareResult& result) {
+  std::ostringstream out;
+  out << common::provenance_header({{"run_dir", result.run.directory.string()}, {"against", to_string(result.against)}},
+                                   "t in the MD's time unit (m = 1, k_B = 1, a = radius); alpha dimensionless")
+      << "t,t_next,observable,alpha,error,alpha_theory\n";
+  for (const auto& v : result.observables)
+    for (const auto& r : v.running)
+      out << format_number(r.t) << ',' << format_number(r.t_next) << ',' << v.name << ','
+          << format_number(r.alpha) << ',' << format_number(r.error) << ',' << format_number(v.alpha_theory) << '\n';
+  return out.str();
+}
+
+void run_gnuplot(const fs::path& folder, const std::string& script_name) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+    throw std::runtime_error("gnuplot is not installed (apt-get install gnuplot-nox), or pass --no-figures");
+  const std::string command = "cd '" + folder.string() + "' && gnuplot '" + script_name + "' 2> gnuplot.log";
+  if (std::system(command.c_str()) != 0) {
+    std::ifstream log(folder / "gnuplot.log");
+    std::stringstream text;
+    text << log.rdbuf();
+    throw std::runtime_error("gnuplot failed on " + (folder / script_name).string() + ":\n" + text.str());
+  }
+  fs::remove(folder / "gnuplot.log");
+}
+
+namespace {
+
+std::string label(const std::string& name) {
+  if (name == "R_imp") return "R_{imp}";
+  if (name == "V_imp") return "V_{imp}";
+  if (name == "C_imp") return "C_{imp}";
+  if (name == "u_imp") return "u_{imp}";
+  if (name == "n0") return "n_0";
+  if (name == "T0") return "T_0";
+  return name;
+}
+
+// Fig. 2 of the paper: log-log panels of the observables, the theory slope through the last
+// point, and an inset of the running exponent with jackknife error bars.
+void write_observable_figure(const CompareResult& result, const fs::path& folder) {
+  std::ostringstream script;
+  const std::size_t panels = result.observables.size();
+  const int columns = panels > 4 ? 3 : 2;
+  const int rows = static_cast<int>((panels + columns - 1) / columns);
+  script << "set terminal pngcairo size " << 520 * columns << "," << 430 * rows << " font 'Sans,11'\n"
+         << "set output 'observables.png'\n"
+         << "set multiplot\n";
+  for (std::size_t i = 0; i < panels; ++i) {
+    const auto& v = result.observables[i];
+    const BlockSeries& s = result.run.series.at(v.name);
+    const auto values = s.ensemble_values();
+    // Data file: t, A, jackknife-free standard error of A is not needed for the panel (errors
+    // are below symbol size, as in the paper); the inset carries the exponent errors.
+    std::ostringstream data;
+    data.precision(12);
+    for (std::size_t k = 0; k < s.time_count(); ++k) data << s.t[k] << ' ' << values[k] << '\n';
+    common::write_file_atomic(folder / (v.name + ".dat"), data.str());
+    std::ostringstream running;
+    running.precision(12);
+    for (const auto& r : v.running) running << std::sqrt(r.t * r.t_next) << ' ' << r.alpha << ' ' << r.error << '\n';
+    common::write_file_atomic(folder / (v.name + "_alpha.dat"), running.str());
+
+    const double w = 1.0 / columns, h = 1.0 / rows;
+    const double x0 = static_cast<double>(i % columns) * w;
+    const double y0 = 1.0 - static_cast<double>(i / columns + 1) * h;
+    const double t_last = s.t.back(), a_last = values.back();
+    script << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << h << "\n"
+           << "set logscale xy\nset format x '10^{%L}'\nset xlabel 't (MD time units: m = 1, lengths as in the scene)'\n"
+           << "set ylabel '" << label(v.name) << "'\nset key bottom right font ',9'\n"
+           << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name) << ": {/Symbol a}_T = "
+           << v.alpha_theory_rational << ", {/Symbol a}_S = " << format_number(std::round(v.alpha_measured * 1000) / 1000)
+           << " ± " << format_number(std::round(v.alpha_error * 1000) / 1000) << "'\n"
+           << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t 'MD', "
+           << a_last << "*(x/" << t_last << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{"
+           << v.alpha_theory_rational << "}'\n";
+    // Inset: running exponent.
+    const bool rising = v.alpha_theory > 0;
+    script << "reset\nset origin " << x0 + 0.14 * w << "," << y0 + (rising ? 0.52 : 0.16) * h << "\nset size "
+           << 0.42 * w << "," << 0.34 * h << "\nset logscale x\nset format x '10^{%L}'\nset tics font ',8'\n"
+           << "set ylabel '{/Symbol a}(t)' font ',9' offset 1.5,0\nunset key\n"
+           << "plot '" << v.name << "_alpha.dat' u 1:2:3 w yerrorbars pt 7 ps 0.4 lc rgb '#d62728', "
+           << v.alpha_theory << " w l dt 2 lc rgb 'black'\n";
+  }
+  script << "unset multiplot\n";
+  common::write_file_atomic(folder / "observables.gp", script.str());
+  run_gnuplot(folder, "observables.gp");
+}
+
+std::string markdown(const CompareResult& result, bool figures) {
+  std::ostringstream md;
+  md << "# coldblast comparison: MD against " << to_string(result.against) << "\n\n"
+     << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
+     << ". Verdict: **" << (result.pass ? "PASS" : "FAIL") << "** (tolerance: " << format_number(result.sigma)
+     << " sigma";
+  if (result.against != Reference::paper) md << " + allowance " << format_number(result.allowance);
+  md << "; errors: delete-one-block jackknife over realizations).\n\n"
+     << "| observable | alpha_T | reference | alpha_S (last two times) | window fit | deviation / sigma | verdict |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  char buffer[512];
+  for (const auto& v : result.observables) {
+    std::snprintf(buffer, sizeof buffer,
+                  "| %s | %s (%.4f) | %.4f%s | %.4f ± %.4f (t = %s) | %.4f ± %.4f (%d pts) | %+.2f | %s |\n",
+                  v.name.c_str(), v.alpha_theory_rational.c_str(), v.alpha_theory, v.alpha_reference,
+                  v.alpha_reference_error > 0 ? (" ± " + format_number(v.alpha_reference_error)).c_str() : "",
+                  v.alpha_measured, v.alpha_error, format_number(v.t_measured).c_str(), v.window.exponent,
+                  v.window.exponent_error, v.window.points, v.deviation_sigma, v.pass ? "pass" : "**fail**");
+    md << buffer;
+  }
+  if (figures) md << "\n![Observables with running exponents](figures/observables.png)\n";
+  md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
+        "with errors at every recorded pair of times).\n";
+  return md.str();
+}
+
+}  // namespace
+
+std::vector<fs::path> write_report(const CompareResult& result, const ReportConfig& config) {
+  if (config.out.empty()) throw std::invalid_argument("--out: the report directory must not be empty");
+  const fs::path staging = config.out.string() + ".tmp." + std::to_string(::getpid());
+  fs::remove_all(staging);
+  std::vector<fs::path> written;
+  try {
+    common::write_file_atomic(staging / "verdict.json", verdict_json(result).dump(2) + "\n");
+    common::write_file_atomic(staging / "exponents.csv", running_exponents_csv(result));
+    if (config.figures) write_observable_figure(result, staging / "figures");
+    common::write_file_atomic(staging / "report.md", markdown(result, config.figures));
+  } catch (...) {
+    fs::remove_all(staging);
+    throw;
+  }
+  const fs::path old = config.out.string() + ".old." + std::to_string(::getpid());
+  if (fs::exists(config.out)) fs::rename(config.out, old);
+  fs::rename(staging, config.out);
+  fs::remove_all(old);
+  for (const auto& entry : fs::recursive_directory_iterator(config.out))
+    if (entry.is_regular_file()) written.push_back(entry.path());
+  return written;
+}
+
+}  // namespace coldblast::compare

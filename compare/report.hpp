@@ -1,0 +1,32 @@
+#pragma once
+// The comparison report: a Markdown page, machine-readable tables (verdict.json, exponents.csv)
+// and gnuplot figures (Fig. 2-style log-log panels with running-exponent insets). The whole
+// directory is built under a temporary name and renamed at the end, so it is never half-written.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "common/output.hpp"
+#include "compare/verdict.hpp"
+
+namespace coldblast::compare {
+
+/// The JSON document of a verdict (keys documented in docs/cli.md, `## compare`).
+common::Json verdict_json(const CompareResult& result);
+
+/// exponents.csv: t, t_next, observable, alpha, error, alpha_theory for every running exponent.
+std::string running_exponents_csv(const CompareResult& result);
+
+struct ReportConfig {
+  std::filesystem::path out;  ///< report directory (replaced atomically if it exists)
+  bool figures = true;        ///< run gnuplot (Debian gnuplot-nox) to draw PNG figures
+};
+
+/// Writes report.md, verdict.json, exponents.csv and (optionally) figures/*.png; returns the
+/// paths written. Throws std::runtime_error if gnuplot is needed but missing or fails.
+std::vector<std::filesystem::path> write_report(const CompareResult& result, const ReportConfig& config);
+
+/// Runs `gnuplot script` in `folder`; throws std::runtime_error with gnuplot's stderr on failure.
+void run_gnuplot(const std::filesystem::path& folder, const std::string& script_name);
+
+}  // namespace coldblast::compare
