@@ -1,0 +1,39 @@
+#pragma once
+// Equations of state for the TvNS blast: ideal gas of index gamma, Henderson's hard discs
+// (Mol. Phys. 30, 971 (1975), doi:10.1080/00268977500102511) and Carnahan-Starling hard spheres
+// (J. Chem. Phys. 51, 635 (1969), doi:10.1063/1.1672048): p = n T Z(phi), internal energy (d/2) n T,
+// and the strong-shock (cold, pressureless upstream) Rankine-Hugoniot compression.
+#include <string>
+
+namespace coldblast::hydro {
+
+enum class Eos { ideal, henderson, carnahan_starling };
+
+/// "ideal", "henderson" or "carnahan-starling".
+std::string to_string(Eos eos);
+/// Inverse of to_string (also accepts "carnahan_starling"); throws std::invalid_argument naming `option`.
+Eos eos_from_string(const std::string& text, const std::string& option = "eos");
+
+/// The dimension an EOS is defined for: henderson 2, carnahan_starling 3, ideal 0 (any d).
+int eos_dimension(Eos eos);
+
+/// Close packing: π/(2√3) = 0.9069 (discs, d = 2), π/(3√2) = 0.7405 (spheres, d = 3).
+double close_packing_fraction(Eos eos);
+
+/// Compressibility factor Z = p/(n T) at packing fraction phi in [0, 1); 1 for the ideal gas.
+double compressibility(Eos eos, double phi);
+/// dZ/dphi.
+double compressibility_derivative(Eos eos, double phi);
+
+/// Largest ambient phi whose strong-shock state stays below close packing:
+/// phi_max = phi_cp Z(phi_cp)/(Z(phi_cp) + d) (henderson 0.89286, carnahan_starling 0.72042).
+double max_ambient_packing_fraction(Eos eos);
+
+/// Strong-shock compression rho1/rho0 > 1 for a hard-particle gas at ambient phi in (0, phi_max):
+/// the root of Z(phi rho1/rho0)(1 - rho0/rho1) = d rho0/rho1 (GSL Brent); (d+1) when phi -> 0.
+double strong_shock_compression(Eos eos, double phi);
+
+/// Squared adiabatic sound speed over T for hard particles: c^2/T = Z + phi Z' + (2/d) Z^2.
+double sound_speed_squared_over_temperature(Eos eos, double phi);
+
+}  // namespace coldblast::hydro
