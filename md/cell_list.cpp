@@ -1,0 +1,135 @@
+#include "md/cell_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace coldblast::md {
+
+template <int D>
+CellList<D> CellList<D>::periodic(const Vec<D>& box, double min_width, std::size_t particle_count) {
+  CellList list;
+  list.periodic_ = true;
+  list.box_ = box;
+  for (int k = 0; k < D; ++k) {
+    const double cells = std::floor(box[k] / min_width);
+    if (!(cells >= 3.0))
+      throw std::invalid_argument("periodic box side " + std::to_string(box[k]) +
+                                  " is shorter than 3 cells of width " + std::to_string(min_width) +
+                                  ": use more particles");
+    if (cells > 2e9) throw std::invalid_argument("periodic box has too many cells");
+    list.count_[k] = static_cast<std::int32_t>(cells);
+    list.width_[k] = box[k] / cells;
+  }
+  list.set_up(particle_count);
+  return list;
+}
+
+template <int D>
+CellList<D> CellList<D>::open(double region_radius, double guard_radius, double min_width,
+                              std::size_t particle_count) {
+  CellList list;
+  list.periodic_ = false;
+  const double cells_per_axis = 2.0 * std::ceil(region_radius / min_width) + 4.0;
+  if (std::pow(cells_per_axis, D) > 2e9)
+    throw std::invalid_argument("the blast region needs more than 2e9 cells: lower t_max or raise cell_width");
+  for (int k = 0; k < D; ++k) {
+    list.count_[k] = static_cast<std::int32_t>(cells_per_axis);
+    list.width_[k] = min_width;
+    list.lower_[k] = -0.5 * cells_per_axis * min_width;
+    list.box_[k] = cells_per_axis * min_width;
+  }
+  list.set_up(particle_count);
+  // Guard cells: any point of the cell farther than guard_radius from the origin.
+  list.guard_.assign(list.head_.size(), 0);
+  for (std::int32_t cell = 0; cell < list.cell_count(); ++cell) {
+    const auto c = list.coordinates(cell);
+    double far2 = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double lo = list.lower_[k] + c[k] * min_width, hi = lo + min_width;
+      const double far = std::max(std::abs(lo), std::abs(hi));
+      far2 += far * far;
+    }
+    const bool edge = [&] {
+      for (int k = 0; k < D; ++k)
+        if (c[k] == 0 || c[k] == list.count_[k] - 1) return true;
+      return false;
+    }();
+    list.guard_[cell] = (edge || far2 > guard_radius * guard_radius) ? 1 : 0;
+  }
+  return list;
+}
+
+template <int D>
+void CellList<D>::set_up(std::size_t particle_count) {
+  std::size_t total = 1;
+  for (int k = 0; k < D; ++k) {
+    stride_[k] = static_cast<std::int32_t>(total);
+    total *= static_cast<std::size_t>(count_[k]);
+  }
+  head_.assign(total, -1);
+  next_.assign(particle_count, -1);
+  if (periodic_) return;
+  neighbour_delta_.clear();
+  std::array<std::int32_t, D> o;
+  o.fill(-1);
+  while (true) {
+    std::int32_t delta = 0;
+    for (int k = 0; k < D; ++k) delta += o[k] * stride_[k];
+    neighbour_delta_.push_back(delta);
+    for (int axis = 0; axis < D; ++axis)
+      for (int side = 0; side < 2; ++side) {
+        const int direction = side == 0 ? -1 : 1;
+        if (o[axis] != 0) continue;
+        // Cell `delta + direction` along `axis` belongs to the new slab when o[axis] == 0.
+        slab_delta_[axis][side].push_back(delta + direction * stride_[axis]);
+      }
+    int k = 0;
+    while (k < D && o[k] == 1) o[k++] = -1;
+    if (k == D) break;
+    ++o[k];
+  }
+}
+
+template <int D>
+std::int32_t CellList<D>::cell_of(const Vec<D>& x) const {
+  std::array<std::int32_t, D> c;
+  for (int k = 0; k < D; ++k) {
+    const double q = std::floor((x[k] - lower_[k]) / width_[k]);
+    c[k] = static_cast<std::int32_t>(std::clamp(q, 0.0, static_cast<double>(count_[k] - 1)));
+  }
+  return index(c);
+}
+
+template <int D>
+std::array<std::int32_t, D> CellList<D>::coordinates(std::int32_t cell) const {
+  std::array<std::int32_t, D> c;
+  for (int k = D - 1; k >= 0; --k) {
+    c[k] = cell / stride_[k];
+    cell -= c[k] * stride_[k];
+  }
+  return c;
+}
+
+template <int D>
+std::int32_t CellList<D>::index(const std::array<std::int32_t, D>& c) const {
+  std::int32_t cell = 0;
+  for (int k = 0; k < D; ++k) cell += c[k] * stride_[k];
+  return cell;
+}
+
+template <int D>
+void CellList<D>::remove(std::int32_t id, std::int32_t cell) {
+  std::int32_t* link = &head_[cell];
+  while (*link != id) {
+    if (*link < 0) throw std::logic_error("cell list: particle " + std::to_string(id) + " not in its cell");
+    link = &next_[*link];
+  }
+  *link = next_[id];
+}
+
+template class CellList<2>;
+template class CellList<3>;
+
+}  // namespace coldblast::md

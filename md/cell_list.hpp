@@ -1,0 +1,126 @@
+#pragma once
+// Cell list for the event-driven engine: a regular grid of cells at least one contact distance wide,
+// so a particle can only touch particles in its own and the 3^D - 1 adjacent cells. Cell crossings
+// are events; on a crossing only the newly adjacent slab of 3^(D-1) cells is searched (DynamO).
+// Two geometries: periodic (equilibrium) and open (blast: a cube around a ball of particles whose
+// outer cells are "guard" cells that a moving particle must never enter).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "md/particles.hpp"
+
+namespace coldblast::md {
+
+template <int D>
+class CellList {
+ public:
+  /// Periodic box [0, box_k) with cells of width >= min_width (at least 3 cells per axis).
+  static CellList periodic(const Vec<D>& box, double min_width, std::size_t particle_count);
+  /// Open cube [-half, half)^D, half = region_radius + 2 cell widths; cells reaching beyond
+  /// guard_radius from the origin are guard cells.
+  static CellList open(double region_radius, double guard_radius, double min_width, std::size_t particle_count);
+
+  bool is_periodic() const { return periodic_; }
+  std::int32_t cell_count() const { return static_cast<std::int32_t>(head_.size()); }
+  double width(int k) const { return width_[k]; }
+  std::int32_t count(int k) const { return count_[k]; }
+  const Vec<D>& lower() const { return lower_; }
+  const Vec<D>& box() const { return box_; }
+  bool is_guard(std::int32_t cell) const { return !guard_.empty() && guard_[cell] != 0; }
+
+  /// Cell containing position x (clamped to the grid).
+  std::int32_t cell_of(const Vec<D>& x) const;
+  std::array<std::int32_t, D> coordinates(std::int32_t cell) const;
+  std::int32_t index(const std::array<std::int32_t, D>& c) const;
+
+  void insert(std::int32_t id, std::int32_t cell) {
+    next_[id] = head_[cell];
+    head_[cell] = id;
+  }
+  void remove(std::int32_t id, std::int32_t cell);
+  std::int32_t first(std::int32_t cell) const { return head_[cell]; }
+  std::int32_t next(std::int32_t id) const { return next_[id]; }
+
+  /// Calls f(cell, shift) for the 3^D cells around `cell` (itself included); `shift` is the
+  /// periodic image offset to add to a neighbour's position (zero in an open grid).
+  template <class F>
+  void for_each_neighbour_cell(std::int32_t cell, F&& f) const;
+  /// Same for the 3^(D-1) cells that became adjacent when a particle moved into `cell` along axis
+  /// `axis` in direction `direction` (+1 or -1).
+  template <class F>
+  void for_each_new_neighbour_cell(std::int32_t cell, int axis, int direction, F&& f) const;
+
+  std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + guard_.capacity(); }
+
+ private:
+  CellList() = default;
+  void set_up(std::size_t particle_count);
+  bool periodic_ = false;
+  Vec<D> lower_ = Vec<D>::Zero(), box_ = Vec<D>::Zero(), width_ = Vec<D>::Zero();
+  std::array<std::int32_t, D> count_{}, stride_{};
+  std::vector<std::int32_t> head_, next_;
+  std::vector<std::uint8_t> guard_;
+  std::vector<std::int32_t> neighbour_delta_;                       // open grid: 3^D index offsets
+  std::array<std::array<std::vector<std::int32_t>, 2>, D> slab_delta_;  // open grid: per axis, direction
+};
+
+template <int D>
+template <class F>
+void CellList<D>::for_each_neighbour_cell(std::int32_t cell, F&& f) const {
+  if (!periodic_) {
+    const Vec<D> zero = Vec<D>::Zero();
+    for (const std::int32_t delta : neighbour_delta_) f(cell + delta, zero);
+    return;
+  }
+  const auto c = coordinates(cell);
+  std::array<std::int32_t, D> o;
+  o.fill(-1);
+  while (true) {
+    std::array<std::int32_t, D> n;
+    Vec<D> shift = Vec<D>::Zero();
+    for (int k = 0; k < D; ++k) {
+      n[k] = c[k] + o[k];
+      if (n[k] < 0) { n[k] += count_[k]; shift[k] = -box_[k]; }
+      else if (n[k] >= count_[k]) { n[k] -= count_[k]; shift[k] = box_[k]; }
+    }
+    f(index(n), shift);
+    int k = 0;
+    while (k < D && o[k] == 1) o[k++] = -1;
+    if (k == D) break;
+    ++o[k];
+  }
+}
+
+template <int D>
+template <class F>
+void CellList<D>::for_each_new_neighbour_cell(std::int32_t cell, int axis, int direction, F&& f) const {
+  if (!periodic_) {
+    const Vec<D> zero = Vec<D>::Zero();
+    for (const std::int32_t delta : slab_delta_[axis][direction > 0 ? 1 : 0]) f(cell + delta, zero);
+    return;
+  }
+  const auto c = coordinates(cell);
+  std::array<std::int32_t, D> o;
+  o.fill(-1);
+  o[axis] = direction;
+  while (true) {
+    std::array<std::int32_t, D> n;
+    Vec<D> shift = Vec<D>::Zero();
+    for (int k = 0; k < D; ++k) {
+      n[k] = c[k] + o[k];
+      if (n[k] < 0) { n[k] += count_[k]; shift[k] = -box_[k]; }
+      else if (n[k] >= count_[k]) { n[k] -= count_[k]; shift[k] = box_[k]; }
+    }
+    f(index(n), shift);
+    int k = 0;
+    while (k < D && (k == axis || o[k] == 1)) {
+      if (k != axis) o[k] = -1;
+      ++k;
+    }
+    if (k == D) break;
+    ++o[k];
+  }
+}
+
+}  // namespace coldblast::md

@@ -1,0 +1,309 @@
+#include "md/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace coldblast::md {
+
+namespace {
+template <int D>
+CellList<D> make_cells(const EngineConfig<D>& config, double width, std::size_t count) {
+  if (config.periodic) return CellList<D>::periodic(config.box, width, count);
+  return CellList<D>::open(config.region_radius, config.guard_radius, width, count);
+}
+
+double largest_contact(const InitialState<2>& s) { return 2.0 * std::max(s.host.radius, s.impurity.radius); }
+double largest_contact(const InitialState<3>& s) { return 2.0 * std::max(s.host.radius, s.impurity.radius); }
+
+template <int D>
+double choose_width(const EngineConfig<D>& config, const InitialState<D>& state) {
+  const double contact = largest_contact(state);
+  if (config.cell_width > 0.0) return std::max(config.cell_width, contact);
+  return contact;
+}
+}  // namespace
+
+template <int D, class Queue>
+Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& state)
+    : config_(config),
+      particles_(state.size()),
+      predictions_(state.size()),
+      species_(state.species),
+      moving_flag_(state.size(), 0),
+      radius_{state.host.radius, state.impurity.radius},
+      mass_{state.host.mass, state.impurity.mass},
+      cells_(make_cells(config, choose_width(config, state), state.size())),
+      queue_(state.size()) {
+  if (state.velocity.size() != state.size() || state.species.size() != state.size())
+    throw std::invalid_argument("initial state: position, velocity and species sizes differ");
+  if (state.size() >= static_cast<std::size_t>(INT32_MAX)) throw std::invalid_argument("too many particles");
+  for (int s = 0; s < 2; ++s)
+    for (int r = 0; r < 2; ++r) sigma_[s][r] = radius_[s] + radius_[r];
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    Particle<D>& p = particles_[i];
+    p.position = state.position[i];
+    p.velocity = state.velocity[i];
+    if (config.periodic)
+      for (int k = 0; k < D; ++k)
+        if (!(p.position[k] >= 0.0 && p.position[k] < config.box[k]))
+          throw std::invalid_argument("initial position outside the periodic box");
+    p.cell = cells_.cell_of(p.position);
+    cells_.insert(static_cast<std::int32_t>(i), p.cell);
+  }
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (particles_[i].velocity.squaredNorm() > 0.0) start_moving(static_cast<std::int32_t>(i));
+  for (const std::int32_t id : moving_) {
+    full_scan(id);
+    schedule(id);
+  }
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::start_moving(std::int32_t id) {
+  if (moving_flag_[id]) return;
+  moving_flag_[id] = 1;
+  moving_.push_back(id);
+  check_guard(id);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::check_guard(std::int32_t id) const {
+  if (config_.periodic || !cells_.is_guard(particles_[id].cell)) return;
+  std::ostringstream message;
+  message << "a moving particle came within " << 2.0 * (2.0 * radius_[host_species])
+          << " (2 sigma) of the edge of the simulated region (radius " << config_.region_radius << ") at t = " << now_
+          << ": the shock outran the theory estimate; " << config_.guard_advice;
+  throw std::runtime_error(message.str());
+}
+
+template <int D, class Queue>
+double Engine<D, Queue>::crossing_time(const Particle<D>& p, int& axis, int& direction) const {
+  const auto c = cells_.coordinates(p.cell);
+  double best = never;
+  axis = -1;
+  direction = 0;
+  for (int k = 0; k < D; ++k) {
+    const double v = p.velocity[k];
+    if (v == 0.0) continue;
+    const double lo = cells_.lower()[k] + c[k] * cells_.width(k);
+    const double wall = v > 0.0 ? lo + cells_.width(k) : lo;
+    const double dt = std::max(0.0, (wall - p.position[k]) / v);
+    if (dt < best) {
+      best = dt;
+      axis = k;
+      direction = v > 0.0 ? 1 : -1;
+    }
+  }
+  return p.time + best;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::scan_cell(std::int32_t id, std::int32_t cell, const Vec<D>& shift) {
+  const Particle<D>& p = particles_[id];
+  Prediction& best = predictions_[id];
+  const double* sigma_row = sigma_[species_[id]];
+  for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
+    if (j == id) continue;
+    const Particle<D>& q = particles_[j];
+    const Vec<D> dr = q.position + q.velocity * (p.time - q.time) + shift - p.position;
+    const double tau = contact_time<D>(dr, q.velocity - p.velocity, sigma_row[species_[j]]);
+    const double t = p.time + tau;
+    if (t < best.time) {
+      best.time = t;
+      best.partner = j;
+      best.partner_collisions = q.collisions;
+    }
+  }
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::full_scan(std::int32_t id) {
+  predictions_[id] = Prediction{};
+  cells_.for_each_neighbour_cell(particles_[id].cell,
+                                 [&](std::int32_t cell, const Vec<D>& shift) { scan_cell(id, cell, shift); });
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::schedule(std::int32_t id) {
+  int axis, direction;
+  const double crossing = crossing_time(particles_[id], axis, direction);
+  const double t = std::min(crossing, predictions_[id].time);
+  if (t == never) queue_.remove(id);
+  else queue_.set(id, t);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::process(std::int32_t id, double t) {
+  ++event_count_;
+  now_ = t;
+  const Prediction& prediction = predictions_[id];
+  if (prediction.partner >= 0 && prediction.time <= t) {
+    const std::int32_t partner = prediction.partner;
+    if (particles_[partner].collisions == prediction.partner_collisions) {
+      collide(id, partner, t);
+      return;
+    }
+    particles_[id].advance(t);  // stale: the partner changed course since the prediction
+    full_scan(id);
+    schedule(id);
+    return;
+  }
+  cross(id, t);
+}
+
+template <int D, class Queue>
+Vec<D> Engine<D, Queue>::separation(std::int32_t i, std::int32_t j) const {
+  Vec<D> dr = particles_[j].position_at(now_) - particles_[i].position_at(now_);
+  if (config_.periodic)
+    for (int k = 0; k < D; ++k) dr[k] -= config_.box[k] * std::round(dr[k] / config_.box[k]);
+  return dr;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
+  Particle<D>& p = particles_[i];
+  Particle<D>& q = particles_[j];
+  p.advance(t);
+  q.advance(t);
+  const Vec<D> dr = separation(i, j);
+  const CollisionOutcome<D> outcome = md::collide<D>(dr, p.velocity, q.velocity, mass_[species_[i]], mass_[species_[j]]);
+  virial_sum_ += outcome.virial;
+  ++p.collisions;
+  ++q.collisions;
+  ++collision_count_;
+  start_moving(j);
+  if (config_.record_impurity_trajectories) {
+    if (species_[i] == impurity_species) trajectories_.push_back({t, i, p.position});
+    if (species_[j] == impurity_species) trajectories_.push_back({t, j, q.position});
+  }
+  if (config_.overlap_check) {
+    check_overlaps_of(i);
+    check_overlaps_of(j);
+  }
+  full_scan(i);
+  schedule(i);
+  full_scan(j);
+  schedule(j);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::cross(std::int32_t id, double t) {
+  Particle<D>& p = particles_[id];
+  int axis, direction;
+  crossing_time(p, axis, direction);
+  p.advance(t);
+  auto c = cells_.coordinates(p.cell);
+  c[axis] += direction;
+  if (config_.periodic) {
+    if (c[axis] < 0) {
+      c[axis] += cells_.count(axis);
+      p.position[axis] += config_.box[axis];
+    } else if (c[axis] >= cells_.count(axis)) {
+      c[axis] = 0;
+      p.position[axis] -= config_.box[axis];
+    }
+  }
+  cells_.remove(id, p.cell);
+  p.cell = cells_.index(c);
+  cells_.insert(id, p.cell);
+  check_guard(id);
+  if (config_.overlap_check) check_overlaps_of(id);
+  Prediction& prediction = predictions_[id];
+  if (prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions) {
+    full_scan(id);
+  } else {
+    cells_.for_each_new_neighbour_cell(p.cell, axis, direction,
+                                       [&](std::int32_t cell, const Vec<D>& shift) { scan_cell(id, cell, shift); });
+  }
+  schedule(id);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::run_until(double t) {
+  if (t < now_) throw std::invalid_argument("run_until: t is earlier than the current time");
+  while (!queue_.empty()) {
+    const auto [time, id] = queue_.top();
+    if (time > t) break;
+    queue_.pop();
+    process(id, time);
+  }
+  now_ = t;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::run_collisions(std::uint64_t count) {
+  const std::uint64_t target = collision_count_ + count;
+  while (collision_count_ < target && !queue_.empty()) {
+    const auto [time, id] = queue_.top();
+    queue_.pop();
+    process(id, time);
+  }
+}
+
+template <int D, class Queue>
+double Engine<D, Queue>::kinetic_energy() const {
+  double sum = 0.0;
+  for (const std::int32_t id : moving_) sum += 0.5 * mass_[species_[id]] * particles_[id].velocity.squaredNorm();
+  return sum;
+}
+
+template <int D, class Queue>
+Vec<D> Engine<D, Queue>::momentum() const {
+  Vec<D> sum = Vec<D>::Zero();
+  for (const std::int32_t id : moving_) sum += mass_[species_[id]] * particles_[id].velocity;
+  return sum;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::check_overlaps_of(std::int32_t id) const {
+  const Vec<D> x = particles_[id].position_at(now_);
+  cells_.for_each_neighbour_cell(particles_[id].cell, [&](std::int32_t cell, const Vec<D>& shift) {
+    for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
+      if (j == id) continue;
+      const double sigma = sigma_[species_[id]][species_[j]];
+      const double distance = (particles_[j].position_at(now_) + shift - x).norm();
+      if (distance < sigma * (1.0 - 1e-9)) {
+        std::ostringstream message;
+        message << "overlap: particles " << id << " and " << j << " at distance " << distance << " < " << sigma
+                << " at t = " << now_;
+        throw std::logic_error(message.str());
+      }
+    }
+  });
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::check_all_overlaps(double tolerance) const {
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const std::int32_t id = static_cast<std::int32_t>(i);
+    const Vec<D> x = particles_[i].position_at(now_);
+    cells_.for_each_neighbour_cell(particles_[i].cell, [&](std::int32_t cell, const Vec<D>& shift) {
+      for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
+        if (j <= id) continue;
+        const double sigma = sigma_[species_[id]][species_[j]];
+        const double distance = (particles_[j].position_at(now_) + shift - x).norm();
+        if (distance < sigma * (1.0 - tolerance)) {
+          std::ostringstream message;
+          message << "overlap: particles " << id << " and " << j << " at distance " << distance << " < " << sigma
+                  << " at t = " << now_;
+          throw std::logic_error(message.str());
+        }
+      }
+    });
+  }
+}
+
+template <int D, class Queue>
+std::size_t Engine<D, Queue>::bytes() const {
+  return particles_.capacity() * sizeof(Particle<D>) + predictions_.capacity() * sizeof(Prediction) +
+         species_.capacity() + moving_flag_.capacity() + moving_.capacity() * 4 + cells_.bytes() + queue_.bytes();
+}
+
+template class Engine<2, HeapEventQueue>;
+template class Engine<3, HeapEventQueue>;
+template class Engine<2, CalendarEventQueue>;
+template class Engine<3, CalendarEventQueue>;
+
+}  // namespace coldblast::md

@@ -1,0 +1,137 @@
+#pragma once
+// Event-driven engine for elastic hard discs/spheres (paper Sec. V), after Smallenburg's EDMD:
+// one event per particle (its earliest collision or cell crossing), lazy per-particle time,
+// collision counters that expose stale predictions when they are popped, a cell list, and a
+// choice of event calendar. At zero temperature a resting particle schedules nothing: the cost
+// scales with the moving particles and the collisions, not with N.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "md/cell_list.hpp"
+#include "md/collision.hpp"
+#include "md/event_queue.hpp"
+#include "md/particles.hpp"
+
+namespace coldblast::md {
+
+/// Geometry and checks of one engine.
+template <int D>
+struct EngineConfig {
+  bool periodic = false;           ///< true: periodic box [0, box); false: open blast region
+  Vec<D> box = Vec<D>::Ones();     ///< periodic box side lengths (length)
+  double region_radius = 1.0;      ///< open: particles lie within this radius of the origin (length)
+  double guard_radius = 1.0;       ///< open: a moving particle entering a cell reaching beyond it stops the run
+  std::string guard_advice;        ///< open: what to raise when the guard trips (for the error message)
+  double cell_width = 0.0;         ///< cell side (length); 0 = automatic; never below the largest contact distance
+  bool overlap_check = false;      ///< verify after every event that the touched particles overlap nobody
+  bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
+};
+
+/// One point of an impurity trajectory.
+template <int D>
+struct TrajectoryPoint {
+  double t;
+  std::int32_t id;
+  Vec<D> position;
+};
+
+template <int D, class Queue>
+class Engine {
+ public:
+  Engine(const EngineConfig<D>& config, const InitialState<D>& state);
+
+  /// Processes every event up to time t (>= now()), then sets now() = t.
+  void run_until(double t);
+  /// Processes events until `count` more collisions happened; now() is the last event's time.
+  void run_collisions(std::uint64_t count);
+
+  double now() const { return now_; }
+  std::size_t size() const { return particles_.size(); }
+  const Particle<D>& particle(std::int32_t id) const { return particles_[id]; }
+  Vec<D> position(std::int32_t id) const { return particles_[id].position_at(now_); }
+  const Vec<D>& velocity(std::int32_t id) const { return particles_[id].velocity; }
+  std::uint8_t species(std::int32_t id) const { return species_[id]; }
+  double mass(std::int32_t id) const { return mass_[species_[id]]; }
+  bool is_moving(std::int32_t id) const { return moving_flag_[id] != 0; }
+  /// Particles that have moved since t = 0, in the order they started moving.
+  const std::vector<std::int32_t>& moving() const { return moving_; }
+  std::uint64_t collision_count() const { return collision_count_; }
+  std::uint64_t event_count() const { return event_count_; }
+  /// Σ over collisions of r_ij·Δp_i (mass length²/time), for the collisional virial pressure.
+  double virial_sum() const { return virial_sum_; }
+  double kinetic_energy() const;
+  Vec<D> momentum() const;
+  const std::vector<TrajectoryPoint<D>>& trajectories() const { return trajectories_; }
+  const CellList<D>& cells() const { return cells_; }
+
+  /// Calls f(id, position) at time now() for each particle within `radius` of `centre` (open geometry).
+  template <class F>
+  void for_each_in_ball(const Vec<D>& centre, double radius, F&& f) const;
+  /// Throws std::logic_error if any two particles overlap by more than `tolerance` (relative) now.
+  void check_all_overlaps(double tolerance = 1e-9) const;
+  /// Bytes held by the engine, per particle slot (memory budget).
+  std::size_t bytes() const;
+
+ private:
+  struct Prediction {
+    double time = never;              // earliest predicted collision
+    std::int32_t partner = -1;        // its partner
+    std::uint32_t partner_collisions = 0;  // partner's counter when predicted
+  };
+  void process(std::int32_t id, double t);
+  void collide(std::int32_t i, std::int32_t j, double t);
+  void cross(std::int32_t id, double t);
+  void scan_cell(std::int32_t id, std::int32_t cell, const Vec<D>& shift);
+  void full_scan(std::int32_t id);
+  void schedule(std::int32_t id);
+  double crossing_time(const Particle<D>& p, int& axis, int& direction) const;
+  void start_moving(std::int32_t id);
+  void check_guard(std::int32_t id) const;
+  void check_overlaps_of(std::int32_t id) const;
+  Vec<D> separation(std::int32_t i, std::int32_t j) const;  // r_j - r_i at now_, minimum image
+
+  EngineConfig<D> config_;
+  std::vector<Particle<D>> particles_;
+  std::vector<Prediction> predictions_;
+  std::vector<std::uint8_t> species_, moving_flag_;
+  std::vector<std::int32_t> moving_;
+  double radius_[2], mass_[2], sigma_[2][2];
+  CellList<D> cells_;
+  Queue queue_;
+  double now_ = 0.0;
+  std::uint64_t collision_count_ = 0, event_count_ = 0;
+  double virial_sum_ = 0.0;
+  std::vector<TrajectoryPoint<D>> trajectories_;
+};
+
+template <int D, class Queue>
+template <class F>
+void Engine<D, Queue>::for_each_in_ball(const Vec<D>& centre, double radius, F&& f) const {
+  std::array<std::int32_t, D> lo, hi, c;
+  const auto last = cells_.coordinates(cells_.cell_count() - 1);
+  for (int k = 0; k < D; ++k) {
+    const double w = cells_.width(k);
+    lo[k] = static_cast<std::int32_t>(std::max(0.0, std::floor((centre[k] - radius - cells_.lower()[k]) / w)));
+    hi[k] = static_cast<std::int32_t>(
+        std::min<double>(last[k], std::floor((centre[k] + radius - cells_.lower()[k]) / w)));
+    if (hi[k] < lo[k]) return;
+  }
+  c = lo;
+  const double r2 = radius * radius;
+  while (true) {
+    for (std::int32_t id = cells_.first(cells_.index(c)); id >= 0; id = cells_.next(id)) {
+      const Vec<D> x = particles_[id].position_at(now_);
+      if ((x - centre).squaredNorm() <= r2) f(id, x);
+    }
+    int k = 0;
+    while (k < D && c[k] == hi[k]) {
+      c[k] = lo[k];
+      ++k;
+    }
+    if (k == D) break;
+    ++c[k];
+  }
+}
+
+}  // namespace coldblast::md

@@ -1,0 +1,90 @@
+#pragma once
+// Event calendars holding at most one event per particle (Smallenburg's EDMD): an indexed binary
+// heap (the baseline) and a bucketed calendar (time buckets of adaptive width whose current bucket
+// is a small heap; far events wait in an overflow list). Both order events by (time, id), so the
+// earliest event is unique and both queues agree exactly (tests compare them with a brute force).
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace coldblast::md {
+
+/// Indexed binary min-heap of (time, id); ids in [0, capacity).
+class HeapEventQueue {
+ public:
+  explicit HeapEventQueue(std::size_t capacity = 0);
+  /// Inserts the event of `id` or moves it to `time` (any finite time).
+  void set(std::int32_t id, double time);
+  /// Removes the event of `id` if it has one.
+  void remove(std::int32_t id);
+  bool contains(std::int32_t id) const { return position_[id] >= 0; }
+  bool empty() const { return heap_.empty(); }
+  std::size_t size() const { return heap_.size(); }
+  /// Earliest event (time, id); the queue must not be empty.
+  std::pair<double, std::int32_t> top() const { return {heap_[0].time, heap_[0].id}; }
+  void pop() { remove(heap_[0].id); }
+  void clear();
+  /// Bytes held per particle of capacity (for the memory budget).
+  std::size_t bytes() const;
+
+ private:
+  struct Entry {
+    double time;
+    std::int32_t id;
+  };
+  static bool before(const Entry& x, const Entry& y) {
+    return x.time < y.time || (x.time == y.time && x.id < y.id);
+  }
+  void sift_up(std::size_t k);
+  void sift_down(std::size_t k);
+  void place(std::size_t k, const Entry& e) {
+    heap_[k] = e;
+    position_[e.id] = static_cast<std::int32_t>(k);
+  }
+  std::vector<Entry> heap_;
+  std::vector<std::int32_t> position_;  // index in heap_, -1 when absent
+};
+
+/// Bucketed event calendar: bucket k holds events with floor(time/width) = k. The bucket being
+/// processed is a HeapEventQueue; the next `bucket_count` buckets are singly linked lists; later
+/// events sit in an overflow list that is redistributed once per sweep. The width adapts so that a
+/// bucket holds a few events (it is rebuilt when the pop-per-bucket ratio leaves [1/4, 8]).
+class CalendarEventQueue {
+ public:
+  explicit CalendarEventQueue(std::size_t capacity = 0);
+  void set(std::int32_t id, double time);
+  void remove(std::int32_t id);
+  bool contains(std::int32_t id) const { return where_[id] != absent; }
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  /// Earliest event (time, id); the queue must not be empty (not const: it may advance buckets).
+  std::pair<double, std::int32_t> top();
+  void pop();
+  void clear();
+  std::size_t bytes() const;
+
+ private:
+  static constexpr std::int32_t absent = -3, in_heap = -1, in_overflow = -2;
+  void insert(std::int32_t id, double time);
+  void unlink(std::int32_t id);
+  void advance();  // moves to the next non-empty bucket; heap_ must be empty
+  void redistribute_overflow();
+  void rebuild(double new_width);
+  std::int64_t bucket_of(double time) const;
+
+  HeapEventQueue heap_;                // the current bucket
+  std::vector<std::int32_t> head_;     // bucket lists, circular over bucket_count
+  std::vector<std::int32_t> next_, prev_;  // doubly linked lists (buckets and overflow)
+  std::vector<std::int32_t> where_;    // bucket slot, in_heap, in_overflow or absent
+  std::vector<double> time_;           // event time per id
+  std::int32_t overflow_ = -1;         // overflow list head
+  std::int64_t mask_ = 0;              // bucket_count - 1 (a power of two)
+  std::int64_t current_ = 0;           // absolute index of the bucket in heap_
+  std::int64_t window_end_ = 0;        // lists hold buckets < window_end_, overflow the rest
+  double width_ = 1.0;                 // bucket width (time)
+  std::size_t size_ = 0, in_lists_ = 0, overflow_size_ = 0;
+  std::uint64_t pops_ = 0, advances_ = 0;
+  bool width_known_ = false;
+};
+
+}  // namespace coldblast::md

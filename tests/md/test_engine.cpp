@@ -1,0 +1,161 @@
+// Engine: hand-computable runs (a Newton's cradle, an unequal-mass hit), energy and momentum
+// conservation over 10^6 collisions, no overlaps with the overlap check on, and the heap and the
+// bucketed calendar producing bit-identical trajectories.
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+#include "md/engine.hpp"
+#include "md/initial_state.hpp"
+
+using namespace coldblast::md;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+template <int D>
+InitialState<D> empty_state(double radius = 0.5) {
+  InitialState<D> s;
+  s.host = {radius, 1.0};
+  s.impurity = s.host;
+  return s;
+}
+template <int D>
+void add(InitialState<D>& s, const Vec<D>& x, const Vec<D>& v, std::uint8_t species = host_species) {
+  s.position.push_back(x);
+  s.velocity.push_back(v);
+  s.species.push_back(species);
+}
+template <int D>
+EngineConfig<D> open_config(double radius) {
+  EngineConfig<D> c;
+  c.periodic = false;
+  c.region_radius = radius;
+  c.guard_radius = radius - 2.0;
+  c.guard_advice = "raise the test region";
+  c.overlap_check = true;
+  return c;
+}
+}  // namespace
+
+TEST_CASE("a single moving disc through a row of resting discs (Newton's cradle)", "[fast]") {
+  // Unit diameter, centres at x = 0, 2, ..., 2m; the first moves at v = 1. Each gap of 1 takes
+  // time 1, equal masses exchange velocities, so at time T > m only the last disc moves and sits
+  // at 2m + (T - m); disc k < m stopped at 2k + 1.
+  const int m = 20;
+  InitialState<2> s = empty_state<2>();
+  for (int k = 0; k <= m; ++k) add<2>(s, Vec<2>(2.0 * k - 20.0, 0.0), Vec<2>(k == 0 ? 1.0 : 0.0, 0.0));
+  Engine<2, CalendarEventQueue> engine(open_config<2>(40.0), s);
+  engine.run_until(30.5);
+  CHECK(engine.collision_count() == static_cast<std::uint64_t>(m));
+  for (int k = 0; k < m; ++k) {
+    CHECK_THAT(engine.position(k)[0], WithinAbs(2.0 * k + 1.0 - 20.0, 1e-12));
+    CHECK(engine.velocity(k).norm() < 1e-15);
+  }
+  CHECK_THAT(engine.position(m)[0], WithinAbs(2.0 * m - 20.0 + (30.5 - m), 1e-12));
+  CHECK_THAT(engine.velocity(m)[0], WithinRel(1.0, 1e-15));
+  CHECK(engine.moving().size() == static_cast<std::size_t>(m + 1));
+}
+
+TEST_CASE("a heavy impurity hits a resting host: 1D elastic formula", "[fast]") {
+  // M = 3, radius 1 hits m = 1, radius 0.5 head-on: v1 = (M-m)/(M+m) u, v2 = 2M/(M+m) u, at
+  // time (gap)/u with gap = 5 - 1.5.
+  InitialState<3> s = empty_state<3>();
+  s.impurity = {1.0, 3.0};
+  add<3>(s, Vec<3>(-2.0, 0.0, 0.0), Vec<3>(2.0, 0.0, 0.0), impurity_species);
+  add<3>(s, Vec<3>(3.0, 0.0, 0.0), Vec<3>::Zero());
+  Engine<3, HeapEventQueue> engine(open_config<3>(30.0), s);
+  engine.run_until(1.75 + 1.0);
+  CHECK(engine.collision_count() == 1);
+  CHECK_THAT(engine.velocity(0)[0], WithinRel(1.0, 1e-15));
+  CHECK_THAT(engine.velocity(1)[0], WithinRel(3.0, 1e-15));
+  CHECK_THAT(engine.position(0)[0], WithinAbs(-2.0 + 3.5 + 1.0, 1e-13));
+  CHECK_THAT(engine.position(1)[0], WithinAbs(3.0 + 3.0, 1e-13));
+  CHECK(engine.particle(0).collisions == 1);
+}
+
+TEST_CASE("the guard stops a particle that approaches the region's edge", "[fast]") {
+  InitialState<2> s = empty_state<2>();
+  add<2>(s, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.3));
+  add<2>(s, Vec<2>(-5.0, 0.0), Vec<2>(-1.0, 0.0));
+  Engine<2, HeapEventQueue> engine(open_config<2>(20.0), s);
+  CHECK_THROWS_WITH(engine.run_until(100.0), Catch::Contains("raise the test region"));
+  // Disc 1 (x = -5 - t) reaches the guard radius 18 at t = 13; the cell test trips at most one
+  // cell diagonal (sqrt(2) for unit cells) earlier.
+  CHECK(engine.now() <= 13.0);
+  CHECK(engine.now() >= 13.0 - std::sqrt(2.0));
+}
+
+TEMPLATE_TEST_CASE("energy and momentum are conserved to 1e-12 over 10^6 collisions", "[slow]",
+                   CalendarEventQueue, HeapEventQueue) {
+  const std::uint64_t seed = 77;
+  INFO("seed " << seed);
+  auto rng = realization_rng(seed, 0);
+  const double phi = 0.3, a = 0.5;
+  const std::size_t count = 2000;
+  const double side = std::cbrt(count * (4.0 / 3.0) * M_PI * a * a * a / phi);
+  const InitialState<3> s = lattice_start<3>(rng, count, a, Vec<3>::Constant(side), 1.0);
+  EngineConfig<3> config;
+  config.periodic = true;
+  config.box = Vec<3>::Constant(side);
+  Engine<3, TestType> engine(config, s);
+  const double e0 = engine.kinetic_energy();
+  const double p_scale = std::sqrt(2.0 * e0 * count);  // Σ m|v| scale
+  CHECK(engine.momentum().norm() < 1e-12 * p_scale);
+  engine.run_collisions(1000000);
+  CHECK(engine.collision_count() >= 1000000);
+  CHECK_THAT(engine.kinetic_energy(), WithinRel(e0, 1e-12));
+  CHECK(engine.momentum().norm() < 1e-12 * p_scale);
+  CHECK_NOTHROW(engine.check_all_overlaps());
+}
+
+TEST_CASE("no overlap ever: dense 2D fluid and a 3D fluid with the per-event check", "[slow]") {
+  const std::uint64_t seed = 5;
+  INFO("seed " << seed);
+  {
+    auto rng = realization_rng(seed, 1);
+    const std::size_t count = 900;
+    const double side = std::sqrt(count * M_PI * 0.25 / 0.65);  // phi = 0.65
+    EngineConfig<2> config;
+    config.periodic = true;
+    config.box = Vec<2>::Constant(side);
+    config.overlap_check = true;
+    Engine<2, CalendarEventQueue> engine(config, lattice_start<2>(rng, count, 0.5, config.box, 1.0));
+    for (int k = 0; k < 10; ++k) {
+      engine.run_collisions(20000);
+      REQUIRE_NOTHROW(engine.check_all_overlaps());
+    }
+  }
+  {
+    auto rng = realization_rng(seed, 2);
+    const std::size_t count = 1000;
+    const double side = std::cbrt(count * (M_PI / 6.0) / 0.45);  // phi = 0.45
+    EngineConfig<3> config;
+    config.periodic = true;
+    config.box = Vec<3>::Constant(side);
+    config.overlap_check = true;
+    Engine<3, HeapEventQueue> engine(config, lattice_start<3>(rng, count, 0.5, config.box, 1.0));
+    engine.run_collisions(100000);
+    REQUIRE_NOTHROW(engine.check_all_overlaps());
+  }
+}
+
+TEST_CASE("heap and bucketed calendar give bit-identical trajectories", "[fast]") {
+  auto rng1 = realization_rng(9, 0);
+  const std::size_t count = 400;
+  const double side = std::sqrt(count * M_PI * 0.25 / 0.3);
+  EngineConfig<2> config;
+  config.periodic = true;
+  config.box = Vec<2>::Constant(side);
+  const InitialState<2> s = lattice_start<2>(rng1, count, 0.5, config.box, 1.0);
+  Engine<2, HeapEventQueue> heap(config, s);
+  Engine<2, CalendarEventQueue> calendar(config, s);
+  heap.run_until(50.0);
+  calendar.run_until(50.0);
+  REQUIRE(heap.collision_count() == calendar.collision_count());
+  REQUIRE(heap.collision_count() > 10000);
+  for (std::size_t i = 0; i < count; ++i) {
+    REQUIRE(heap.position(i) == calendar.position(i));
+    REQUIRE(heap.velocity(i) == calendar.velocity(i));
+  }
+}
