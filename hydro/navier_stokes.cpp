@@ -1,0 +1,606 @@
+// Radial Navier–Stokes blast on a homologously growing grid (paper Sec. III, Eqs. (13)-(16)):
+// conservative finite volumes for cell totals of mass, radial momentum and total energy, HLLC fluxes
+// through moving faces, limited reconstruction of (ln n, u, ln p), CVODE BDF with banded DQ Jacobian.
+// Toro, "Riemann Solvers and Numerical Methods for Fluid Dynamics" (2009), Sec. 10.4 (HLLC).
+#include "hydro/navier_stokes.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_band.h>
+#include <sunmatrix/sunmatrix_band.h>
+
+#include "common/validate.hpp"
+#include "hydro/sundials_handles.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::hydro {
+
+namespace {
+
+constexpr int components = 3;  // per cell: mass, radial momentum, total energy (cell totals)
+
+/// TvNS amplitudes for γ = 1 + 2/d used only to scale the grid (R_ref); measured values are in
+/// docs/verification.md. 2D and 3D are the exact ones (hydro/tvns.hpp), 1D from our Euler runs.
+double reference_amplitude(int d) {
+  switch (d) {
+    case 1: return 0.87;  // grid scale only; the shock position is measured, never assumed
+    case 2: return 0.3519359;
+    default: return 0.4935902;
+  }
+}
+
+/// Van Leer's harmonic limiter: smooth away from extrema, zero slope at extrema.
+double van_leer(double left, double right) {
+  const double product = left * right;
+  return product > 0 ? 2 * product / (left + right) : 0.0;
+}
+
+struct State {
+  double n, u, p;
+};
+
+/// HLLC flux F(U) - w U through a face moving with speed w (Toro Sec. 10.4, Davis wave speeds).
+void hllc_flux(const State& L, const State& R, double w, double gamma, double flux[components]) {
+  const double cL = std::sqrt(gamma * L.p / L.n), cR = std::sqrt(gamma * R.p / R.n);
+  const double SL = std::min(L.u - cL, R.u - cR), SR = std::max(L.u + cL, R.u + cR);
+  const double EL = L.p / (gamma - 1) + 0.5 * L.n * L.u * L.u;
+  const double ER = R.p / (gamma - 1) + 0.5 * R.n * R.u * R.u;
+  const double SM = (R.p - L.p + L.n * L.u * (SL - L.u) - R.n * R.u * (SR - R.u)) /
+                    (L.n * (SL - L.u) - R.n * (SR - R.u));
+  auto physical = [&](const State& s, double total, double out[components]) {
+    out[0] = s.n * s.u - w * s.n;
+    out[1] = s.n * s.u * s.u + s.p - w * s.n * s.u;
+    out[2] = (total + s.p) * s.u - w * total;
+  };
+  auto star = [&](const State& s, double total, double S, double out[components]) {
+    const double factor = s.n * (S - s.u) / (S - SM);
+    const double U[components] = {s.n, s.n * s.u, total};
+    const double Ustar[components] = {
+        factor, factor * SM,
+        factor * (total / s.n + (SM - s.u) * (SM + s.p / (s.n * (S - s.u))))};
+    physical(s, total, out);
+    for (int k = 0; k < components; ++k) out[k] += w * U[k] + S * (Ustar[k] - U[k]) - w * Ustar[k];
+  };
+  if (w <= SL) physical(L, EL, flux);
+  else if (w <= SM) star(L, EL, SL, flux);
+  else if (w <= SR) star(R, ER, SR, flux);
+  else physical(R, ER, flux);
+}
+
+/// The semi-discrete blast: geometry, parameters and scratch space of the right-hand side.
+class Blast {
+ public:
+  Blast(const NavierStokesConfig& config, double c_kappa, double c_mu, double A_reference)
+      : d_(config.physics.d),
+        gamma_(1.0 + 2.0 / d_),
+        E_(config.physics.E),
+        n_inf_(config.physics.n_inf),
+        lambda_(theory::mean_free_path(d_, n_inf_, config.physics.a)),
+        A_ref_(A_reference),
+        margin_(config.numerics.outer_margin),
+        omega_(theory::unit_ball_volume(d_)) {
+    const NavierStokesNumerics& numerics = config.numerics;
+    cells_ = numerics.cells;
+    kappa_ = c_kappa * n_inf_ * lambda_;  // Eq. (15) [kappa-HS]: κ = c_κ n∞ λ √T
+    mu_ = c_mu * n_inf_ * lambda_;        // same form for μ (Chapman–Enskog, docs/hydro.md)
+    build_grid(config);
+    const double t_end = time_of(config.until_R_over_lambda * lambda_);
+    T_inf_ = numerics.temperature_floor * std::pow(shock_speed(t_end), 2);
+    e_inf_ = 0.5 * d_ * n_inf_ * T_inf_;
+    n_.resize(cells_); u_.resize(cells_); T_.resize(cells_); p_.resize(cells_);
+    slope_.assign(3 * cells_, 0.0);
+    flux_.assign(components * (cells_ + 1), 0.0);
+    heat_.assign(cells_ + 1, 0.0);
+    stress_.assign(cells_ + 1, 0.0);
+    face_velocity_.assign(cells_ + 1, 0.0);
+  }
+
+  int cells() const { return cells_; }
+  double lambda() const { return lambda_; }
+  double T_inf() const { return T_inf_; }
+
+  /// Eq. (1) [R-shock] with the reference amplitude: R_ref(t) = (E t²/(A n∞))^(1/(d+2)).
+  double reference_radius(double t) const { return std::pow(E_ * t * t / (A_ref_ * n_inf_), 1.0 / (d_ + 2)); }
+  double time_of(double R) const { return std::sqrt(A_ref_ * n_inf_ * std::pow(R, d_ + 2) / E_); }
+  double shock_speed(double t) const { return 2.0 * reference_radius(t) / ((d_ + 2) * t); }
+  /// Outer grid edge L(t) = margin R_ref(t); faces sit at r = ξ L(t).
+  double outer_radius(double t) const { return margin_ * reference_radius(t); }
+  double ball_volume(double r) const { return omega_ * std::pow(r, d_); }
+  double face_area(double r) const { return d_ * omega_ * std::pow(r, d_ - 1); }
+
+  /// Expected totals: E plus the cold gas energy swept in; n∞ times the grid volume.
+  double expected_energy(double t) const { return E_ + e_inf_ * ball_volume(outer_radius(t)); }
+  double expected_mass(double t) const { return n_inf_ * ball_volume(outer_radius(t)); }
+
+  /// Face radii r_j = ξ_j R_ref(t), j = 0..cells, ξ_cells = outer_margin.
+  void faces(double t, std::vector<double>& r) const {
+    const double L = reference_radius(t);
+    r.resize(cells_ + 1);
+    for (int j = 0; j <= cells_; ++j) r[j] = xi_[j] * L;
+  }
+
+  /// Uniform cold gas at rest plus E spread uniformly (as internal energy) over r < width R_ref(t0).
+  void initial_state(double t0, double width, double* y) const {
+    std::vector<double> r;
+    faces(t0, r);
+    const double w = width * reference_radius(t0);
+    const double hot_volume = ball_volume(w);
+    for (int i = 0; i < cells_; ++i) {
+      const double volume = ball_volume(r[i + 1]) - ball_volume(r[i]);
+      const double hot = ball_volume(std::min(r[i + 1], w)) - ball_volume(std::min(r[i], w));
+      y[components * i + 0] = n_inf_ * volume;
+      y[components * i + 1] = 0.0;
+      y[components * i + 2] = e_inf_ * volume + E_ * hot / hot_volume;
+    }
+  }
+
+  /// Cell primitives from cell totals; false if n <= 0 or T <= 0 (or not finite).
+  bool primitives(double t, const double* y) {
+    faces(t, r_);
+    for (int i = 0; i < cells_; ++i) {
+      const double volume = ball_volume(r_[i + 1]) - ball_volume(r_[i]);
+      const double mass = y[components * i], momentum = y[components * i + 1], energy = y[components * i + 2];
+      const double n = mass / volume;
+      const double u = momentum / mass;
+      const double internal = energy / volume - 0.5 * n * u * u;  // (d/2) n T
+      const double T = internal / (0.5 * d_ * n);
+      if (!(n > 0) || !(T > 0) || !std::isfinite(T) || !std::isfinite(u)) return false;
+      n_[i] = n; u_[i] = u; T_[i] = T; p_[i] = n * T;
+    }
+    return true;
+  }
+
+  /// d/dt of the cell totals; returns 1 (recoverable) when a trial state is not positive.
+  int rhs(double t, const double* y, double* ydot) {
+    if (!primitives(t, y)) return 1;
+    const int N = cells_;
+    const double Ldot = shock_speed(t);  // face j moves with ξ_j dR_ref/dt
+    std::vector<double>& centre = centre_;
+    centre.resize(N + 2);  // centre[i + 1] is cell i; ghosts at both ends
+    for (int i = 0; i < N; ++i) centre[i + 1] = 0.5 * (r_[i] + r_[i + 1]);
+    centre[0] = -centre[1];
+    centre[N + 1] = 2 * r_[N] - centre[N];
+    // Limited slopes of q = (ln n, u, ln p); ghosts: mirror at r = 0, cold gas at rest outside.
+    auto q = [&](int i, int k) -> double {
+      if (i < 0) return k == 0 ? std::log(n_[0]) : k == 1 ? -u_[0] : std::log(p_[0]);
+      if (i >= N) return k == 0 ? std::log(n_inf_) : k == 1 ? 0.0 : std::log(n_inf_ * T_inf_);
+      return k == 0 ? std::log(n_[i]) : k == 1 ? u_[i] : std::log(p_[i]);
+    };
+    for (int i = 0; i < N; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double left = (q(i, k) - q(i - 1, k)) / (centre[i + 1] - centre[i]);
+        const double right = (q(i + 1, k) - q(i, k)) / (centre[i + 2] - centre[i + 1]);
+        slope_[3 * i + k] = van_leer(left, right);
+      }
+    auto face_state = [&](int i, double r) {
+      const double dr = r - centre[i + 1];
+      return State{std::exp(q(i, 0) + slope_[3 * i] * dr), q(i, 1) + slope_[3 * i + 1] * dr,
+                   std::exp(q(i, 2) + slope_[3 * i + 2] * dr)};
+    };
+    for (int j = 0; j <= N; ++j) {
+      const double w = xi_[j] * Ldot;
+      State left, right;
+      if (j == 0) {
+        right = face_state(0, 0.0);
+        left = State{right.n, -right.u, right.p};
+      } else {
+        left = face_state(j - 1, r_[j]);
+        right = j == N ? State{n_inf_, 0.0, n_inf_ * T_inf_} : face_state(j, r_[j]);
+      }
+      hllc_flux(left, right, w, gamma_, &flux_[components * j]);
+    }
+    // Eq. (13) [entropy-heat] right-hand side as a flux: q = -κ(T) ∂T/∂r at interior faces.
+    std::fill(heat_.begin(), heat_.end(), 0.0);
+    std::fill(stress_.begin(), stress_.end(), 0.0);
+    for (int j = 1; j < N; ++j) {
+      const double dr = centre[j + 1] - centre[j];
+      const double T_face = 0.5 * (T_[j - 1] + T_[j]);
+      if (kappa_ > 0) heat_[j] = -kappa_ * std::sqrt(T_face) * (T_[j] - T_[j - 1]) / dr;
+      if (mu_ > 0) {
+        // τ_rr = μ (2 ∂u/∂r - (2/d) ∇·u), ∇·u = ∂u/∂r + (d-1) u/r (zero bulk viscosity)
+        const double dudr = (u_[j] - u_[j - 1]) / dr;
+        const double u_face = 0.5 * (u_[j - 1] + u_[j]);
+        const double divergence = dudr + (d_ - 1) * u_face / r_[j];
+        stress_[j] = mu_ * std::sqrt(T_face) * (2 * dudr - 2.0 / d_ * divergence);
+      }
+    }
+    for (int i = 0; i < N; ++i) {
+      const double A_in = face_area(r_[i]), A_out = face_area(r_[i + 1]);
+      const double* F_in = &flux_[components * i];
+      const double* F_out = &flux_[components * (i + 1)];
+      double* out = ydot + components * i;
+      out[0] = A_in * F_in[0] - A_out * F_out[0];
+      // ∫ (d-1) p/r dV over the cell = p (A_out - A_in): uniform pressure at rest stays at rest
+      out[1] = A_in * F_in[1] - A_out * F_out[1] + p_[i] * (A_out - A_in);
+      out[2] = A_in * F_in[2] - A_out * F_out[2] + A_in * heat_[i] - A_out * heat_[i + 1];
+      if (mu_ > 0) {
+        const double u_in = i == 0 ? 0.0 : 0.5 * (u_[i - 1] + u_[i]);
+        const double u_out = i == N - 1 ? 0.5 * u_[i] : 0.5 * (u_[i] + u_[i + 1]);
+        const double dudr = (u_out - u_in) / (r_[i + 1] - r_[i]);
+        const double rc = centre[i + 1];
+        const double tau_tt = mu_ * std::sqrt(T_[i]) *
+                              (2 * u_[i] / rc - 2.0 / d_ * (dudr + (d_ - 1) * u_[i] / rc));
+        out[1] += A_out * stress_[i + 1] - A_in * stress_[i] - tau_tt * (A_out - A_in);
+        const double u_face_out = i == N - 1 ? 0.0 : 0.5 * (u_[i] + u_[i + 1]);
+        out[2] += A_out * u_face_out * stress_[i + 1] - A_in * u_in * stress_[i];
+      }
+    }
+    return 0;
+  }
+
+  const std::vector<double>& radii() const { return r_; }
+  const std::vector<double>& density() const { return n_; }
+  const std::vector<double>& velocity() const { return u_; }
+  const std::vector<double>& temperature() const { return T_; }
+  const std::vector<double>& pressure() const { return p_; }
+  /// Heat flux at cell centres (average of the two face fluxes), valid after rhs().
+  double heat_flux(int i) const { return 0.5 * (heat_[i] + heat_[i + 1]); }
+
+ private:
+  /// Faces in ξ ∈ [0, margin] equidistributing the cell density 1/(ξ_c + ξ) + B: logarithmic
+  /// spacing ξ_c ≲ ξ ≲ 1/B, uniform near the shock; B puts half the cells into each part.
+  void build_grid(const NavierStokesConfig& config) {
+    const double xi_c = *config.numerics.core_resolution;
+    const double outer = margin_;
+    const double B = std::log((xi_c + outer) / xi_c) / outer;
+    const double total = std::log((xi_c + outer) / xi_c) + B * outer;
+    xi_.assign(cells_ + 1, 0.0);
+    for (int j = 1; j < cells_; ++j) {
+      const double target = total * j / cells_;
+      double lo = 0, hi = outer;  // bisection on the monotone cumulative density
+      for (int iteration = 0; iteration < 200 && hi - lo > 1e-16 * outer; ++iteration) {
+        const double mid = 0.5 * (lo + hi);
+        (std::log((xi_c + mid) / xi_c) + B * mid < target ? lo : hi) = mid;
+      }
+      xi_[j] = 0.5 * (lo + hi);
+    }
+    xi_[cells_] = outer;
+  }
+
+  int d_;
+  double gamma_, E_, n_inf_, lambda_, A_ref_, margin_, omega_;
+  int cells_ = 0;
+  double kappa_ = 0, mu_ = 0, T_inf_ = 0, e_inf_ = 0;
+  std::vector<double> xi_, r_, centre_, n_, u_, T_, p_, slope_, flux_, heat_, stress_, face_velocity_;
+};
+
+/// Error weights 1/(rtol |y| + atol): mass and energy totals are positive and purely relative;
+/// momentum (zero at rest) gets atol = 1e-3 rtol √(M E), a cell's own momentum scale, so that the
+/// control is invariant under changes of E, n∞ and a. (CVodeSVtolerances cannot be reset between
+/// CVode calls in SUNDIALS 6.4, and a fixed atol would not follow the growing cells.)
+struct ErrorWeights {
+  double rtol;
+};
+
+struct UserData {
+  Blast* blast;
+  ErrorWeights* weights;
+};
+
+int cvode_rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
+  return static_cast<UserData*>(user_data)->blast->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+}
+
+int error_weights(N_Vector y, N_Vector weight, void* user_data) {
+  const double rtol = static_cast<UserData*>(user_data)->weights->rtol;
+  const double* state = N_VGetArrayPointer(y);
+  double* w = N_VGetArrayPointer(weight);
+  const sunindextype size = N_VGetLength_Serial(y);
+  for (sunindextype i = 0; i < size; i += components) {
+    const double mass = std::abs(state[i]), energy = std::abs(state[i + 2]);
+    if (!(mass > 0) || !(energy > 0)) return -1;
+    w[i] = 1.0 / (rtol * mass);
+    w[i + 1] = 1.0 / (rtol * (std::abs(state[i + 1]) + 1e-3 * std::sqrt(mass * energy)));
+    w[i + 2] = 1.0 / (rtol * energy);
+  }
+  return 0;
+}
+
+/// Linear interpolation of the radius where `values` (at cell centres) crosses `level`, searching
+/// outward from cell `first`; NaN if never crossed.
+double crossing_radius(const std::vector<double>& centres, const std::vector<double>& values, int first,
+                       double level, bool falling) {
+  for (std::size_t i = first + 1; i < values.size(); ++i) {
+    const bool crossed = falling ? values[i] <= level : values[i] >= level;
+    if (crossed) {
+      const double f = (level - values[i - 1]) / (values[i] - values[i - 1]);
+      return centres[i - 1] + f * (centres[i] - centres[i - 1]);
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double default_core_resolution(const NavierStokesConfig& config) {
+  const int d = config.physics.d;
+  const bool euler = !config.physics.heat_conduction && !config.physics.viscosity;
+  if (euler) return 0.02;
+  // H/R ≈ (R/λ)^(-4/(8+3d²)) (Eq. (4) [size-dim]); a tenth of it keeps ~20 cells inside the core.
+  const double H_over_R = std::pow(config.until_R_over_lambda, -4.0 / (8.0 + 3.0 * d * d));
+  return std::clamp(0.1 * H_over_R, 1e-4, 0.05);
+}
+
+}  // namespace
+
+double chapman_enskog_kappa_prefactor(int d) {
+  common::require_integer_in_range("d", d, 1, 3);
+  if (d == 1) return 1.0;
+  // κ0 = d(d+2)/(2(d-1)) η0 with η0 = c_μ n∞ λ √T (docs/hydro.md)
+  return d * (d + 2.0) / (2.0 * (d - 1)) * chapman_enskog_viscosity_prefactor(d);
+}
+
+double chapman_enskog_viscosity_prefactor(int d) {
+  common::require_integer_in_range("d", d, 1, 3);
+  if (d == 1) return 0.25;
+  // η0 = (d+2)/8 Γ(d/2) π^(-(d-1)/2) σ^(1-d) √T and σ^(1-d) = n∞ λ Ω_{d-1}/2^(d-1) (σ = 2a)
+  return (d + 2.0) / 8.0 * std::tgamma(0.5 * d) * std::pow(M_PI, -0.5 * (d - 1)) *
+         theory::unit_ball_volume(d - 1) / std::pow(2.0, d - 1);
+}
+
+void NavierStokesConfig::validate() const {
+  using common::Bound;
+  common::require_integer_in_range("d", physics.d, 1, 3);
+  common::require_in_range("E", physics.E, 0, std::numeric_limits<double>::infinity());
+  common::require_in_range("n_inf", physics.n_inf, 0, std::numeric_limits<double>::infinity());
+  common::require_in_range("a", physics.a, 0, std::numeric_limits<double>::infinity());
+  if (physics.kappa_prefactor)
+    common::require_in_range("kappa_prefactor", *physics.kappa_prefactor, 0, 1e6, Bound::closed);
+  if (physics.viscosity_prefactor)
+    common::require_in_range("viscosity_prefactor", *physics.viscosity_prefactor, 0, 1e6, Bound::closed);
+  common::require_integer_in_range("cells", numerics.cells, 16, 100000);
+  common::require_in_range("start_R_over_lambda", numerics.start_R_over_lambda, 0, 1e6);
+  common::require_in_range("until_R_over_lambda", until_R_over_lambda, numerics.start_R_over_lambda, 1e12,
+                           Bound::open, Bound::closed, " (must exceed start_R_over_lambda)");
+  common::require_in_range("initial_width", numerics.initial_width, 0, 0.8, Bound::open, Bound::closed);
+  common::require_in_range("temperature_floor", numerics.temperature_floor, 0, 1e-2, Bound::open, Bound::closed);
+  common::require_in_range("relative_tolerance", numerics.relative_tolerance, 1e-12, 1e-2, Bound::closed,
+                           Bound::closed);
+  common::require_integer_in_range("samples_per_decade", numerics.samples_per_decade, 4, 200);
+  common::require_in_range("outer_margin", numerics.outer_margin, 1.05, 2, Bound::closed, Bound::closed);
+  if (numerics.core_resolution)
+    common::require_in_range("core_resolution", *numerics.core_resolution, 1e-6, 0.5, Bound::closed, Bound::closed);
+  for (double R : numerics.profile_R_over_lambda)
+    common::require_in_range("profile_R_over_lambda", R, numerics.start_R_over_lambda, until_R_over_lambda,
+                             Bound::open, Bound::closed);
+}
+
+RunningExponents NavierStokesResult::exponents_at(double R_over_lambda) const {
+  if (exponents.empty()) throw std::logic_error("NavierStokesResult::exponents_at: no exponents");
+  const double front = exponents.front().R_over_lambda, back = exponents.back().R_over_lambda;
+  common::require_in_range("R_over_lambda", R_over_lambda, front, back, common::Bound::closed,
+                           common::Bound::closed, " (the sampled range of this run)");
+  std::size_t k = 1;
+  while (k + 1 < exponents.size() && exponents[k].R_over_lambda < R_over_lambda) ++k;
+  const RunningExponents& a = exponents[k - 1];
+  const RunningExponents& b = exponents[k];
+  const double f = std::log(R_over_lambda / a.R_over_lambda) / std::log(b.R_over_lambda / a.R_over_lambda);
+  auto mix = [f](double x, double y) { return x + f * (y - x); };
+  return RunningExponents{mix(a.t, b.t),       R_over_lambda,           mix(a.R, b.R),
+                          mix(a.H, b.H),       mix(a.H_density, b.H_density), mix(a.n0, b.n0),
+                          mix(a.T0, b.T0),     mix(a.H_in_R, b.H_in_R), mix(a.H_density_in_R, b.H_density_in_R),
+                          mix(a.n0_in_R, b.n0_in_R), mix(a.T0_in_R, b.T0_in_R)};
+}
+
+const NavierStokesSample& NavierStokesResult::final_sample() const {
+  if (samples.empty()) throw std::logic_error("NavierStokesResult::final_sample: no samples");
+  const double t_end = profiles.back().t;
+  auto closest = std::min_element(samples.begin(), samples.end(), [t_end](const auto& x, const auto& y) {
+    return std::abs(std::log(x.t / t_end)) < std::abs(std::log(y.t / t_end));
+  });
+  return *closest;
+}
+
+RunningExponents NavierStokesResult::final_exponents() const {
+  const double t_end = profiles.back().t;
+  auto closest = std::min_element(exponents.begin(), exponents.end(), [t_end](const auto& x, const auto& y) {
+    return std::abs(std::log(x.t / t_end)) < std::abs(std::log(y.t / t_end));
+  });
+  if (closest == exponents.end()) throw std::logic_error("NavierStokesResult::final_exponents: no exponents");
+  return *closest;
+}
+
+NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const NavierStokesProgress& progress) {
+  namespace sh = sundials_handles;
+  input.validate();
+  NavierStokesConfig config = input;
+  const int d = config.physics.d;
+  if (!config.numerics.core_resolution) config.numerics.core_resolution = default_core_resolution(config);
+  NavierStokesResult result;
+  result.config = config;
+  result.kappa_prefactor =
+      config.physics.heat_conduction ? config.physics.kappa_prefactor.value_or(chapman_enskog_kappa_prefactor(d)) : 0.0;
+  result.viscosity_prefactor =
+      config.physics.viscosity ? config.physics.viscosity_prefactor.value_or(chapman_enskog_viscosity_prefactor(d)) : 0.0;
+  result.A_reference = reference_amplitude(d);
+
+  Blast blast(config, result.kappa_prefactor, result.viscosity_prefactor, result.A_reference);
+  const double lambda = blast.lambda();
+  result.lambda = lambda;
+  const int N = blast.cells();
+  const int size = components * N;
+
+  // Output times: samples log-spaced in R_ref/λ ending exactly at `until` plus two beyond it (for the
+  // centred differences), and the requested profile times.
+  const int per_decade = config.numerics.samples_per_decade;
+  const double start = config.numerics.start_R_over_lambda, until = config.until_R_over_lambda;
+  struct Output {
+    double t;
+    bool sample, profile;
+  };
+  std::vector<Output> outputs;
+  const int before = static_cast<int>(std::floor(per_decade * std::log10(until / start) - 1e-9));
+  for (int k = -before; k <= 2; ++k)
+    outputs.push_back({blast.time_of(until * std::pow(10.0, double(k) / per_decade) * lambda), true, k == 0});
+  for (double R : config.numerics.profile_R_over_lambda) outputs.push_back({blast.time_of(R * lambda), false, true});
+  std::sort(outputs.begin(), outputs.end(), [](const Output& x, const Output& y) { return x.t < y.t; });
+  const double t_end_profile = blast.time_of(until * lambda);
+
+  sundials::Context context;
+  sh::Vector y(sh::check_created(N_VNew_Serial(size, context), "N_VNew_Serial"));
+  sh::Vector constraints(sh::check_created(N_VNew_Serial(size, context), "N_VNew_Serial"));
+  const double t0 = blast.time_of(start * lambda);
+  blast.initial_state(t0, config.numerics.initial_width, N_VGetArrayPointer(y.get()));
+  double* constraint = N_VGetArrayPointer(constraints.get());
+  for (int i = 0; i < N; ++i) {
+    constraint[components * i] = 2.0;      // mass > 0
+    constraint[components * i + 1] = 0.0;  // momentum free
+    constraint[components * i + 2] = 2.0;  // energy > 0
+  }
+  ErrorWeights weights{config.numerics.relative_tolerance};
+  sh::CvodeMemory cvode(sh::check_created(CVodeCreate(CV_BDF, context), "CVodeCreate"));
+  void* memory = cvode.get();
+  sh::check_cvode(CVodeInit(memory, cvode_rhs, t0, y.get()), "CVodeInit");
+  sh::check_cvode(CVodeWFtolerances(memory, error_weights), "CVodeWFtolerances");
+  UserData user{&blast, &weights};
+  sh::check_cvode(CVodeSetUserData(memory, &user), "CVodeSetUserData");
+  sh::check_cvode(CVodeSetConstraints(memory, constraints.get()), "CVodeSetConstraints");
+  sh::check_cvode(CVodeSetMaxNumSteps(memory, 5000000), "CVodeSetMaxNumSteps");
+  sh::check_cvode(CVodeSetMaxErrTestFails(memory, 20), "CVodeSetMaxErrTestFails");
+  sh::check_cvode(CVodeSetMaxConvFails(memory, 50), "CVodeSetMaxConvFails");
+  const int bandwidth = 3 * components - 1;  // cell i couples to cells i-2..i+2
+  sh::Matrix matrix(sh::check_created(SUNBandMatrix(size, bandwidth, bandwidth, context), "SUNBandMatrix"));
+  sh::LinearSolver solver(sh::check_created(SUNLinSol_Band(y.get(), matrix.get(), context), "SUNLinSol_Band"));
+  sh::check_cvode(CVodeSetLinearSolver(memory, solver.get(), matrix.get()), "CVodeSetLinearSolver");
+
+  const auto wall_start = std::chrono::steady_clock::now();
+  double t = t0;
+  result.min_density = std::numeric_limits<double>::infinity();
+  result.min_temperature = std::numeric_limits<double>::infinity();
+  std::vector<double> centres(N);
+  for (const Output& output : outputs) {
+    const int flag = CVode(memory, output.t, y.get(), &t, CV_NORMAL);
+    sh::check_cvode(flag, "CVode",
+                    " at t = " + common::format_number(t) + " (R_ref/lambda = " +
+                        common::format_number(blast.reference_radius(t) / lambda) + ")");
+    const double* state = N_VGetArrayPointer(y.get());
+    std::vector<double> derivative(size);
+    if (blast.rhs(t, state, derivative.data()) != 0)
+      throw std::runtime_error("positivity lost at t = " + common::format_number(t) +
+                               ": a cell has n <= 0 or T <= 0");
+    const std::vector<double>& radii = blast.radii();
+    for (int i = 0; i < N; ++i) centres[i] = 0.5 * (radii[i] + radii[i + 1]);
+    const std::vector<double>& n = blast.density();
+    const std::vector<double>& T = blast.temperature();
+    result.min_density = std::min(result.min_density, *std::min_element(n.begin(), n.end()));
+    result.min_temperature = std::min(result.min_temperature, *std::min_element(T.begin(), T.end()));
+
+    NavierStokesSample sample;
+    sample.t = t;
+    const int peak = static_cast<int>(std::max_element(n.begin(), n.end()) - n.begin());
+    sample.R = crossing_radius(centres, n, peak, 0.5 * (config.physics.n_inf + n[peak]), true);
+    if (!std::isfinite(sample.R) || sample.R > 0.97 * radii[N])
+      throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) +
+                               " (raise outer_margin)");
+    sample.R_over_lambda = sample.R / lambda;
+    sample.n0 = n[0];
+    sample.T0 = T[0];
+    sample.p0 = n[0] * T[0];
+    sample.H = crossing_radius(centres, T, 0, 0.5 * T[0], true);
+    sample.H_density = crossing_radius(centres, n, 0, 2.0 * n[0], false);
+    double energy = 0, mass = 0;
+    for (int i = 0; i < N; ++i) {
+      mass += state[components * i];
+      energy += state[components * i + 2];
+    }
+    sample.energy = energy;
+    sample.mass = mass;
+    sample.energy_error = std::abs(energy - blast.expected_energy(t)) / config.physics.E;
+    sample.mass_error = std::abs(mass - blast.expected_mass(t)) / mass;
+    for (double value : {sample.R, sample.n0, sample.T0, sample.energy, sample.mass})
+      if (!std::isfinite(value)) throw std::runtime_error("non-finite diagnostic at t = " + common::format_number(t));
+    if (output.sample) {
+      result.samples.push_back(sample);
+      result.max_energy_error = std::max(result.max_energy_error, sample.energy_error);
+      if (progress) progress(sample);
+    }
+    if (output.profile) {
+      NavierStokesProfile profile;
+      profile.t = t;
+      profile.R = sample.R;
+      for (int i = 0; i < N; ++i) {
+        profile.r.push_back(centres[i]);
+        profile.r_over_R.push_back(centres[i] / sample.R);
+        profile.density.push_back(n[i]);
+        profile.velocity.push_back(blast.velocity()[i]);
+        profile.temperature.push_back(T[i]);
+        profile.pressure.push_back(blast.pressure()[i]);
+        profile.heat_flux.push_back(blast.heat_flux(i));
+      }
+      result.profiles.push_back(std::move(profile));
+    }
+  }
+  // Keep the final (R/λ = until) profile last.
+  std::stable_partition(result.profiles.begin(), result.profiles.end(),
+                        [&](const NavierStokesProfile& p) { return std::abs(p.t / t_end_profile - 1) > 1e-12; });
+  result.statistics.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+
+  long value = 0;
+  sh::check_cvode(CVodeGetNumSteps(memory, &value), "CVodeGetNumSteps");
+  result.statistics.steps = value;
+  sh::check_cvode(CVodeGetNumRhsEvals(memory, &value), "CVodeGetNumRhsEvals");
+  result.statistics.rhs_evaluations = value;
+  sh::check_cvode(CVodeGetNumLinRhsEvals(memory, &value), "CVodeGetNumLinRhsEvals");
+  result.statistics.rhs_evaluations += value;
+  sh::check_cvode(CVodeGetNumJacEvals(memory, &value), "CVodeGetNumJacEvals");
+  result.statistics.jacobian_evaluations = value;
+  sh::check_cvode(CVodeGetNumNonlinSolvIters(memory, &value), "CVodeGetNumNonlinSolvIters");
+  result.statistics.nonlinear_iterations = value;
+  sh::check_cvode(CVodeGetNumErrTestFails(memory, &value), "CVodeGetNumErrTestFails");
+  result.statistics.error_test_failures = value;
+  sh::check_cvode(CVodeGetNumNonlinSolvConvFails(memory, &value), "CVodeGetNumNonlinSolvConvFails");
+  result.statistics.nonlinear_failures = value;
+
+  const NavierStokesSample& last = result.final_sample();
+  result.A_measured = config.physics.E * last.t * last.t / (config.physics.n_inf * std::pow(last.R, d + 2));
+
+  // Running exponents: centred differences between the neighbouring samples.
+  const auto& s = result.samples;
+  for (std::size_t k = 1; k + 1 < s.size(); ++k) {
+    const double dlnt = std::log(s[k + 1].t / s[k - 1].t);
+    const double dlnR = std::log(s[k + 1].R / s[k - 1].R);
+    auto slope = [&](double a, double b) { return std::log(b / a) / dlnt; };
+    RunningExponents e;
+    e.t = s[k].t;
+    e.R_over_lambda = s[k].R_over_lambda;
+    e.R = dlnR / dlnt;
+    e.H = slope(s[k - 1].H, s[k + 1].H);
+    e.H_density = slope(s[k - 1].H_density, s[k + 1].H_density);
+    e.n0 = slope(s[k - 1].n0, s[k + 1].n0);
+    e.T0 = slope(s[k - 1].T0, s[k + 1].T0);
+    e.H_in_R = e.H / e.R;
+    e.H_density_in_R = e.H_density / e.R;
+    e.n0_in_R = e.n0 / e.R;
+    e.T0_in_R = e.T0 / e.R;
+    result.exponents.push_back(e);
+  }
+  return result;
+}
+
+NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells) {
+  NavierStokesConfig config;
+  config.physics.d = d;
+  config.physics.E = 1.0;
+  config.physics.n_inf = 1.0;
+  config.physics.a = d == 1 ? 0.5 : std::pow(1.0 / theory::unit_ball_volume(d - 1), 1.0 / (d - 1));  // λ = 1
+  config.numerics.cells = cells;
+  config.until_R_over_lambda = until_R_over_lambda;
+  return run_navier_stokes(config);
+}
+
+NavierStokesResult run_hydro_euler(int d, double until_R_over_lambda, int cells) {
+  NavierStokesConfig config;
+  config.physics.d = d;
+  config.physics.heat_conduction = false;
+  config.physics.viscosity = false;
+  config.numerics.cells = cells;
+  config.until_R_over_lambda = until_R_over_lambda;
+  return run_navier_stokes(config);
+}
+
+}  // namespace coldblast::hydro
