@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
                                         common::git_commit + ")");
   app.require_subcommand(1);
   cli::add_theory_command(app);
+  cli::add_md_command(app);
   cli::add_compare_command(app);
 
   try {

@@ -155,13 +155,31 @@ void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t i
   if (impurity_count < 2 || impurity_count > n)
     throw std::invalid_argument("impurities = " + std::to_string(impurity_count) + " is outside [2, " +
                                 std::to_string(n) + "] (zero total momentum needs two)");
-  std::vector<std::int32_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::partial_sort(order.begin(), order.begin() + impurity_count, order.end(), [&](std::int32_t a, std::int32_t b) {
+  std::vector<std::int32_t> by_distance(n);
+  std::iota(by_distance.begin(), by_distance.end(), 0);
+  const auto nearer = [&](std::int32_t a, std::int32_t b) {
     const double ra = state.position[a].squaredNorm(), rb = state.position[b].squaredNorm();
     return ra < rb || (ra == rb && a < b);
-  });
-  order.resize(impurity_count);
+  };
+  // Greedy in order of distance: a particle that would overlap an already chosen (larger)
+  // impurity is skipped (and re-placed below), so the impurities are the nearest particles.
+  std::vector<std::int32_t> order;
+  std::size_t sorted = 0;
+  const double impurity_sigma = 2.0 * state.impurity.radius;
+  for (std::size_t next = 0; order.size() < impurity_count; ++next) {
+    if (next >= n) throw std::runtime_error("cannot choose the impurities: too few non-overlapping particles");
+    if (next >= sorted) {  // sort the next chunk lazily
+      const std::size_t chunk = std::min(n, std::max<std::size_t>(2 * sorted, 64));
+      std::partial_sort(by_distance.begin() + sorted, by_distance.begin() + chunk, by_distance.end(), nearer);
+      sorted = chunk;
+    }
+    const std::int32_t candidate = by_distance[next];
+    bool free = true;
+    for (const std::int32_t chosen : order)
+      if ((state.position[chosen] - state.position[candidate]).squaredNorm() < impurity_sigma * impurity_sigma)
+        free = false;
+    if (free) order.push_back(candidate);
+  }
   const double farthest_impurity = state.position[order.back()].norm();
   std::sort(order.begin(), order.end());
   for (const std::int32_t id : order) state.species[id] = impurity_species;

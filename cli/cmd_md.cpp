@@ -1,0 +1,195 @@
+// coldblast md: event-driven MD of the cold-gas blast (paper Sec. V). `md run` maps flags onto a
+// BlastConfig and calls md::run_blast; `md merge` combines shard directories exactly; `md
+// equilibrium` runs periodic hard spheres (md::run_equilibrium). Output formats: docs/md-output.md.
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "common/validate.hpp"
+#include "md/ensemble.hpp"
+#include "md/equilibrium.hpp"
+#include "md/scenes.hpp"
+
+namespace coldblast::cli {
+
+namespace {
+
+struct MdRunOptions {
+  std::string scene_file;
+  std::vector<std::string> set;
+  long long realizations = 0;
+  int threads = 1;
+  long long seed = -1;
+  std::string out = "md-output";
+  std::string shard = "0/1";
+  Format format = Format::table;
+};
+
+struct MdMergeOptions {
+  std::vector<std::string> inputs;
+  std::string out;
+  Format format = Format::table;
+};
+
+struct MdEquilibriumOptions {
+  md::EquilibriumConfig config;
+  Format format = Format::table;
+};
+
+std::string read_scene(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("SCENE = " + path + " cannot be read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Progress with ETA on stderr, at most twice a second.
+class Progress {
+ public:
+  void operator()(long long done, long long total) {
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (done < total && std::chrono::duration<double>(now - last_).count() < 0.5) return;
+    last_ = now;
+    const double eta = done > 0 ? elapsed * (total - done) / done : 0.0;
+    std::fprintf(stderr, "\rmd run: %lld/%lld realizations, %.1f s elapsed, ETA %.1f s   ", done, total, elapsed, eta);
+    if (done == total) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
+};
+
+void print_summary(const md::BlastResult& result, const std::string& out, Format format) {
+  common::Json summary = md::blast_summary(result);
+  summary.erase("scene_toml");
+  summary["out"] = out;
+  if (format == Format::json) {
+    print_json(summary);
+    return;
+  }
+  std::printf("scene %s (d = %d), %lld realizations, %llu collisions in %.2f s (%.3g collisions/s)\n",
+              result.scene.config.name.c_str(), result.scene.config.d, result.realizations(),
+              static_cast<unsigned long long>(result.collisions()), result.wall_seconds,
+              summary["collisions_per_second"].get<double>());
+  std::printf("max relative energy error %.2g; output in %s\n", result.energy_error_max(), out.c_str());
+  const auto rows = md::estimate_observables(result);
+  const double t_last = rows.empty() ? 0.0 : rows.back().t;
+  for (const auto& row : rows)
+    if (row.t == t_last)
+      std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
+}
+
+void run_md(const MdRunOptions& o) {
+  std::vector<std::string> overrides = o.set;
+  if (o.realizations != 0) {
+    common::require_integer_in_range("--realizations", o.realizations, 1, 1000000000);
+    overrides.push_back("realizations=" + std::to_string(o.realizations));
+  }
+  if (o.seed != -1) {
+    common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
+    overrides.push_back("seed=" + std::to_string(o.seed));
+  }
+  common::require_integer_in_range("--threads", o.threads, 1, 1024);
+  const auto [shard_index, shard_count] = md::parse_shard(o.shard);
+  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : read_scene(o.scene_file);
+  const md::BlastConfig config = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
+  // A_d = 0 means "not given": md uses the ideal-gas amplitude (hydro's A_d(phi) is wired in here
+  // once hydro/tvns.hpp exists).
+  md::RunOptions options;
+  options.threads = o.threads;
+  options.shard_index = shard_index;
+  options.shard_count = shard_count;
+  Progress progress;
+  options.progress = [&progress](long long done, long long total) { progress(done, total); };
+  const md::BlastResult result = md::run_blast(config, options);
+  md::write_blast_outputs(result, o.out);
+  print_summary(result, o.out, o.format);
+}
+
+void merge_md(const MdMergeOptions& o) {
+  std::vector<std::filesystem::path> inputs(o.inputs.begin(), o.inputs.end());
+  const md::BlastResult result = md::merge_blast_outputs(inputs);
+  md::write_blast_outputs(result, o.out);
+  print_summary(result, o.out, o.format);
+}
+
+void equilibrium_md(const MdEquilibriumOptions& o) {
+  const md::EquilibriumResult r = md::run_equilibrium(o.config);
+  common::Json j;
+  j["d"] = r.config.d;
+  j["phi"] = r.config.phi;
+  j["Z"] = r.Z;
+  j["Z_error"] = r.Z_error;
+  j["collision_rate"] = r.collision_rate;
+  j["collision_rate_error"] = r.collision_rate_error;
+  j["collisions_per_second"] = r.collisions_per_second;
+  j["Z_from_collision_rate"] = r.Z_from_collision_rate;
+  j["Z_from_collision_rate_error"] = r.Z_from_collision_rate_error;
+  j["Z_reference"] = r.Z_reference;
+  j["reference"] = r.reference_name;
+  j["particles"] = r.config.particles;
+  j["box_side"] = r.box_side;
+  j["temperature"] = r.temperature;
+  j["energy_error"] = r.energy_error;
+  j["collisions_total"] = r.collisions_total;
+  j["wall_seconds"] = r.wall_seconds;
+  j["seed"] = r.config.seed;
+  if (o.format == Format::json) {
+    print_json(j);
+    return;
+  }
+  std::printf("hard %s, d = %d, phi = %g, N = %lld (periodic, T = 1)\n", r.config.d == 2 ? "discs" : "spheres",
+              r.config.d, r.config.phi, r.config.particles);
+  std::printf("  Z = beta P / n (virial)        %.6f ± %.6f\n", r.Z, r.Z_error);
+  std::printf("  Z from collision rate          %.6f ± %.6f\n", r.Z_from_collision_rate, r.Z_from_collision_rate_error);
+  std::printf("  %-30s %.6f\n", r.reference_name.c_str(), r.Z_reference);
+  std::printf("  collision rate per particle    %.6f ± %.6f\n", r.collision_rate, r.collision_rate_error);
+  std::printf("  %.3g collisions in %.2f s: %.3g collisions/s\n", static_cast<double>(r.collisions_total),
+              r.wall_seconds, r.collisions_per_second);
+}
+
+}  // namespace
+
+void add_md_command(CLI::App& app) {
+  CLI::App* md = app.add_subcommand("md", "Event-driven MD of the blast in a zero-temperature hard-sphere gas (paper Sec. V)");
+  md->require_subcommand(1);
+
+  auto run = std::make_shared<MdRunOptions>();
+  CLI::App* run_command = md->add_subcommand("run", "Run an ensemble of blast realizations of a TOML scene (default: the embedded scene)");
+  run_command->add_option("SCENE", run->scene_file, "Scene file (TOML); keys in docs/md-output.md");
+  run_command->add_option("--set", run->set, "Override a scene key: key=value (repeatable; e.g. --set E=20 --set impurities.count=2)");
+  run_command->add_option("--realizations", run->realizations, "Number of realizations (overrides the scene)");
+  run_command->add_option("--threads", run->threads, "Worker threads (results are identical for any count)")->capture_default_str();
+  run_command->add_option("--seed", run->seed, "Master seed (overrides the scene; >= 0)");
+  run_command->add_option("--out", run->out, "Output directory")->capture_default_str();
+  run_command->add_option("--shard", run->shard, "Run only blocks i, i+n, ... of the ensemble: i/n")->capture_default_str();
+  add_format_option(*run_command, run->format);
+  run_command->callback([run] { run_md(*run); });
+
+  auto merge = std::make_shared<MdMergeOptions>();
+  CLI::App* merge_command = md->add_subcommand("merge", "Combine the output directories of shards exactly");
+  merge_command->add_option("DIR", merge->inputs, "Shard output directories")->required();
+  merge_command->add_option("--out", merge->out, "Output directory")->required();
+  add_format_option(*merge_command, merge->format);
+  merge_command->callback([merge] { merge_md(*merge); });
+
+  auto eq = std::make_shared<MdEquilibriumOptions>();
+  CLI::App* eq_command = md->add_subcommand("equilibrium", "Equilibrium hard spheres in a periodic box: Z = beta P/n and the collision rate");
+  eq_command->add_option("--d", eq->config.d, "Dimension (2 or 3)")->capture_default_str();
+  eq_command->add_option("--phi", eq->config.phi, "Packing fraction (0..0.7 in 2D, 0..0.5 in 3D)")->capture_default_str();
+  eq_command->add_option("--particles", eq->config.particles, "Number of particles N")->capture_default_str();
+  eq_command->add_option("--collisions", eq->config.collisions, "Collisions measured after equilibration")->capture_default_str();
+  eq_command->add_option("--blocks", eq->config.blocks, "Blocks for the error bars")->capture_default_str();
+  eq_command->add_option("--seed", eq->config.seed, "Random seed")->capture_default_str();
+  eq_command->add_option("--queue", eq->config.queue, "Event calendar: calendar or heap")->capture_default_str();
+  add_format_option(*eq_command, eq->format);
+  eq_command->callback([eq] { equilibrium_md(*eq); });
+}
+
+}  // namespace coldblast::cli

@@ -1,0 +1,73 @@
+#pragma once
+// Ensembles of blast realizations: threads, shards and exact merges. Realization i is seeded from
+// (seed, i); realizations are grouped in blocks (block = i / block_size) whose sums are accumulated
+// in index order by one worker and totalled in block order, so every number is bit-identical for
+// any thread count and sharding. Outputs (observables.csv, blocks.csv, summary.json, ...) are
+// described in docs/md-output.md.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/output.hpp"
+#include "md/scenes.hpp"
+
+namespace coldblast::md {
+
+/// How to run an ensemble (numerics only; the physics is in BlastConfig).
+struct RunOptions {
+  int threads = 1;        ///< worker threads, >= 1
+  int shard_index = 0;    ///< this shard runs blocks shard_index, shard_index + shard_count, ...
+  int shard_count = 1;    ///< number of shards, >= 1
+  /// Called after each realization with (done, total); may be empty. Called under a lock.
+  std::function<void(long long, long long)> progress;
+};
+
+/// Sums over the realizations of one block.
+struct BlockSums {
+  std::vector<double> sum, sum_squares;  ///< per record entry
+  long long count = 0;                   ///< realizations in the block
+  std::uint64_t collisions = 0;
+  double energy_error_max = 0.0;         ///< largest |E_kin(t_max) - E|/E in the block
+};
+
+/// A finished (or merged) ensemble.
+struct BlastResult {
+  ResolvedScene scene;
+  std::map<long long, BlockSums> blocks;  ///< by block index
+  double wall_seconds = 0.0;
+  int threads = 1, shard_index = 0, shard_count = 1;
+  /// Extra files of realization 0 (snapshot_<t>.csv, trajectories.csv): name → content.
+  std::vector<std::pair<std::string, std::string>> realization0_files;
+
+  long long realizations() const;
+  std::uint64_t collisions() const;
+  double energy_error_max() const;
+};
+
+/// One row of observables.csv.
+struct ObservableEstimate {
+  double t;
+  std::string observable;
+  double mean, stderr_;
+  long long count;
+};
+
+/// Runs the realizations of `config` owned by this shard. Throws std::invalid_argument for bad
+/// options/scene and std::runtime_error when a realization fails (e.g. the guard trips).
+BlastResult run_blast(const BlastConfig& config, const RunOptions& options = {});
+/// The ensemble estimates (mean, standard error) of the scalar observables, in output order.
+std::vector<ObservableEstimate> estimate_observables(const BlastResult& result);
+/// Writes every output file into `directory` (atomically, file by file).
+void write_blast_outputs(const BlastResult& result, const std::filesystem::path& directory);
+/// Reads shard directories written by write_blast_outputs and combines them exactly.
+BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& directories);
+/// Summary document (the content of summary.json).
+common::Json blast_summary(const BlastResult& result);
+/// Parses "i/n" (0 <= i < n); throws std::invalid_argument naming --shard otherwise.
+std::pair<int, int> parse_shard(const std::string& text);
+
+}  // namespace coldblast::md

@@ -1,0 +1,178 @@
+#include "md/observers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "theory/prefactors.hpp"
+
+namespace coldblast::md {
+
+namespace {
+constexpr int held_particles = 100;  // paper Sec. V: the regions hold 100 particles at t = 0
+constexpr double profile_extent = 1.5;
+}  // namespace
+
+ObservableLayout::ObservableLayout(const ResolvedScene& scene) {
+  const int times = static_cast<int>(scene.times.size());
+  for (const std::string& name : scalar_observable_names()) {
+    scalar_.emplace_back(times, -1);
+    if (!scene.wants(name)) continue;
+    for (int k = 0; k < times; ++k) {
+      scalar_.back()[k] = static_cast<int>(size());
+      add(name, k, 0);
+    }
+  }
+  if (scene.wants("profiles")) {
+    profile_bins_ = scene.config.profile_bins;
+    profile_base_ = static_cast<int>(size());
+    static const char* quantities[] = {"profile_density", "profile_radial_velocity_sum", "profile_mv2_sum",
+                                       "profile_count"};
+    for (int k = 0; k < times; ++k)
+      for (int b = 0; b < profile_bins_; ++b)
+        for (const char* q : quantities) add(q, k, b);
+  }
+  if (scene.wants("p_imp")) {
+    p_imp_bins_ = scene.config.p_imp_bins;
+    p_imp_base_ = static_cast<int>(size());
+    for (int k = 0; k < times; ++k)
+      for (int b = 0; b < p_imp_bins_; ++b) add("p_imp_fraction", k, b);
+  }
+}
+
+void ObservableLayout::add(const std::string& channel, int k, int bin) {
+  channel_.push_back(channel);
+  time_index_.push_back(k);
+  bin_.push_back(bin);
+}
+
+int ObservableLayout::scalar(const std::string& name, int k) const {
+  const auto& names = scalar_observable_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw std::logic_error("unknown scalar observable " + name);
+  return scalar_[it - names.begin()][k];
+}
+
+template <int D, class Queue>
+BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout,
+                                       const Engine<D, Queue>& engine)
+    : scene_(scene), layout_(layout), engine_(engine) {
+  for (std::size_t i = 0; i < engine.size(); ++i)
+    if (engine.species(static_cast<std::int32_t>(i)) == impurity_species)
+      impurities_.push_back(static_cast<std::int32_t>(i));
+  for (const std::int32_t id : impurities_) {
+    initial_position_.push_back(engine.position(id));
+    if (scene.wants("u_imp")) local_radius_.push_back(radius_holding(engine.position(id), held_particles, id));
+  }
+  if (scene.wants("n0") || scene.wants("T0")) core_radius_ = radius_holding(Vec<D>::Zero(), held_particles, -1);
+}
+
+template <int D, class Queue>
+double BlastObserver<D, Queue>::radius_holding(const Vec<D>& centre, int others, std::int32_t exclude) const {
+  // Radius of the ball around `centre` that holds `others` particles (excluding `exclude`): the
+  // distance of the others-th nearest one.
+  double radius = 1.5 * std::pow(others / (scene_.config.n * theory::unit_ball_volume(D)), 1.0 / D);
+  for (int attempt = 0; attempt < 60; ++attempt, radius *= 1.5) {
+    std::vector<double> distances;
+    engine_.for_each_in_ball(centre, radius, [&](std::int32_t id, const Vec<D>& x) {
+      if (id != exclude) distances.push_back((x - centre).norm());
+    });
+    if (static_cast<int>(distances.size()) < others) continue;
+    std::nth_element(distances.begin(), distances.begin() + (others - 1), distances.end());
+    return distances[others - 1];
+  }
+  throw std::runtime_error("the blast region holds fewer than 100 particles around an impurity: raise t_max or n");
+}
+
+template <int D, class Queue>
+double BlastObserver<D, Queue>::shock_radius() const {
+  // Mass conservation: a spherical shock at R has set in motion exactly the particles that were
+  // within R, so the moving count fixes R without any threshold (docs/md-output.md).
+  const double moving = static_cast<double>(engine_.moving().size());
+  return std::pow(moving / (scene_.config.n * theory::unit_ball_volume(D)), 1.0 / D);
+}
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const {
+  const double count = static_cast<double>(impurities_.size());
+  auto put = [&](const char* name, double value) {
+    const int entry = layout_.scalar(name, k);
+    if (entry >= 0) record[entry] = value;
+  };
+  // Eq. (38) [eq:Rimp_comp]: inner values |r|²/2 and |v|²/2 averaged over the impurities.
+  double r2 = 0.0, v2 = 0.0, collisions = 0.0, flow = 0.0;
+  for (std::size_t m = 0; m < impurities_.size(); ++m) {
+    const std::int32_t id = impurities_[m];
+    const Vec<D> x = engine_.position(id);
+    r2 += 0.5 * (x - initial_position_[m]).squaredNorm();
+    v2 += 0.5 * engine_.velocity(id).squaredNorm();
+    collisions += engine_.particle(id).collisions;
+    if (!local_radius_.empty()) {
+      // u_imp: |mean velocity| of the particles within the impurity's fixed radius (0 if none).
+      Vec<D> sum = Vec<D>::Zero();
+      int inside = 0;
+      engine_.for_each_in_ball(x, local_radius_[m], [&](std::int32_t j, const Vec<D>&) {
+        if (j == id) return;
+        sum += engine_.velocity(j);
+        ++inside;
+      });
+      if (inside > 0) flow += (sum / inside).norm();
+    }
+  }
+  put("R_imp", r2 / count);
+  put("V_imp", v2 / count);
+  put("C_imp", collisions / count);
+  put("u_imp", flow / count);
+  if (core_radius_ > 0.0) {
+    int inside = 0;
+    double kinetic = 0.0;
+    engine_.for_each_in_ball(Vec<D>::Zero(), core_radius_, [&](std::int32_t j, const Vec<D>&) {
+      ++inside;
+      kinetic += 0.5 * engine_.mass(j) * engine_.velocity(j).squaredNorm();
+    });
+    put("n0", inside / (theory::unit_ball_volume(D) * std::pow(core_radius_, D)));
+    put("T0", inside > 0 ? (2.0 / D) * kinetic / inside : 0.0);  // T0 = (2/d) × kinetic energy per particle
+  }
+  const double R = shock_radius();
+  put("R", R);
+  if (layout_.has_profiles()) {
+    const int bins = scene_.config.profile_bins;
+    const double width = profile_extent / bins;
+    std::vector<double> density(bins, 0.0), radial(bins, 0.0), mv2(bins, 0.0), number(bins, 0.0);
+    engine_.for_each_in_ball(Vec<D>::Zero(), profile_extent * R, [&](std::int32_t j, const Vec<D>& x) {
+      const double r = x.norm();
+      const int b = std::min(bins - 1, static_cast<int>(r / R / width));
+      const Vec<D>& v = engine_.velocity(j);
+      number[b] += 1.0;
+      if (r > 0.0) radial[b] += v.dot(x) / r;
+      mv2[b] += engine_.mass(j) * v.squaredNorm();
+    });
+    const double unit = scene_.config.n * theory::unit_ball_volume(D) * std::pow(R, D);
+    for (int b = 0; b < bins; ++b) {
+      const double shell = unit * (std::pow((b + 1) * width, D) - std::pow(b * width, D));
+      record[layout_.profile(k, b, 0)] = number[b] / shell;
+      record[layout_.profile(k, b, 1)] = radial[b];
+      record[layout_.profile(k, b, 2)] = mv2[b];
+      record[layout_.profile(k, b, 3)] = number[b];
+    }
+  }
+  if (layout_.has_p_imp()) {
+    // Eq. (39) [eq:pr]: histogram of |r| in bins of width R(t)/bins, R(t) from Eq. (1).
+    const int bins = scene_.config.p_imp_bins;
+    const theory::BlastParameters p{D, scene_.config.n, scene_.config.a, scene_.config.E, scene_.A_d};
+    const double width = theory::shock_radius(p, scene_.times[k]) / bins;
+    for (int b = 0; b < bins; ++b) record[layout_.p_imp(k, b)] = 0.0;
+    for (std::size_t m = 0; m < impurities_.size(); ++m) {
+      const double r = (engine_.position(impurities_[m]) - initial_position_[m]).norm();
+      const int b = static_cast<int>(r / width);
+      if (b < bins) record[layout_.p_imp(k, b)] += 1.0 / count;
+    }
+  }
+}
+
+template class BlastObserver<2, HeapEventQueue>;
+template class BlastObserver<3, HeapEventQueue>;
+template class BlastObserver<2, CalendarEventQueue>;
+template class BlastObserver<3, CalendarEventQueue>;
+
+}  // namespace coldblast::md

@@ -1,0 +1,61 @@
+#pragma once
+// Observables of the blast (paper Sec. V) measured in one realization at the recording times:
+// R_imp, V_imp (Eq. (38) [eq:Rimp_comp], inner values |r|²/2 and |v|²/2), C_imp, u_imp, n0, T0,
+// the shock radius R, radial profiles in r/R, and the impurity radial histogram of Eq. (39) [eq:pr].
+// Each realization yields one flat record of "inner" values; ensembles only add records.
+#include <string>
+#include <vector>
+
+#include "md/engine.hpp"
+#include "md/scenes.hpp"
+
+namespace coldblast::md {
+
+/// Index map of a realization record: which observable, time and bin each entry holds.
+class ObservableLayout {
+ public:
+  explicit ObservableLayout(const ResolvedScene& scene);
+  std::size_t size() const { return channel_.size(); }
+  /// Entry of scalar observable `name` at time index k, or -1 if the scene does not request it.
+  int scalar(const std::string& name, int k) const;
+  /// Profile entries: quantity 0 density/n∞, 1 Σ v_r, 2 Σ m v², 3 particle count.
+  int profile(int k, int bin, int quantity) const { return profile_base_ + (k * profile_bins_ + bin) * 4 + quantity; }
+  int p_imp(int k, int bin) const { return p_imp_base_ + k * p_imp_bins_ + bin; }
+  bool has_profiles() const { return profile_base_ >= 0; }
+  bool has_p_imp() const { return p_imp_base_ >= 0; }
+  const std::string& channel(std::size_t entry) const { return channel_[entry]; }
+  int time_index(std::size_t entry) const { return time_index_[entry]; }
+  int bin(std::size_t entry) const { return bin_[entry]; }
+
+ private:
+  void add(const std::string& channel, int k, int bin);
+  std::vector<std::string> channel_;
+  std::vector<int> time_index_, bin_;
+  std::vector<std::vector<int>> scalar_;  // [observable][k]
+  int profile_base_ = -1, p_imp_base_ = -1, profile_bins_ = 0, p_imp_bins_ = 0;
+};
+
+/// Measures one realization. Construct at t = 0 (records initial impurity positions and the
+/// radii that hold 100 particles), then call measure(k, record) with the engine at times[k].
+template <int D, class Queue>
+class BlastObserver {
+ public:
+  BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout, const Engine<D, Queue>& engine);
+  void measure(int k, std::vector<double>& record) const;
+  /// Shock radius from the moving mass: R = (N_moving / (n∞ Ω_d))^(1/d).
+  double shock_radius() const;
+  const std::vector<std::int32_t>& impurities() const { return impurities_; }
+  double core_radius() const { return core_radius_; }
+
+ private:
+  double radius_holding(const Vec<D>& centre, int others, std::int32_t exclude) const;
+  const ResolvedScene& scene_;
+  const ObservableLayout& layout_;
+  const Engine<D, Queue>& engine_;
+  std::vector<std::int32_t> impurities_;
+  std::vector<Vec<D>> initial_position_;
+  std::vector<double> local_radius_;  // around each impurity: holds 100 other particles at t = 0
+  double core_radius_ = 0.0;          // around the origin: holds 100 particles at t = 0
+};
+
+}  // namespace coldblast::md

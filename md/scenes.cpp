@@ -1,0 +1,279 @@
+#include "md/scenes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include <toml++/toml.h>
+
+#include "common/validate.hpp"
+#include "md/initial_state.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::md {
+
+namespace {
+using common::Bound;
+using common::format_number;
+using common::require_in_range;
+using common::require_integer_in_range;
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+const std::string default_scene = R"(# Embedded default scene: a small 2D blast (a few seconds on one core).
+name = "default"
+d = 2
+n = 0.15
+a = 0.5
+E = 10.0
+A_d = 0.0            # 0: not given (the ideal-gas value, or hydro's A_d(phi) when the CLI has it)
+t_min = 1.0
+t_max = 200.0
+realizations = 32
+seed = 1
+block_size = 16
+observables = ["R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"]
+box_margin = 3.0     # small blasts run ahead of Eq. (1) early on (docs/md-output.md)
+
+[impurities]
+count = 4
+mass = 1.0
+radius = 0.0         # 0: the host radius a
+)";
+
+double number(const toml::node& node, const std::string& key) {
+  if (auto v = node.value<double>()) return *v;
+  throw std::invalid_argument("scene key " + key + " must be a number");
+}
+long long integer(const toml::node& node, const std::string& key) {
+  if (node.is_integer()) return *node.value<long long>();
+  if (auto v = node.value<double>(); v && std::floor(*v) == *v && std::abs(*v) < 9e15) return static_cast<long long>(*v);
+  throw std::invalid_argument("scene key " + key + " must be an integer");
+}
+std::string text(const toml::node& node, const std::string& key) {
+  if (auto v = node.value<std::string>()) return *v;
+  throw std::invalid_argument("scene key " + key + " must be a string");
+}
+bool boolean(const toml::node& node, const std::string& key) {
+  if (auto v = node.value<bool>()) return *v;
+  throw std::invalid_argument("scene key " + key + " must be true or false");
+}
+
+void merge_into(toml::table& base, const toml::table& extra) {
+  for (auto&& [key, value] : extra) {
+    if (value.is_table() && base.contains(key) && base[key].is_table()) {
+      merge_into(*base[key].as_table(), *value.as_table());
+    } else {
+      base.insert_or_assign(key, value);
+    }
+  }
+}
+
+toml::table parse_table(const std::string& text_in, const std::string& source) {
+  try {
+    return toml::parse(std::string_view(text_in), std::string_view(source));
+  } catch (const toml::parse_error& e) {
+    std::ostringstream message;
+    message << source << ": " << e.description() << " (line " << e.source().begin.line << ")";
+    throw std::invalid_argument(message.str());
+  }
+}
+
+void apply_impurities(const toml::table& table, ImpurityConfig& impurities) {
+  for (auto&& [key_view, node] : table) {
+    const std::string key(key_view.str());
+    if (key == "count") impurities.count = static_cast<int>(std::clamp<long long>(integer(node, "impurities.count"), INT32_MIN, INT32_MAX));
+    else if (key == "mass") impurities.mass = number(node, "impurities.mass");
+    else if (key == "radius") impurities.radius = number(node, "impurities.radius");
+    else throw std::invalid_argument("unknown scene key impurities." + key + " (allowed: count, mass, radius)");
+  }
+}
+
+BlastConfig config_from_table(const toml::table& table) {
+  BlastConfig c;
+  for (auto&& [key_view, node] : table) {
+    const std::string key(key_view.str());
+    if (key == "name") c.name = text(node, key);
+    else if (key == "d") c.d = static_cast<int>(std::clamp<long long>(integer(node, key), -1000, 1000));
+    else if (key == "n") c.n = number(node, key);
+    else if (key == "a") c.a = number(node, key);
+    else if (key == "E") c.E = number(node, key);
+    else if (key == "A_d") c.A_d = number(node, key);
+    else if (key == "t_min") c.t_min = number(node, key);
+    else if (key == "t_max") c.t_max = number(node, key);
+    else if (key == "realizations") c.realizations = integer(node, key);
+    else if (key == "seed") {
+      const long long s = integer(node, key);
+      require_integer_in_range("seed", s, 0, std::numeric_limits<long long>::max());
+      c.seed = static_cast<std::uint64_t>(s);
+    } else if (key == "block_size") c.block_size = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
+    else if (key == "box_margin") c.box_margin = number(node, key);
+    else if (key == "cell_width") c.cell_width = number(node, key);
+    else if (key == "queue") c.queue = text(node, key);
+    else if (key == "profile_bins") c.profile_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+    else if (key == "p_imp_bins") c.p_imp_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+    else if (key == "overlap_check") c.overlap_check = boolean(node, key);
+    else if (key == "observables" || key == "snapshot_times") {
+      const toml::array* array = node.as_array();
+      if (!array) throw std::invalid_argument("scene key " + key + " must be an array");
+      if (key == "observables") {
+        c.observables.clear();
+        for (auto&& item : *array) c.observables.push_back(text(item, key));
+      } else {
+        c.snapshot_times.clear();
+        for (auto&& item : *array) c.snapshot_times.push_back(number(item, key));
+      }
+    } else if (key == "impurities") {
+      if (!node.is_table()) throw std::invalid_argument("scene key impurities must be a table");
+      apply_impurities(*node.as_table(), c.impurities);
+    } else {
+      throw std::invalid_argument(
+          "unknown scene key " + key +
+          " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius}, t_min, t_max, realizations, seed, "
+          "block_size, observables, box_margin, cell_width, queue, snapshot_times, profile_bins, p_imp_bins, "
+          "overlap_check)");
+    }
+  }
+  return c;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch;
+  }
+  return out + "\"";
+}
+}  // namespace
+
+const std::vector<std::string>& scalar_observable_names() {
+  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"};
+  return names;
+}
+
+const std::vector<std::string>& known_observable_names() {
+  static const std::vector<std::string> names{"R_imp", "V_imp",    "C_imp", "u_imp",     "n0",          "T0",
+                                              "R",     "profiles", "p_imp", "snapshots", "trajectories"};
+  return names;
+}
+
+const std::string& default_scene_toml() { return default_scene; }
+
+double ideal_gas_amplitude(int d) {
+  if (d == 2) return 0.351935906;  // Eq. (3), γ = 2
+  if (d == 3) return 0.4935902;    // γ = 5/3; the paper's 0.0724 is wrong (docs/verification.md)
+  throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
+}
+
+BlastConfig parse_scene(const std::string& toml_text, const std::vector<std::string>& overrides,
+                        const std::string& source) {
+  toml::table table = parse_table(toml_text, source);
+  for (const std::string& assignment : overrides) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw std::invalid_argument("--set " + assignment + " is not of the form key=value");
+    const std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+    toml::table extra;
+    try {
+      extra = toml::parse(std::string_view(key + " = " + value), std::string_view("--set"));
+    } catch (const toml::parse_error&) {
+      extra = parse_table(key + " = " + quoted(value), "--set " + assignment);  // bare words are strings
+    }
+    merge_into(table, extra);
+  }
+  BlastConfig config = config_from_table(table);
+  config.validate();
+  return config;
+}
+
+void BlastConfig::validate() const {
+  require_integer_in_range("d", d, 2, 3);
+  require_in_range("n", n, 0.0, inf);
+  require_in_range("a", a, 0.0, inf);
+  require_in_range("E", E, 0.0, inf);
+  require_in_range("A_d", A_d, 0.0, inf, Bound::closed, Bound::open, " (0 = not given)");
+  const double phi = theory::packing_fraction(d, n, a);
+  const double jam = rsa_jamming_fraction(d);
+  require_in_range("phi", phi, 0.0, jam, Bound::open, Bound::open,
+                   " for d = " + std::to_string(d) + " (random sequential addition jams; lower n or a)");
+  require_in_range("impurities.mass", impurities.mass, 0.0, inf);
+  require_in_range("impurities.radius", impurities.radius, 0.0, inf, Bound::closed, Bound::open, " (0 = a)");
+  require_integer_in_range("impurities.count", impurities.count, 2, std::numeric_limits<int>::max(),
+                           " (zero total momentum needs at least two)");
+  require_in_range("t_max", t_max, 0.0, inf);
+  require_in_range("t_min", t_min, 0.0, t_max, Bound::open, Bound::closed, " (t_min <= t_max)");
+  require_integer_in_range("realizations", realizations, 1, 1000000000);
+  require_integer_in_range("block_size", block_size, 1, 1000000);
+  require_in_range("box_margin", box_margin, 1.25, 100.0, Bound::closed, Bound::closed);
+  require_in_range("cell_width", cell_width, 0.0, inf, Bound::closed, Bound::open, " (0 = automatic)");
+  if (queue != "calendar" && queue != "heap")
+    throw std::invalid_argument("queue = " + queue + " is not one of: calendar, heap");
+  require_integer_in_range("profile_bins", profile_bins, 1, 100000);
+  require_integer_in_range("p_imp_bins", p_imp_bins, 1, 100000);
+  const auto& known = known_observable_names();
+  for (const std::string& o : observables)
+    if (std::find(known.begin(), known.end(), o) == known.end())
+      throw std::invalid_argument("observables: unknown observable " + o +
+                                  " (allowed: R_imp, V_imp, C_imp, u_imp, n0, T0, R, profiles, p_imp, snapshots, trajectories)");
+  for (const double t : snapshot_times)
+    require_in_range("snapshot_times", t, 0.0, t_max, Bound::open, Bound::closed, " (within (0, t_max])");
+}
+
+std::string BlastConfig::to_toml() const {
+  std::ostringstream out;
+  out << "name = " << quoted(name) << "\nd = " << d << "\nn = " << format_number(n) << "\na = " << format_number(a)
+      << "\nE = " << format_number(E) << "\nA_d = " << format_number(A_d) << "\nt_min = " << format_number(t_min)
+      << "\nt_max = " << format_number(t_max) << "\nrealizations = " << realizations << "\nseed = " << seed
+      << "\nblock_size = " << block_size << "\nobservables = [";
+  for (std::size_t i = 0; i < observables.size(); ++i) out << (i ? ", " : "") << quoted(observables[i]);
+  out << "]\nbox_margin = " << format_number(box_margin) << "\ncell_width = " << format_number(cell_width)
+      << "\nqueue = " << quoted(queue) << "\nsnapshot_times = [";
+  for (std::size_t i = 0; i < snapshot_times.size(); ++i) out << (i ? ", " : "") << format_number(snapshot_times[i]);
+  out << "]\nprofile_bins = " << profile_bins << "\np_imp_bins = " << p_imp_bins
+      << "\noverlap_check = " << (overlap_check ? "true" : "false") << "\n\n[impurities]\ncount = " << impurities.count
+      << "\nmass = " << format_number(impurities.mass) << "\nradius = " << format_number(impurities.radius) << "\n";
+  return out.str();
+}
+
+bool ResolvedScene::wants(const std::string& observable) const {
+  return std::find(config.observables.begin(), config.observables.end(), observable) != config.observables.end();
+}
+
+ResolvedScene resolve_scene(const BlastConfig& config) {
+  config.validate();
+  ResolvedScene s;
+  s.config = config;
+  const BlastConfig& c = config;
+  s.A_d = c.A_d > 0.0 ? c.A_d : ideal_gas_amplitude(c.d);
+  s.A_d_source = c.A_d > 0.0 ? "scene" : "ideal gas (gamma = 1 + 2/d)";
+  s.phi = theory::packing_fraction(c.d, c.n, c.a);
+  s.lambda = theory::mean_free_path(c.d, c.n, c.a);
+  s.impurity_radius = c.impurities.radius > 0.0 ? c.impurities.radius : c.a;
+  const theory::BlastParameters p{c.d, c.n, c.a, c.E, s.A_d};
+  s.shock_radius_at_t_max = theory::shock_radius(p, c.t_max);  // Eq. (1) [R-shock]
+  const double contact = 2.0 * std::max(c.a, s.impurity_radius);
+  // The guard sits 2σ inside the outermost particles; the shock must stay inside box_margin × R.
+  s.region_radius = c.box_margin * s.shock_radius_at_t_max + 2.0 * contact + 2.0 * std::max(contact, c.cell_width);
+  s.guard_radius = s.region_radius - 2.0 * contact;
+  const double count = c.n * theory::unit_ball_volume(c.d) * std::pow(s.region_radius, c.d);
+  if (count > 1.5e9)
+    throw std::invalid_argument("the blast region holds " + format_number(count) +
+                                " particles (more than 1.5e9): lower t_max or E");
+  s.particle_count = static_cast<std::size_t>(std::llround(count));
+  require_integer_in_range("impurities.count", c.impurities.count, 2, static_cast<long long>(s.particle_count),
+                           " (at most the " + std::to_string(s.particle_count) + " particles of the region)");
+  for (int k = 0;; ++k) {
+    const double t = c.t_min * std::pow(2.0, k / 4.0);
+    if (t > c.t_max * (1.0 + 1e-12)) break;
+    s.times.push_back(t);
+  }
+  s.snapshot_times = c.snapshot_times;
+  if (s.snapshot_times.empty())
+    s.snapshot_times = {0.25 * c.t_max, 0.5 * c.t_max, 0.75 * c.t_max, c.t_max};
+  std::sort(s.snapshot_times.begin(), s.snapshot_times.end());
+  return s;
+}
+
+}  // namespace coldblast::md

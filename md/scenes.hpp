@@ -1,0 +1,83 @@
+#pragma once
+// Blast scenes (paper Sec. V): the TOML scene format, `--set key=value` overrides, validation with
+// the allowed ranges, the embedded default scene, and the quantities derived from a scene (A_d,
+// the auto-sized region from R(t_max) of Eq. (1), particle count, recording times t_k = t_0 2^(k/4)).
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace coldblast::md {
+
+/// Impurities: the `count` particles nearest the origin, with their own mass and radius.
+struct ImpurityConfig {
+  int count = 4;        ///< number of impurities, in [2, N]
+  double mass = 1.0;    ///< impurity mass (host mass = 1), > 0
+  double radius = 0.0;  ///< impurity radius (length); 0 means the host radius a
+};
+
+/// One blast scene: physics, recording and ensemble keys (units: m = 1, k_B = 1, length = a units as given).
+struct BlastConfig {
+  std::string name = "default";       ///< label written to the outputs
+  int d = 2;                          ///< dimension, 2 or 3
+  double n = 0.15;                    ///< ambient number density n∞ (1/length^d), > 0
+  double a = 0.5;                     ///< host radius (length), > 0
+  double E = 10.0;                    ///< injected energy (m length²/time²), > 0
+  double A_d = 0.0;                   ///< TvNS amplitude of Eq. (1); 0 = not given (ideal-gas value is used)
+  ImpurityConfig impurities;
+  double t_min = 1.0;                 ///< first recording time t_0 (time), in (0, t_max]
+  double t_max = 200.0;               ///< last recording time (time), > 0
+  long long realizations = 32;        ///< number of independent initial conditions, >= 1
+  std::uint64_t seed = 1;             ///< master seed; realization i uses splitmix64(seed, i)
+  int block_size = 16;                ///< realizations per block for jackknife errors (compare/)
+  std::vector<std::string> observables{"R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"};
+  double box_margin = 1.25;           ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25
+  double cell_width = 0.0;            ///< cell side (length); 0 = automatic
+  std::string queue = "calendar";     ///< event calendar: "calendar" (bucketed) or "heap"
+  std::vector<double> snapshot_times; ///< times of snapshot_<t>.csv (realization 0); empty = t_max/4, /2, 3/4, 1
+  int profile_bins = 30;              ///< bins of r/R in [0, 1.5) for profiles.csv
+  int p_imp_bins = 60;                ///< bins of r in [0, R(t)) for p_imp.csv
+  bool overlap_check = false;         ///< check for overlaps after every event (slow; for tests)
+
+  /// Throws std::invalid_argument naming the first key out of its allowed range.
+  void validate() const;
+  /// The resolved scene as TOML (all keys, so that it can be read back).
+  std::string to_toml() const;
+};
+
+/// Names of the scalar observables in output order (observables.csv / blocks.csv).
+const std::vector<std::string>& scalar_observable_names();
+/// Every name accepted in `observables` (scalars plus profiles, p_imp, snapshots, trajectories).
+const std::vector<std::string>& known_observable_names();
+
+/// The embedded default scene (small: a few seconds on one core).
+const std::string& default_scene_toml();
+/// Parses a scene from TOML text and applies "key=value" overrides (dotted keys such as
+/// impurities.count allowed); unknown keys are rejected. Throws std::invalid_argument.
+BlastConfig parse_scene(const std::string& toml_text, const std::vector<std::string>& overrides = {},
+                        const std::string& source = "scene");
+
+/// Ideal-gas TvNS amplitudes (γ = 1 + 2/d): A_2 = 0.351935906, A_3 = 0.4935902 (not the paper's
+/// 0.0724; see docs/verification.md).
+double ideal_gas_amplitude(int d);
+
+/// Quantities derived from a validated scene.
+struct ResolvedScene {
+  BlastConfig config;
+  double A_d;                  ///< amplitude used (config.A_d or the ideal-gas value)
+  std::string A_d_source;      ///< "scene" or "ideal gas"
+  double phi, lambda;          ///< packing fraction (Eq. 2) and mean free path (Eq. 5)
+  double impurity_radius;      ///< resolved impurity radius
+  double shock_radius_at_t_max;  ///< Eq. (1) at t_max
+  double region_radius;        ///< particles are placed within this radius of the origin
+  double guard_radius;         ///< moving particles must stay inside (region_radius - 2 sigma)
+  std::size_t particle_count;  ///< round(n Ω_d region_radius^d)
+  std::vector<double> times;   ///< recording times t_k = t_min 2^(k/4) <= t_max
+  std::vector<double> snapshot_times;
+  bool wants(const std::string& observable) const;
+};
+
+/// Validates `config` and derives the region, particle count and recording times.
+ResolvedScene resolve_scene(const BlastConfig& config);
+
+}  // namespace coldblast::md

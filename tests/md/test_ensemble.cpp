@@ -1,0 +1,126 @@
+// Scenes and ensembles: TOML parsing with overrides and rejected keys, the impurity kick (exact E,
+// zero momentum), bit-identical results for 1 and 2 threads, and shards merged equal to the
+// unsharded run.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include "md/ensemble.hpp"
+#include "md/initial_state.hpp"
+#include "md/scenes.hpp"
+
+using namespace coldblast::md;
+namespace fs = std::filesystem;
+
+namespace {
+BlastConfig small_scene() {
+  return parse_scene(default_scene_toml(), {"t_max=60", "realizations=7", "block_size=2",
+                                            R"(observables=["R_imp","V_imp","C_imp","u_imp","n0","T0","R","profiles","p_imp"])"});
+}
+std::string data_lines(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') out += line + "\n";
+  return out;
+}
+}  // namespace
+
+TEST_CASE("scene parsing: overrides, dotted keys, unknown keys and ranges", "[fast]") {
+  const BlastConfig c = parse_scene(default_scene_toml(), {"E=20", "impurities.count=3", "name=x"});
+  CHECK(c.E == 20.0);
+  CHECK(c.impurities.count == 3);
+  CHECK(c.name == "x");
+  CHECK(c.d == 2);
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"bogus=1"}), Catch::Contains("unknown scene key bogus"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"impurities.colour=1"}), Catch::Contains("impurities.colour"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"n=-1"}), Catch::Contains("n = -1"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"E=0"}), Catch::Contains("E = 0"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"n=0.8"}), Catch::Contains("phi"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"d=3", "n=0.8"}), Catch::Contains("0.3841"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {R"(observables=["R_imp","magic"])"}), Catch::Contains("magic"));
+  CHECK_THROWS_WITH(resolve_scene(parse_scene(default_scene_toml(), {"impurities.count=100000"})),
+                    Catch::Contains("impurities.count"));
+  // The resolved TOML reads back to the same scene.
+  const BlastConfig again = parse_scene(c.to_toml());
+  CHECK(again.to_toml() == c.to_toml());
+}
+
+TEST_CASE("impurity kick: energy exactly E, momentum exactly zero, the nearest particles", "[fast]") {
+  auto rng = realization_rng(11, 3);
+  InitialState<3> s;
+  s.host = {0.5, 1.0};
+  s.impurity = {0.8, 2.5};
+  s.position = random_sequential_addition<3>(rng, 3000, 0.5, 15.0);
+  s.velocity.assign(3000, Vec<3>::Zero());
+  s.species.assign(3000, host_species);
+  kick_impurities<3>(rng, s, 5, 7.0, 15.0);
+  double energy = 0.0, farthest_impurity = 0.0, nearest_host = 1e9;
+  Vec<3> momentum = Vec<3>::Zero();
+  int impurities = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.species[i] == impurity_species) {
+      ++impurities;
+      energy += 0.5 * 2.5 * s.velocity[i].squaredNorm();
+      momentum += 2.5 * s.velocity[i];
+      farthest_impurity = std::max(farthest_impurity, s.position[i].norm());
+    } else {
+      nearest_host = std::min(nearest_host, s.position[i].norm());
+      CHECK(s.velocity[i].norm() == 0.0);
+    }
+    for (std::size_t j = i + 1; j < s.size(); ++j) {
+      const double sigma = (s.species[i] ? 0.8 : 0.5) + (s.species[j] ? 0.8 : 0.5);
+      REQUIRE((s.position[i] - s.position[j]).norm() >= sigma);
+    }
+  }
+  CHECK(impurities == 5);
+  CHECK_THAT(energy, Catch::Matchers::WithinRel(7.0, 1e-14));
+  CHECK(momentum.norm() < 1e-14 * std::sqrt(2.0 * 2.5 * 7.0));
+  CHECK(farthest_impurity < nearest_host);
+}
+
+TEST_CASE("1 thread and 2 threads give bit-identical block sums", "[slow]") {
+  const BlastConfig scene = small_scene();
+  RunOptions one, two;
+  two.threads = 2;
+  const BlastResult a = run_blast(scene, one), b = run_blast(scene, two);
+  REQUIRE(a.blocks.size() == 4);
+  REQUIRE(a.realizations() == 7);
+  for (const auto& [block, sums] : a.blocks) {
+    REQUIRE(b.blocks.at(block).sum == sums.sum);
+    REQUIRE(b.blocks.at(block).sum_squares == sums.sum_squares);
+    REQUIRE(b.blocks.at(block).collisions == sums.collisions);
+  }
+  CHECK(a.energy_error_max() < 1e-12);
+  CHECK(a.collisions() > 1000);
+}
+
+TEST_CASE("shards merged equal the unsharded run", "[slow]") {
+  const BlastConfig scene = small_scene();
+  const fs::path root = fs::temp_directory_path() / "coldblast_test_shards";
+  fs::remove_all(root);
+  RunOptions all, first, second;
+  first.shard_count = second.shard_count = 2;
+  second.shard_index = 1;
+  write_blast_outputs(run_blast(scene, all), root / "all");
+  write_blast_outputs(run_blast(scene, first), root / "s0");
+  write_blast_outputs(run_blast(scene, second), root / "s1");
+  const BlastResult merged = merge_blast_outputs({root / "s1", root / "s0"});
+  write_blast_outputs(merged, root / "merged");
+  for (const char* file : {"observables.csv", "blocks.csv", "profiles.csv", "p_imp.csv", "accumulators.csv"}) {
+    INFO(file);
+    CHECK(data_lines(root / "all" / file) == data_lines(root / "merged" / file));
+  }
+  CHECK(data_lines(root / "all" / "observables.csv").size() > 100);
+  CHECK_THROWS_WITH(merge_blast_outputs({root / "s0", root / "s0"}), Catch::Contains("appears twice"));
+  fs::remove_all(root);
+}
+
+TEST_CASE("shard specs are validated", "[fast]") {
+  CHECK(parse_shard("1/3") == std::pair<int, int>{1, 3});
+  CHECK_THROWS_WITH(parse_shard("3/2"), Catch::Contains("--shard"));
+  CHECK_THROWS_WITH(parse_shard("x"), Catch::Contains("--shard"));
+}
