@@ -70,7 +70,14 @@ void CellList<D>::set_up(std::size_t particle_count) {
   }
   head_.assign(total, -1);
   next_.assign(particle_count, -1);
-  if (periodic_) return;
+  if (periodic_) {
+    boundary_.assign(total, 0);
+    for (std::size_t cell = 0; cell < total; ++cell) {
+      const auto c = coordinates(static_cast<std::int32_t>(cell));
+      for (int k = 0; k < D; ++k)
+        if (c[k] == 0 || c[k] == count_[k] - 1) boundary_[cell] = 1;
+    }
+  }
   neighbour_delta_.clear();
   std::array<std::int32_t, D> o;
   o.fill(-1);

@@ -51,7 +51,7 @@ class CellList {
   template <class F>
   void for_each_new_neighbour_cell(std::int32_t cell, int axis, int direction, F&& f) const;
 
-  std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + guard_.capacity(); }
+  std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + guard_.capacity() + boundary_.capacity(); }
 
  private:
   CellList() = default;
@@ -61,14 +61,15 @@ class CellList {
   std::array<std::int32_t, D> count_{}, stride_{};
   std::vector<std::int32_t> head_, next_;
   std::vector<std::uint8_t> guard_;
-  std::vector<std::int32_t> neighbour_delta_;                       // open grid: 3^D index offsets
-  std::array<std::array<std::vector<std::int32_t>, 2>, D> slab_delta_;  // open grid: per axis, direction
+  std::vector<std::uint8_t> boundary_;  // periodic: cell on a face of the box (its neighbours wrap)
+  std::vector<std::int32_t> neighbour_delta_;                       // 3^D index offsets (no wrap)
+  std::array<std::array<std::vector<std::int32_t>, 2>, D> slab_delta_;  // per axis, direction (no wrap)
 };
 
 template <int D>
 template <class F>
 void CellList<D>::for_each_neighbour_cell(std::int32_t cell, F&& f) const {
-  if (!periodic_) {
+  if (!periodic_ || !boundary_[cell]) {  // open grid, or a periodic cell away from the faces
     const Vec<D> zero = Vec<D>::Zero();
     for (const std::int32_t delta : neighbour_delta_) f(cell + delta, zero);
     return;
@@ -95,7 +96,7 @@ void CellList<D>::for_each_neighbour_cell(std::int32_t cell, F&& f) const {
 template <int D>
 template <class F>
 void CellList<D>::for_each_new_neighbour_cell(std::int32_t cell, int axis, int direction, F&& f) const {
-  if (!periodic_) {
+  if (!periodic_ || !boundary_[cell]) {
     const Vec<D> zero = Vec<D>::Zero();
     for (const std::int32_t delta : slab_delta_[axis][direction > 0 ? 1 : 0]) f(cell + delta, zero);
     return;

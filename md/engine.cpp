@@ -41,6 +41,7 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
   if (state.size() >= static_cast<std::size_t>(INT32_MAX)) throw std::invalid_argument("too many particles");
   for (int s = 0; s < 2; ++s)
     for (int r = 0; r < 2; ++r) sigma_[s][r] = radius_[s] + radius_[r];
+  same_radius_ = radius_[0] == radius_[1];
   for (std::size_t i = 0; i < state.size(); ++i) {
     Particle<D>& p = particles_[i];
     p.position = state.position[i];
@@ -108,7 +109,8 @@ void Engine<D, Queue>::scan_cell(std::int32_t id, std::int32_t cell, const Vec<D
     if (j == id) continue;
     const Particle<D>& q = particles_[j];
     const Vec<D> dr = q.position + q.velocity * (p.time - q.time) + shift - p.position;
-    const double tau = contact_time<D>(dr, q.velocity - p.velocity, sigma_row[species_[j]]);
+    const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
+    const double tau = contact_time<D>(dr, q.velocity - p.velocity, sigma);
     const double t = p.time + tau;
     if (t < best.time) {
       best.time = t;
@@ -120,7 +122,9 @@ void Engine<D, Queue>::scan_cell(std::int32_t id, std::int32_t cell, const Vec<D
 
 template <int D, class Queue>
 void Engine<D, Queue>::full_scan(std::int32_t id) {
-  predictions_[id] = Prediction{};
+  Prediction& p = predictions_[id];
+  p.time = never;
+  p.partner = -1;
   cells_.for_each_neighbour_cell(particles_[id].cell,
                                  [&](std::int32_t cell, const Vec<D>& shift) { scan_cell(id, cell, shift); });
 }
@@ -129,7 +133,10 @@ template <int D, class Queue>
 void Engine<D, Queue>::schedule(std::int32_t id) {
   int axis, direction;
   const double crossing = crossing_time(particles_[id], axis, direction);
-  const double t = std::min(crossing, predictions_[id].time);
+  Prediction& p = predictions_[id];
+  p.crossing_axis = static_cast<std::int8_t>(axis);
+  p.crossing_direction = static_cast<std::int8_t>(direction);
+  const double t = std::min(crossing, p.time);
   if (t == never) queue_.remove(id);
   else queue_.set(id, t);
 }
@@ -191,8 +198,7 @@ void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
 template <int D, class Queue>
 void Engine<D, Queue>::cross(std::int32_t id, double t) {
   Particle<D>& p = particles_[id];
-  int axis, direction;
-  crossing_time(p, axis, direction);
+  const int axis = predictions_[id].crossing_axis, direction = predictions_[id].crossing_direction;
   p.advance(t);
   auto c = cells_.coordinates(p.cell);
   c[axis] += direction;

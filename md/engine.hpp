@@ -78,6 +78,7 @@ class Engine {
     double time = never;              // earliest predicted collision
     std::int32_t partner = -1;        // its partner
     std::uint32_t partner_collisions = 0;  // partner's counter when predicted
+    std::int8_t crossing_axis = -1, crossing_direction = 0;  // of the scheduled cell crossing
   };
   void process(std::int32_t id, double t);
   void collide(std::int32_t i, std::int32_t j, double t);
@@ -97,6 +98,7 @@ class Engine {
   std::vector<std::uint8_t> species_, moving_flag_;
   std::vector<std::int32_t> moving_;
   double radius_[2], mass_[2], sigma_[2][2];
+  bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
   CellList<D> cells_;
   Queue queue_;
   double now_ = 0.0;

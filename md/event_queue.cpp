@@ -109,7 +109,7 @@ void CalendarEventQueue::clear() {
 }
 
 std::int64_t CalendarEventQueue::bucket_of(double time) const {
-  const double q = std::floor(time / width_);
+  const double q = std::floor(time * inverse_width_);
   if (q >= 1e18) return std::int64_t{1} << 60;
   if (q <= -1e18) return -(std::int64_t{1} << 60);
   return static_cast<std::int64_t>(q);
@@ -236,6 +236,7 @@ void CalendarEventQueue::rebuild(double new_width) {
   overflow_ = -1;
   in_lists_ = overflow_size_ = 0;
   width_ = new_width > 0.0 && std::isfinite(new_width) ? new_width : 1.0;
+  inverse_width_ = 1.0 / width_;
   width_known_ = true;
   current_ = ids.empty() ? 0 : bucket_of(earliest);
   window_end_ = current_ + mask_ + 1;

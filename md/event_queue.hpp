@@ -82,6 +82,7 @@ class CalendarEventQueue {
   std::int64_t current_ = 0;           // absolute index of the bucket in heap_
   std::int64_t window_end_ = 0;        // lists hold buckets < window_end_, overflow the rest
   double width_ = 1.0;                 // bucket width (time)
+  double inverse_width_ = 1.0;
   std::size_t size_ = 0, in_lists_ = 0, overflow_size_ = 0;
   std::uint64_t pops_ = 0, advances_ = 0;
   bool width_known_ = false;
