@@ -1,11 +1,21 @@
-// TvNS blast: configuration checks, branch selection and the solution object; the two methods
-// live in tvns_closed_form.cpp and tvns_ode.cpp.
+// TvNS blast: configuration checks, branch selection and the solution object that runs both methods
+// (tvns_closed_form.cpp, tvns_ode.cpp) and compares them. Eq. (1) [R-shock] defines A_d; Eqs. (18a,b)
+// [r-est, T-est] are the near-centre power laws.
 #include "hydro/tvns.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
 #include "common/validate.hpp"
+#include "hydro/tvns_closed_form.hpp"
+#include "hydro/tvns_ode.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::hydro {
@@ -42,5 +52,184 @@ TvnsCase tvns_case(int d, double gamma) {
 double amplitude_from_energy_integral(int d, double J) {
   return 4.0 * theory::unit_sphere_area(d) * J / ((d + 2.0) * (d + 2.0));
 }
+
+namespace {
+
+constexpr double epsilon = std::numeric_limits<double>::epsilon();
+
+detail::OdeSettings ode_settings(const TvnsConfig& config, double gamma, double tolerance, bool check) {
+  detail::OdeSettings settings;
+  settings.d = config.d;
+  settings.gamma = gamma;
+  settings.eos = config.eos;
+  settings.phi = config.phi;
+  settings.tolerance = tolerance;
+  settings.check_stepper = check;
+  return settings;
+}
+
+/// Closed-form energy integrals (ideal gas), exact in the singular case.
+detail::EnergyIntegrals closed_form_integrals(int d, double gamma, double tolerance) {
+  if (tvns_case(d, gamma) == TvnsCase::singular) return detail::singular_energy_integrals();
+  return detail::ClosedForm(d, gamma).energy_integrals(tolerance);
+}
+
+void disable_gsl_abort() {
+  // GSL's default handler aborts; every status is checked instead (main() does this too, but tests and
+  // other callers reach this library directly).
+  static const bool done = [] {
+    gsl_set_error_handler_off();
+    return true;
+  }();
+  (void)done;
+}
+
+}  // namespace
+
+struct TvnsSolution::Impl {
+  std::optional<detail::ClosedForm> closed_form;  // ideal gas, not singular
+  detail::OdeSettings settings;
+  detail::OdeResult ode;
+};
+
+TvnsAmplitude tvns_amplitude(const TvnsConfig& config, TvnsMethod method) {
+  config.validate();
+  disable_gsl_abort();
+  const double gamma = config.resolved_gamma();
+  TvnsAmplitude out;
+  if (method == TvnsMethod::closed_form) {
+    if (config.eos != Eos::ideal)
+      throw std::invalid_argument("method = closed form needs eos = ideal (got eos = " + to_string(config.eos) + ")");
+    const detail::EnergyIntegrals J = closed_form_integrals(config.d, gamma, config.tolerance);
+    out.A = amplitude_from_energy_integral(config.d, J.total());
+    out.A_error = amplitude_from_energy_integral(config.d, J.error) + 4.0 * epsilon * out.A;
+    out.evaluations = J.evaluations;
+    return out;
+  }
+  // ODE: the result at the requested tolerance, with the difference from a run at 10x that tolerance as its
+  // error estimate (an overestimate for a convergent method: errors scale with the tolerance).
+  const bool check = method == TvnsMethod::ode_check;
+  const detail::OdeResult fine = detail::integrate_self_similar(ode_settings(config, gamma, config.tolerance, check));
+  const double coarse_tolerance = std::min(10.0 * fine.tolerance_used, 1e-3);
+  const detail::OdeResult coarse = detail::integrate_self_similar(ode_settings(config, gamma, coarse_tolerance, check));
+  out.A = amplitude_from_energy_integral(config.d, fine.energy.total());
+  out.A_error = std::abs(out.A - amplitude_from_energy_integral(config.d, coarse.energy.total())) + 4.0 * epsilon * out.A;
+  out.evaluations = fine.energy.evaluations + coarse.energy.evaluations;
+  return out;
+}
+
+TvnsSolution::TvnsSolution(const TvnsConfig& config) : config_(config) {
+  config_.validate();
+  disable_gsl_abort();
+  gamma_ = config_.resolved_gamma();
+  const bool ideal = config_.eos == Eos::ideal;
+  case_ = ideal ? tvns_case(config_.d, gamma_) : TvnsCase::standard;
+  auto impl = std::make_shared<Impl>();
+  impl->settings = ode_settings(config_, gamma_, config_.tolerance, false);
+  impl->ode = detail::integrate_self_similar(impl->settings);
+  A_ode_ = amplitude_from_energy_integral(config_.d, impl->ode.energy.total());
+  shock_compression_ = impl->ode.shock_compression;
+  if (ideal) {
+    // Method 1: closed form; method 2: ODE. A is the closed form; its error is the larger of the quadrature
+    // estimate and the disagreement with the ODE (which dominates: the ODE is the less precise of the two).
+    if (case_ != TvnsCase::singular) impl->closed_form.emplace(config_.d, gamma_);
+    const detail::EnergyIntegrals J = impl->closed_form ? impl->closed_form->energy_integrals(config_.tolerance)
+                                                        : detail::singular_energy_integrals();
+    A_closed_form_ = amplitude_from_energy_integral(config_.d, J.total());
+    A_ = A_closed_form_;
+    method_agreement_ = std::abs(A_closed_form_ - A_ode_) / A_;
+    A_error_ = std::max(amplitude_from_energy_integral(config_.d, J.error), std::abs(A_closed_form_ - A_ode_)) +
+               4.0 * epsilon * A_;
+    shock_compression_ = (gamma_ + 1.0) / (gamma_ - 1.0);
+    if (impl->closed_form) cavity_radius_ = impl->closed_form->cavity_radius();
+  } else {
+    // Hard particles: Bulirsch-Stoer (A) against Dormand-Prince 5(4), two independent steppers.
+    const detail::OdeResult check =
+        detail::integrate_self_similar(ode_settings(config_, gamma_, config_.tolerance, true));
+    const double A_check = amplitude_from_energy_integral(config_.d, check.energy.total());
+    A_closed_form_ = std::numeric_limits<double>::quiet_NaN();
+    A_ = A_ode_;
+    method_agreement_ = std::abs(A_ode_ - A_check) / A_;
+    A_error_ = std::abs(A_ode_ - A_check) + 4.0 * epsilon * A_;
+  }
+  if (!(std::isfinite(A_) && A_ > 0.0 && std::isfinite(A_error_)))
+    throw std::runtime_error("TvNS: amplitude is not finite and positive for d = " + std::to_string(config_.d) +
+                             ", gamma = " + common::format_number(gamma_));
+  // Eqs. (18a,b) [r-est, T-est]: rho ∝ x^(d/(gamma-1)), T ∝ x^(-d/(gamma-1)); with gamma = 1 + 2/d the
+  // exponent is d^2/2 as in the paper. Hard particles are dilute at the centre, so the same holds there.
+  switch (case_) {
+    case TvnsCase::standard:
+      density_exponent_ = config_.d / (gamma_ - 1.0);
+      temperature_exponent_ = -density_exponent_;
+      break;
+    case TvnsCase::singular:  // G = 4x/3, T = 3x^2/16
+      density_exponent_ = 1.0;
+      temperature_exponent_ = 2.0;
+      break;
+    case TvnsCase::vacuum:  // G ∝ x4^alpha5, T ∝ x4, x4 ∝ (x - x_c) at the cavity edge
+      density_exponent_ = 2.0 / (gamma_ - 2.0);
+      temperature_exponent_ = 1.0;
+      break;
+  }
+  impl_ = std::move(impl);
+}
+
+TvnsPoint TvnsSolution::at(double r_over_R) const {
+  common::require_in_range("r/R", r_over_R, 0.0, 1.0, common::Bound::closed, common::Bound::closed);
+  TvnsPoint point{};
+  if (config_.eos != Eos::ideal) point = detail::ode_point(impl_->settings, impl_->ode, r_over_R);
+  else if (case_ == TvnsCase::singular) point = detail::singular_point(r_over_R);
+  else point = impl_->closed_form->at(r_over_R);
+  // Only the centre's temperature may be infinite (standard branch, x = 0).
+  const bool centre = r_over_R == 0.0 && case_ == TvnsCase::standard;
+  if (!(std::isfinite(point.density) && std::isfinite(point.velocity) && std::isfinite(point.pressure) &&
+        (std::isfinite(point.temperature) || centre)))
+    throw std::runtime_error("TvNS: non-finite profile at r/R = " + common::format_number(r_over_R));
+  return point;
+}
+
+std::vector<TvnsPoint> TvnsSolution::profile(const std::vector<double>& r_over_R) const {
+  std::vector<TvnsPoint> points;
+  points.reserve(r_over_R.size());
+  for (const double x : r_over_R) points.push_back(at(x));
+  return points;
+}
+
+TvnsSolution::ProfileEnergy TvnsSolution::energy_from_profile(double tolerance) const {
+  constexpr std::size_t workspace_size = 1000;
+  std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> workspace(
+      gsl_integration_workspace_alloc(workspace_size), &gsl_integration_workspace_free);
+  if (!workspace) throw std::runtime_error("TvNS: cannot allocate the GSL workspace");
+  ProfileEnergy out{0.0, 0.0, 0.0};
+  for (const bool kinetic : {true, false}) {
+    struct Parameters {
+      const TvnsSolution* self;
+      bool kinetic;
+    } parameters{this, kinetic};
+    gsl_function F;
+    F.function = [](double x, void* raw) {
+      const auto* params = static_cast<const Parameters*>(raw);
+      const TvnsSolution& solution = *params->self;
+      const TvnsPoint point = solution.at(x);
+      const int d = solution.config().d;
+      double density_of_energy = 0.0;
+      if (params->kinetic) density_of_energy = 0.5 * point.density * point.velocity * point.velocity;
+      else if (solution.config().eos == Eos::ideal) density_of_energy = point.pressure / (solution.gamma() - 1.0);
+      else density_of_energy = d / 2.0 * point.density * point.temperature;  // (d/2) n T
+      return density_of_energy * std::pow(x, d - 1);
+    };
+    F.params = &parameters;
+    double result = 0.0, error = 0.0;
+    const int status = gsl_integration_qags(&F, cavity_radius_, 1.0, 0.0, tolerance, workspace_size, workspace.get(),
+                                            &result, &error);
+    if (status != GSL_SUCCESS && !(status == GSL_EROUND && error <= 1e-10 * std::abs(result)))
+      throw std::runtime_error(std::string("TvNS: energy integral of the profile (QAGS): ") + gsl_strerror(status));
+    (kinetic ? out.kinetic : out.internal) = result;
+    out.error += error;
+  }
+  return out;
+}
+
+TvnsSolution solve_tvns(const TvnsConfig& config) { return TvnsSolution(config); }
 
 }  // namespace coldblast::hydro

@@ -3,6 +3,7 @@
 // [R-shock], Eqs. (18a,b) [r-est, T-est]): A_d by two independent methods (Kamm & Timmes closed
 // form, LA-UR-07-2849; direct integration of the self-similar ODEs) and profiles at any r/R,
 // for an ideal gas of any gamma or hard discs/spheres at packing fraction phi.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -89,12 +90,18 @@ class TvnsSolution {
   double density_exponent() const { return density_exponent_; }
   double temperature_exponent() const { return temperature_exponent_; }
 
-  /// Self-similar energy integral ∫0^1 [G V^2/2 + e] x^(d-1) dx (kinetic and internal parts),
-  /// computed from the profile by a quadrature independent of both methods; A = 4 S_d J/(d+2)^2.
-  double energy_integral_kinetic() const;
-  double energy_integral_internal() const;
+  /// Self-similar energy integrals ∫0^1 G V^2/2 x^(d-1) dx and ∫0^1 e x^(d-1) dx (e = internal energy per
+  /// volume in rho0 Rdot^2) recomputed from at() by GSL QAGS in x, independent of how A was obtained;
+  /// A = 4 S_d (kinetic + internal)/(d+2)^2. Slow (thousands of at() calls): for tests and verification.
+  struct ProfileEnergy {
+    double kinetic, internal, error;
+  };
+  ProfileEnergy energy_from_profile(double tolerance = 1e-13) const;
+
+  struct Impl;
 
  private:
+  std::shared_ptr<const Impl> impl_;
   TvnsConfig config_;
   double gamma_ = 0.0;
   TvnsCase case_ = TvnsCase::standard;

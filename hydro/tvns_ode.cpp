@@ -1,0 +1,285 @@
+// Self-similar TvNS equations, x = r/R, u = Rdot V, rho = rho0 G, p = rho0 Rdot^2 P, R ∝ t^(2/(d+2)):
+//   (V - x) G' + G V' + (d-1) G V/x = 0,   (V - x) V' - (d/2) V + P'/G = 0,   (V - x)(P' - C^2 G') = d P,
+// C^2 = c^2/Rdot^2 = kappa P/G (kappa = gamma, or (Z + phi Z' + 2Z^2/d)/Z for hard particles).
+// Standard branch: independent variable s = -ln x from the shock (s = 0) to the centre (s -> inf), in which
+// every right-hand side stays finite; vacuum branch: sigma = -ln(1 - V/x), finite at the cavity edge.
+#include "hydro/tvns_ode.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+// Boost.Odeint 1.74's steppers copy members that g++ 12 reports as maybe-uninitialized (a false
+// positive inside Boost's headers); silence that one warning for this file only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/numeric/odeint.hpp>
+
+#include "common/validate.hpp"
+
+namespace coldblast::hydro::detail {
+
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr long max_steps = 200000;
+
+/// The step control made no progress (too many steps, or none towards the cavity edge).
+struct StallError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Right-hand sides of the two branches; counts its evaluations.
+class SelfSimilarSystem {
+ public:
+  SelfSimilarSystem(const OdeSettings& settings, long& evaluations)
+      : settings_(settings), evaluations_(evaluations) {}
+
+  /// kappa = C^2 G/P at density G.
+  double kappa(double G) const {
+    if (settings_.eos == Eos::ideal) return settings_.gamma;
+    const double phi = settings_.phi * G;
+    return sound_speed_squared_over_temperature(settings_.eos, phi) / compressibility(settings_.eos, phi);
+  }
+  /// Internal energy per volume in rho0 Rdot^2: P/(gamma-1), or (d/2) n T = (d/2) P/Z.
+  double internal_energy(double G, double P) const {
+    if (settings_.eos == Eos::ideal) return P / (settings_.gamma - 1.0);
+    return settings_.d / 2.0 * P / compressibility(settings_.eos, settings_.phi * G);
+  }
+  /// V' from the three conservation laws, with q1 = (W-1) tau, q2 = (W-1)^2 tau, tau = x^2 G/P.
+  double velocity_slope(double W, double q1, double q2, double kappa_value) const {
+    const double d = settings_.d;
+    return ((d / 2.0) * W * q1 / kappa_value - d / kappa_value + (d - 1.0) * W) / (q2 / kappa_value - 1.0);
+  }
+
+  /// Standard branch, y = (W, ln G, ln P, J_kinetic, J_internal) as functions of s = -ln x.
+  void standard(const OdeState& y, OdeState& dyds, double s) const {
+    ++evaluations_;
+    const double d = settings_.d, W = y[0], G = std::exp(y[1]), P = std::exp(y[2]);
+    const double tau = std::exp(-2.0 * s + y[1] - y[2]);
+    const double k = kappa(G);
+    const double slope = velocity_slope(W, (W - 1.0) * tau, (W - 1.0) * (W - 1.0) * tau, k);
+    const double divergence = slope + (d - 1.0) * W;  // x^(1-d) (x^(d-1) V)'
+    dyds[0] = W - slope;
+    dyds[1] = divergence / (W - 1.0);
+    dyds[2] = -(d - k * divergence) / (W - 1.0);
+    dyds[3] = 0.5 * W * W * std::exp(y[1] - (d + 2.0) * s);  // G V^2/2 x^d
+    dyds[4] = internal_energy(G, P) * std::exp(-d * s);      // e x^d
+  }
+
+  /// Vacuum branch, y = (ln x, ln G, ln P, J_kinetic, J_internal) as functions of sigma = -ln(1 - W).
+  void vacuum(const OdeState& y, OdeState& dy, double sigma) const {
+    ++evaluations_;
+    const double d = settings_.d, one_minus_W = std::exp(-sigma), W = 1.0 - one_minus_W;
+    const double G = std::exp(y[1]), P = std::exp(y[2]);
+    const double ln_tau = 2.0 * y[0] + y[1] - y[2];
+    const double k = kappa(G);
+    const double slope = velocity_slope(W, -std::exp(ln_tau - sigma), std::exp(ln_tau - 2.0 * sigma), k);
+    const double divergence = slope + (d - 1.0) * W;
+    const double ds_dsigma = one_minus_W / (W - slope);
+    dy[0] = -ds_dsigma;
+    dy[1] = -divergence / (W - slope);
+    dy[2] = (d - k * divergence) / (W - slope);
+    dy[3] = 0.5 * W * W * std::exp(y[1] + (d + 2.0) * y[0]) * ds_dsigma;
+    dy[4] = internal_energy(G, P) * std::exp(d * y[0]) * ds_dsigma;
+  }
+
+ private:
+  const OdeSettings& settings_;
+  long& evaluations_;
+};
+
+/// Integrates over [t, t + 1/2], [t + 1/2, t + 1], ... until the energy still to come is negligible.
+/// Standard branch: the centre is a saddle of the ODEs (W - 1/gamma grows like x^-d inward), so the
+/// integration stops once the near-centre power laws hold (tau = x^2 G/P small), and the rest of the
+/// energy integrals is added in closed form, exact up to relative O(tau):
+///   ∫_s^inf e x^d ds = e x^d/d  (P -> constant),  ∫_s^inf G V^2/2 x^d ds = (G V^2/2 x^d)/(d + 2 + k),
+/// with k = -dln G/ds the local density exponent.
+template <class Stepper, class System>
+double integrate_to_end(Stepper stepper, System system, OdeState& y, double t, const OdeSettings& settings,
+                        std::vector<double>* times, std::vector<OdeState>* states, bool standard) {
+  long steps = 0;
+  auto observer = [&](const OdeState& state, double time) {
+    if (++steps > max_steps)
+      throw StallError("TvNS ODE: more than " + std::to_string(max_steps) + " steps before x = exp(-" +
+                               common::format_number(time) + ") (tolerance " + common::format_number(settings.tolerance) +
+                               " too tight?)");
+    if (times) {
+      times->push_back(time);
+      states->push_back(state);
+    }
+  };
+  const double d = settings.d, tolerance = settings.tolerance;
+  double step = 1e-3;
+  constexpr double t_limit = 700.0;  // exp(-745) underflows
+  for (;;) {
+    const double t_next = t + 0.5;
+    odeint::integrate_adaptive(stepper, system, y, t, t_next, step, observer);
+    t = t_next;
+    OdeState slope{};
+    system(y, slope, t);
+    const double J = y[3] + y[4];
+    if (!std::isfinite(J) || !std::isfinite(slope[3] + slope[4]))
+      throw std::runtime_error("TvNS ODE: non-finite state at " + common::format_number(t));
+    // Stop when what is left is negligible, or when the power laws at the inner end hold so well that
+    // the rest is known in closed form (its relative error is O(tau) or O(1 - W)).
+    const double negligible = 0.1 * tolerance * J;
+    if (standard) {
+      if ((std::abs(slope[3]) + std::abs(slope[4])) / d < negligible) return t;
+      const double tau = std::exp(-2.0 * t + y[1] - y[2]);
+      const double tail_kinetic = slope[3] / (d + 2.0 - slope[1]), tail_internal = slope[4] / d;
+      if (tau < 1e-3 && tau * (tail_kinetic + tail_internal) < negligible) {
+        y[3] += tail_kinetic;
+        y[4] += tail_internal;
+        return t;
+      }
+    } else {
+      // Cavity edge: G ∝ (1 - W)^alpha5, P ∝ (1 - W)^(1 + alpha5), ds/dsigma ∝ 1 - W = exp(-sigma),
+      // alpha5 = 2/(gamma - 2) (Kamm & Timmes Eq. 47 with omega = 0).
+      const double alpha5 = 2.0 / (settings.gamma - 2.0), one_minus_W = std::exp(-t);
+      const double tail_kinetic = slope[3] / (1.0 + alpha5), tail_internal = slope[4] / (2.0 + alpha5);
+      if (one_minus_W < 0.05 && one_minus_W * (tail_kinetic + tail_internal) < negligible) {
+        y[3] += tail_kinetic;
+        y[4] += tail_internal;
+        return t;
+      }
+    }
+    if (t > t_limit)
+      throw std::runtime_error("TvNS ODE: the energy integral did not converge before exp(-" +
+                               common::format_number(t_limit) + ")");
+  }
+}
+
+/// Controlled Runge-Kutta steppers, or Bulirsch-Stoer (already controlled), at absolute = relative tolerance.
+template <class Stepper>
+auto make_stepper(double tolerance) {
+  if constexpr (std::is_same_v<Stepper, odeint::bulirsch_stoer<OdeState>>) return Stepper(tolerance, tolerance);
+  else return odeint::make_controlled<Stepper>(tolerance, tolerance);
+}
+
+/// One integration with the stepper chosen in the settings.
+template <class Stepper>
+OdeResult run(const OdeSettings& settings, bool vacuum) {
+  OdeResult out;
+  long evaluations = 0;
+  const SelfSimilarSystem equations(settings, evaluations);
+  // Strong-shock state (Kamm & Timmes Eqs. 13-18; EOS jump in equation_of_state.cpp).
+  const double compression = settings.eos == Eos::ideal ? (settings.gamma + 1.0) / (settings.gamma - 1.0)
+                                                        : strong_shock_compression(settings.eos, settings.phi);
+  const double x = 1.0 / compression;  // rho0/rho1
+  out.shock_compression = compression;
+  auto stepper = make_stepper<Stepper>(settings.tolerance);
+  OdeState y{};
+  if (!vacuum) {
+    y = {1.0 - x, std::log(compression), std::log1p(-x), 0.0, 0.0};
+    auto system = [&](const OdeState& state, OdeState& derivative, double s) {
+      equations.standard(state, derivative, s);
+    };
+    out.end_s = integrate_to_end(stepper, system, y, 0.0, settings, &out.checkpoint_s, &out.checkpoint_state, true);
+    OdeState slope{};
+    system(y, slope, out.end_s);
+    out.end_density_exponent = -slope[1];
+    out.centre_pressure = std::exp(y[2]);
+  } else {
+    // Near gamma = 7 the flow first follows the singular solution W = 1/4 while x shrinks by decades, so
+    // sigma would hardly move: integrate in s until W is halfway from its shock value to 1, then in sigma.
+    y = {1.0 - x, std::log(compression), std::log1p(-x), 0.0, 0.0};
+    auto system_s = [&](const OdeState& state, OdeState& derivative, double s) {
+      equations.standard(state, derivative, s);
+    };
+    const double W_switch = 1.0 - x / 2.0;
+    double s = 0.0, step = 1e-3;
+    for (long tries = 0; y[0] < W_switch; ++tries) {
+      if (tries > max_steps) throw StallError("TvNS ODE: no progress towards the cavity edge");
+      const OdeState saved = y;
+      const double s_saved = s, step_saved = step;
+      if (stepper.try_step(system_s, y, s, step) == odeint::fail) continue;  // step already reduced
+      if (!(std::isfinite(y[1] + y[2] + y[3] + y[4]) && y[0] < 1.0)) {     // stepped past the edge
+        y = saved;
+        s = s_saved;
+        step = step_saved / 4.0;
+      }
+    }
+    const double sigma = -std::log1p(-y[0]);
+    y[0] = -s;  // ln x
+    auto system = [&](const OdeState& state, OdeState& derivative, double sigma_value) {
+      equations.vacuum(state, derivative, sigma_value);
+    };
+    integrate_to_end(make_stepper<Stepper>(settings.tolerance), system, y, sigma, settings, nullptr, nullptr,
+                     false);
+    out.cavity_radius = std::exp(y[0]);
+  }
+  out.energy.kinetic = y[3];
+  out.energy.internal = y[4];
+  out.energy.evaluations = evaluations;
+  if (!(y[3] > 0.0 && y[4] > 0.0 && std::isfinite(y[3] + y[4])))
+    throw std::runtime_error("TvNS ODE: energy integrals are not finite and positive");
+  return out;
+}
+
+}  // namespace
+
+OdeResult integrate_self_similar(const OdeSettings& settings) {
+  const bool vacuum = settings.eos == Eos::ideal && tvns_case(settings.d, settings.gamma) == TvnsCase::vacuum;
+  // Within ~1e-3 of d = 3, gamma = 7 the flow passes close to a saddle and the step control can stall at
+  // one tolerance and not at a neighbouring one: retry at 10x tighter, then 10x looser, and report the
+  // tolerance used. Any other failure propagates.
+  std::string failures;
+  for (const double factor : {1.0, 0.1, 10.0}) {
+    OdeSettings attempt = settings;
+    attempt.tolerance = settings.tolerance * factor;
+    if (attempt.tolerance < 1e-15 || attempt.tolerance > 1e-3) continue;
+    try {
+      OdeResult result = attempt.check_stepper ? run<odeint::runge_kutta_dopri5<OdeState>>(attempt, vacuum)
+                                               : run<odeint::bulirsch_stoer<OdeState>>(attempt, vacuum);
+      result.tolerance_used = attempt.tolerance;
+      return result;
+    } catch (const odeint::step_adjustment_error& error) {
+      failures += " [tolerance " + common::format_number(attempt.tolerance) + ": " + error.what() + "]";
+    } catch (const StallError& error) {
+      failures += " [tolerance " + common::format_number(attempt.tolerance) + ": " + error.what() + "]";
+    }
+  }
+  throw std::runtime_error("TvNS ODE failed for d = " + std::to_string(settings.d) +
+                           ", gamma = " + common::format_number(settings.gamma) + ":" + failures);
+}
+
+TvnsPoint ode_point(const OdeSettings& settings, const OdeResult& result, double r_over_R) {
+  if (result.checkpoint_s.empty()) throw std::logic_error("ode_point: no checkpoints (vacuum branch)");
+  if (r_over_R == 0.0) return {0.0, 0.0, 0.0, result.centre_pressure, infinity};
+  const double s = -std::log(r_over_R);
+  OdeState y{};
+  if (s >= result.end_s) {
+    // Near-centre power laws past the end of the integration (relative error O(tau) there).
+    y = result.checkpoint_state.back();
+    y[1] -= result.end_density_exponent * (s - result.end_s);
+  } else {
+    // Last checkpoint at or before s, then a short integration to s itself.
+    const auto after = std::upper_bound(result.checkpoint_s.begin(), result.checkpoint_s.end(), s);
+    const std::size_t index = std::max<std::ptrdiff_t>(after - result.checkpoint_s.begin() - 1, 0);
+    y = result.checkpoint_state[index];
+    const double s0 = result.checkpoint_s[index];
+    if (s > s0) {
+      long evaluations = 0;
+      const SelfSimilarSystem equations(settings, evaluations);
+      auto system = [&](const OdeState& state, OdeState& derivative, double time) {
+        equations.standard(state, derivative, time);
+      };
+      auto stepper =
+          odeint::make_controlled<odeint::runge_kutta_fehlberg78<OdeState>>(settings.tolerance, settings.tolerance);
+      odeint::integrate_adaptive(stepper, system, y, s0, s, s - s0);
+    }
+  }
+  const double G = std::exp(y[1]), P = std::exp(y[2]);
+  const double Z = settings.eos == Eos::ideal ? 1.0 : compressibility(settings.eos, settings.phi * G);
+  return {r_over_R, G, y[0] * r_over_R, P, P / (G * Z)};
+}
+
+}  // namespace coldblast::hydro::detail
+
+#pragma GCC diagnostic pop
