@@ -1,0 +1,57 @@
+// Equilibrium hard discs and spheres: Z = βP/n from the collisional virial against Henderson (2D)
+// and Carnahan-Starling (3D) within 4 standard errors plus the equations' own accuracy at
+// φ <= 0.3 (0.3%: CS lies between the accurate Kolafa fit and the virial series to about that),
+// and the exact kinetic-theory link Z - 1 = ν σ √(π m/(4 k_B T)) / d, which needs no equation of
+// state: for Maxwellian velocities the collision-averaged normal speed is √(π k_B T/m) (σ = 2a).
+#include <cmath>
+
+#include <catch2/catch.hpp>
+
+#include "md/equilibrium.hpp"
+
+using namespace coldblast::md;
+
+namespace {
+void check_equilibrium(int d, double phi, std::uint64_t seed) {
+  EquilibriumConfig c;
+  c.d = d;
+  c.phi = phi;
+  c.particles = 2000;
+  c.collisions = 1000000;
+  c.seed = seed;
+  const EquilibriumResult r = run_equilibrium(c);
+  INFO("d = " << d << ", phi = " << phi << ", seed = " << seed << ": Z = " << r.Z << " ± " << r.Z_error
+              << ", Z(collision rate) = " << r.Z_from_collision_rate << " ± " << r.Z_from_collision_rate_error
+              << ", " << r.reference_name << " " << r.Z_reference);
+  constexpr double equation_accuracy = 0.003;
+  CHECK(std::abs(r.Z - r.Z_reference) < 4.0 * r.Z_error + equation_accuracy * r.Z_reference);
+  const double joint = std::hypot(r.Z_error, r.Z_from_collision_rate_error);
+  CHECK(std::abs(r.Z - r.Z_from_collision_rate) < 4.0 * joint);
+  CHECK(r.Z_error > 0.0);
+  CHECK(r.Z_error < 0.01 * (r.Z - 1.0));  // the run is long enough to resolve Z - 1 to 1%
+  CHECK(std::abs(r.temperature - 1.0) < 1e-10);
+  CHECK(r.energy_error < 1e-12);
+}
+}  // namespace
+
+TEST_CASE("2D equilibrium pressure: Henderson and the collision-rate identity", "[slow]") {
+  check_equilibrium(2, 0.1, 21);
+  check_equilibrium(2, 0.3, 22);
+}
+
+TEST_CASE("3D equilibrium pressure: Carnahan-Starling and the collision-rate identity", "[slow]") {
+  check_equilibrium(3, 0.1, 31);
+  check_equilibrium(3, 0.3, 32);
+}
+
+TEST_CASE("equilibrium input is validated", "[fast]") {
+  EquilibriumConfig c;
+  c.phi = 0.6;
+  CHECK_THROWS_WITH(run_equilibrium(c), Catch::Contains("phi = 0.6"));
+  c = EquilibriumConfig{};
+  c.d = 4;
+  CHECK_THROWS_WITH(run_equilibrium(c), Catch::Contains("d = 4"));
+  c = EquilibriumConfig{};
+  c.collisions = 5;
+  CHECK_THROWS_WITH(run_equilibrium(c), Catch::Contains("collisions"));
+}
