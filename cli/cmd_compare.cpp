@@ -85,6 +85,9 @@ void add_compare_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--observables", options->observables,
                       "Comma-separated subset of R_imp,C_imp,V_imp,u_imp,T0,n0 (default: all recorded)");
+  command->add_option("--hydro-cells", options->config.hydro_cells,
+                      "Navier–Stokes cells for --against hydro, [16, 100000]")
+      ->capture_default_str();
   command->add_option("--out", options->out, "Report directory (report.md, verdict.json, exponents.csv, figures/)");
   command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
   add_format_option(*command, options->format);

@@ -12,6 +12,7 @@ namespace coldblast::cli {
 void add_theory_command(CLI::App& app);
 void add_md_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
+void add_reproduce_command(CLI::App& app);
 
 /// Output format shared by every subcommand (--format table|json).
 enum class Format { table, json };

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "common/validate.hpp"
+#include "compare/hydro_reference.hpp"
+#include "theory/prefactors.hpp"
 #include "theory/exponents.hpp"
 
 namespace coldblast::compare {
@@ -49,6 +51,7 @@ void CompareConfig::validate() const {
   require_in_range("--sigma", sigma, 0.0, 10.0, Bound::open, Bound::closed);
   if (allowance >= 0) require_in_range("--allowance", allowance, 0.0, 1.0, Bound::closed, Bound::closed);
   require_in_range("--window-decades", window_decades, 0.0, 6.0, Bound::open, Bound::closed);
+  common::require_integer_in_range("--hydro-cells", hydro_cells, 16, 100000);
   for (const auto& name : observables) {
     const auto& known = table1_observables();
     if (std::find(known.begin(), known.end(), name) == known.end())
@@ -68,9 +71,39 @@ double CompareConfig::effective_allowance() const {
 }
 
 CompareResult run_compare(const CompareConfig& config) {
-  if (config.against == Reference::hydro)
-    throw std::invalid_argument("--against hydro needs the Navier–Stokes prediction: call run_compare with reference exponents");
-  return run_compare(config, nullptr);
+  if (config.against != Reference::hydro) return run_compare(config, nullptr);
+  // The Navier–Stokes prediction at the MD's own R/λ (no fitted parameter).
+  config.validate();
+  const RunData run = read_run(config.run_dir);
+  const double R_over_lambda_max = md_R_over_lambda(run, run.series.begin()->second.t.back());
+  const HydroReference hydro(run.d, std::max(20.0, 1.5 * R_over_lambda_max), config.hydro_cells);
+  return run_compare(config, [&](const std::string& observable, double t) {
+    return hydro.exponent(observable, md_R_over_lambda(run, t));
+  });
+}
+
+double md_R_over_lambda(const RunData& run, double t) {
+  // The MD's own shock radius (observable R, interpolated in ln t) over λ of the run's summary;
+  // without a recorded R, Eq. (1) with the run's E, n and A_d.
+  const auto number = [&](const char* key) {
+    if (!run.summary.contains(key) || !run.summary[key].is_number())
+      throw std::invalid_argument((run.directory / "summary.json").string() + ": no number '" + key + "'");
+    return run.summary[key].get<double>();
+  };
+  const double lambda = number("lambda");
+  const auto found = run.series.find("R");
+  if (found == run.series.end()) {
+    const theory::BlastParameters p{run.d, number("n"), number("a"), number("E"), number("A_d")};
+    return theory::shock_radius(p, t) / lambda;
+  }
+  const BlockSeries& R = found->second;
+  const auto values = R.ensemble_values();
+  if (t <= R.t.front()) return values.front() / lambda;
+  if (t >= R.t.back()) return values.back() / lambda;
+  const auto upper = std::upper_bound(R.t.begin(), R.t.end(), t);
+  const std::size_t k = static_cast<std::size_t>(upper - R.t.begin());
+  const double w = std::log(t / R.t[k - 1]) / std::log(R.t[k] / R.t[k - 1]);
+  return std::exp((1 - w) * std::log(values[k - 1]) + w * std::log(values[k])) / lambda;
 }
 
 CompareResult run_compare(const CompareConfig& config, const ReferenceExponents& reference) {

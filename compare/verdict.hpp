@@ -42,6 +42,7 @@ struct CompareConfig {
   double allowance = -1.0;
   double window_decades = 0.5;           ///< window fit over [t_max 10^-w, t_max], w in (0, 6]
   std::vector<std::string> observables;  ///< empty: every Table 1 observable present in the run
+  int hydro_cells = 256;                 ///< Navier–Stokes cells for Reference::hydro, [16, 100000]
   void validate() const;
   /// The allowance in force: `allowance` if >= 0, else the reference's default.
   double effective_allowance() const;
@@ -73,9 +74,14 @@ struct CompareResult {
   RunData run;
 };
 
-/// Reads the run and compares every requested observable. Throws std::invalid_argument for a bad
-/// config or run directory (including --against paper for d != 2).
+/// Reads the run and compares every requested observable; for Reference::hydro it first runs the
+/// Navier–Stokes core solver up to 1.5 times the run's largest R/λ. Throws std::invalid_argument
+/// for a bad config or run directory (including --against paper for d != 2).
 CompareResult run_compare(const CompareConfig& config);
+
+/// The MD's R/λ at time t: its recorded shock radius R (log-interpolated) over summary.json's
+/// lambda, or Eq. (1) with the run's E, n, a, A_d when R was not recorded.
+double md_R_over_lambda(const RunData& run, double t);
 
 /// Exponents predicted by another model at the MD's times, used for Reference::hydro.
 using ReferenceExponents = std::function<double(const std::string& observable, double t)>;

@@ -1,0 +1,74 @@
+// coldblast reproduce: A_2 and A_3, the Navier–Stokes core run, an MD ensemble of the paper's 2D
+// scene, and comparisons against theory, the paper's Table 1 and hydro, with reports.
+#include <cstdio>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "compare/reproduce.hpp"
+
+namespace coldblast::cli {
+
+namespace {
+
+struct ReproduceOptions {
+  std::string scale = "quick";
+  bool no_figures = false;
+  Format format = Format::table;
+  compare::ReproduceConfig config;
+};
+
+void print_verdict(const char* name, const compare::CompareResult& result) {
+  std::printf("\nagainst %-6s: %s\n", name, result.pass ? "PASS" : "FAIL");
+  for (const auto& v : result.observables)
+    std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma)  %s\n", v.name.c_str(),
+                v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error,
+                v.deviation_sigma, v.pass ? "pass" : "FAIL");
+}
+
+void run(ReproduceOptions& options) {
+  options.config.scale = compare::parse_scale(options.scale);
+  options.config.figures = !options.no_figures;
+  const compare::ReproduceResult r =
+      compare::run_reproduce(options.config, [](const std::string& line) { std::cerr << "reproduce: " << line << '\n'; });
+  if (options.format == Format::json) {
+    print_json(compare::reproduce_summary(r));
+    return;
+  }
+  std::printf("A_2 = %.15g ± %.1e   A_3 = %.15g ± %.1e   A_2(phi = %.4f) = %.10g ± %.1e\n", r.A2, r.A2_error, r.A3,
+              r.A3_error, r.phi_md, r.A2_md, r.A2_md_error);
+  std::printf("Navier–Stokes core at R/lambda = %.3g:", r.hydro["R_over_lambda"].get<double>());
+  for (const char* name : {"H", "n0", "T0"})
+    std::printf("  %s %.4f (theory %s)", name, r.hydro["exponents"][name]["measured"].get<double>(),
+                r.hydro["exponents"][name]["theory_rational"].get<std::string>().c_str());
+  std::printf("\nMD: %lld realizations, %.3g collisions in %.1f s\n", r.md["realizations"].get<long long>(),
+              r.md["collisions_total"].get<double>(), r.md["wall_seconds"].get<double>());
+  print_verdict("theory", r.against_theory);
+  print_verdict("paper", r.against_paper);
+  print_verdict("hydro", r.against_hydro);
+  std::printf("\nreport: %s/REPORT.md\n", r.out.string().c_str());
+}
+
+}  // namespace
+
+void add_reproduce_command(CLI::App& app) {
+  auto options = std::make_shared<ReproduceOptions>();
+  CLI::App* command = app.add_subcommand(
+      "reproduce", "Reproduce the paper: A_2, A_3, the Navier–Stokes core, an MD ensemble and the comparisons");
+  command->add_option("--scale", options->scale, "quick (minutes on 2 cores) or paper (the paper's 3e4 realizations)")
+      ->capture_default_str();
+  command->add_option("--out", options->config.out, "Output directory")->capture_default_str();
+  command->add_option("--threads", options->config.threads, "MD worker threads; 0 = all hardware threads")
+      ->capture_default_str();
+  command->add_option("--seed", options->config.seed, "MD master seed")->capture_default_str();
+  command->add_option("--realizations", options->config.realizations,
+                      "MD realizations; 0 = the scale's default (quick 384, paper 30000)")
+      ->capture_default_str();
+  command->add_option("--hydro-until", options->config.hydro_until,
+                      "Navier–Stokes run up to this R/lambda, [20, 1e8]; 0 = the scale's default (1e4, 1e6)")
+      ->capture_default_str();
+  command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
+  add_format_option(*command, options->format);
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace coldblast::cli

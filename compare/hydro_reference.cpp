@@ -1,0 +1,70 @@
+#include "compare/hydro_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace coldblast::compare {
+
+HydroReference::HydroReference(int d, double until_R_over_lambda, int cells)
+    : HydroReference(hydro::run_hydro_core(d, until_R_over_lambda, cells)) {}
+
+HydroReference::HydroReference(hydro::NavierStokesResult result) : result_(std::move(result)) {
+  if (result_.samples.size() < 3) throw std::invalid_argument("hydro reference: fewer than 3 samples");
+  build_collision_exponents();
+}
+
+void HydroReference::build_collision_exponents() {
+  // C(t) ∝ ∫_0^t n0 √T0 dt' (Eq. (24) [C-imp-long] argument with τ = 1/(n0 a^{d-1} √T0)). The
+  // part before the first sample is the power-law extrapolation t0 f(t0)/(1 + β), β the local
+  // exponent of f = n0 √T0 there; the rest is the trapezoid rule in ln t.
+  const auto& s = result_.samples;
+  std::vector<double> f(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) f[i] = s[i].n0 * std::sqrt(s[i].T0);
+  const double beta = std::log(f[1] / f[0]) / std::log(s[1].t / s[0].t);
+  if (!(beta > -1.0)) throw std::runtime_error("hydro reference: n0 √T0 decays too fast at early times to integrate");
+  double C = s[0].t * f[0] / (1.0 + beta);
+  log_R_over_lambda_.clear();
+  collision_exponent_.clear();
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (i > 0) {
+      const double h = std::log(s[i].t / s[i - 1].t);
+      C += 0.5 * h * (s[i].t * f[i] + s[i - 1].t * f[i - 1]);
+    }
+    log_R_over_lambda_.push_back(std::log(s[i].R_over_lambda));
+    collision_exponent_.push_back(s[i].t * f[i] / C);  // d ln C / d ln t
+  }
+}
+
+double HydroReference::min_R_over_lambda() const {
+  return std::max(result_.exponents.front().R_over_lambda, std::exp(log_R_over_lambda_.front()));
+}
+
+double HydroReference::max_R_over_lambda() const {
+  return std::min(result_.exponents.back().R_over_lambda, std::exp(log_R_over_lambda_.back()));
+}
+
+double HydroReference::exponent(const std::string& observable, double R_over_lambda) const {
+  if (!(R_over_lambda >= min_R_over_lambda() && R_over_lambda <= max_R_over_lambda()))
+    throw std::invalid_argument("hydro reference: R/lambda = " + std::to_string(R_over_lambda) +
+                                " is outside the solved range [" + std::to_string(min_R_over_lambda()) + ", " +
+                                std::to_string(max_R_over_lambda()) + "]");
+  if (observable == "C_imp") {
+    const double x = std::log(R_over_lambda);
+    const auto upper = std::upper_bound(log_R_over_lambda_.begin(), log_R_over_lambda_.end(), x);
+    const std::size_t i = std::min<std::size_t>(std::max<std::ptrdiff_t>(upper - log_R_over_lambda_.begin(), 1),
+                                                log_R_over_lambda_.size() - 1);
+    const double w = (x - log_R_over_lambda_[i - 1]) / (log_R_over_lambda_[i] - log_R_over_lambda_[i - 1]);
+    return (1 - w) * collision_exponent_[i - 1] + w * collision_exponent_[i];
+  }
+  const hydro::RunningExponents e = result_.exponents_at(R_over_lambda);
+  if (observable == "R_imp" || observable == "H") return e.H;  // R_imp ~ H, Eq. (6) [R-imp]
+  if (observable == "V_imp") return 0.5 * e.T0;                // V_imp ~ √T0, Sec. III
+  if (observable == "u_imp") return e.H - 1.0;                 // u_imp ~ R_imp/t, Eq. (22)
+  if (observable == "n0") return e.n0;
+  if (observable == "T0") return e.T0;
+  if (observable == "R") return e.R;
+  throw std::invalid_argument("observable = " + observable + " has no hydro prediction");
+}
+
+}  // namespace coldblast::compare

@@ -1,0 +1,34 @@
+#pragma once
+// The Navier–Stokes prediction of the MD's running exponents at the MD's own R/λ (issue 5,
+// `--against hydro`): n0 and T0 directly, R_imp from H, V_imp from √T0, u_imp from H/t and C_imp
+// from ∫ n0 √T0 dt (the paper's Sec. III arguments: R_imp ~ H, V_imp ~ √T0, u_imp ~ R_imp/t,
+// C_imp = t/τ with τ = 1/(n0 a^{d-1} V_imp)). No parameter is fitted: κ is the Chapman–Enskog one.
+#include <string>
+#include <vector>
+
+#include "hydro/navier_stokes.hpp"
+
+namespace coldblast::compare {
+
+class HydroReference {
+ public:
+  /// Runs the conduction-only core solver for dimension d up to R/λ = until (>= 10).
+  HydroReference(int d, double until_R_over_lambda, int cells = 256);
+  /// Wraps an existing Navier–Stokes result (its samples must span the R/λ asked for).
+  explicit HydroReference(hydro::NavierStokesResult result);
+
+  /// Time exponent of `observable` (R_imp, C_imp, V_imp, u_imp, T0, n0, R, H) at R/λ; throws
+  /// std::invalid_argument outside the solved range or for an unknown observable.
+  double exponent(const std::string& observable, double R_over_lambda) const;
+  /// Smallest and largest R/λ at which exponents are available.
+  double min_R_over_lambda() const;
+  double max_R_over_lambda() const;
+  const hydro::NavierStokesResult& result() const { return result_; }
+
+ private:
+  void build_collision_exponents();
+  hydro::NavierStokesResult result_;
+  std::vector<double> log_R_over_lambda_, collision_exponent_;  // d ln C / d ln t at the samples
+};
+
+}  // namespace coldblast::compare

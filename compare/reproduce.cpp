@@ -1,0 +1,183 @@
+#include "compare/reproduce.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "coldblast/paper_scene.hpp"
+#include "common/validate.hpp"
+#include "compare/hydro_reference.hpp"
+#include "compare/report.hpp"
+#include "hydro/navier_stokes.hpp"
+#include "hydro/tvns.hpp"
+#include "md/ensemble.hpp"
+#include "md/scenes.hpp"
+#include "theory/exponents.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::compare {
+
+namespace fs = std::filesystem;
+
+ReproduceScale parse_scale(const std::string& text) {
+  if (text == "quick") return ReproduceScale::quick;
+  if (text == "paper") return ReproduceScale::paper;
+  throw std::invalid_argument("--scale = " + text + " is not one of quick, paper");
+}
+
+void ReproduceConfig::validate() const {
+  common::require_integer_in_range("--threads", threads, 0, 1024);
+  common::require_integer_in_range("--realizations", realizations, 0, 100000000);
+  if (hydro_until != 0)
+    common::require_in_range("--hydro-until", hydro_until, 20.0, 1e8, common::Bound::closed, common::Bound::closed);
+  if (out.empty()) throw std::invalid_argument("--out: the output directory must not be empty");
+}
+
+namespace {
+
+void say(const ReproduceProgress& progress, const std::string& line) {
+  if (progress) progress(line);
+}
+
+common::Json hydro_json(const hydro::NavierStokesResult& result) {
+  const auto exact = theory::scaling_exponents(result.config.physics.d);
+  const hydro::RunningExponents e = result.final_exponents();
+  common::Json exponents;
+  const std::pair<const char*, double> measured[] = {{"H", e.H}, {"n0", e.n0}, {"T0", e.T0}, {"R", e.R}};
+  for (const auto& [name, value] : measured)
+    exponents[name] = {{"measured", value},
+                       {"theory", theory::to_double(exact.at(name).in_time)},
+                       {"theory_rational", theory::to_string(exact.at(name).in_time)}};
+  return {{"d", result.config.physics.d},
+          {"R_over_lambda", e.R_over_lambda},
+          {"exponents", exponents},
+          {"energy_error", result.max_energy_error},
+          {"wall_seconds", result.statistics.wall_seconds}};
+}
+
+std::string verdict_rows(const CompareResult& result) {
+  std::ostringstream md;
+  char line[400];
+  for (const auto& v : result.observables) {
+    std::snprintf(line, sizeof line, "| %s | %s | %.4f%s | %.4f ± %.4f | %+.2f | %s |\n", v.name.c_str(),
+                  v.alpha_theory_rational.c_str(), v.alpha_reference,
+                  v.alpha_reference_error > 0 ? (" ± " + common::format_number(v.alpha_reference_error)).c_str() : "",
+                  v.alpha_measured, v.alpha_error, v.deviation_sigma, v.pass ? "pass" : "**fail**");
+    md << line;
+  }
+  return md.str();
+}
+
+std::string top_report(const ReproduceResult& r) {
+  std::ostringstream md;
+  md << "# coldblast reproduce\n\n"
+     << "## TvNS amplitudes (Eq. (1), exact solver, two independent methods)\n\n"
+     << "| quantity | value | error |\n|---|---|---|\n"
+     << "| A_2 (γ = 2) | " << common::format_number(r.A2) << " | " << common::format_number(r.A2_error) << " |\n"
+     << "| A_3 (γ = 5/3) | " << common::format_number(r.A3) << " | " << common::format_number(r.A3_error) << " |\n"
+     << "| A_2 at φ = " << common::format_number(r.phi_md) << " (Henderson EOS) | "
+     << common::format_number(r.A2_md) << " | " << common::format_number(r.A2_md_error) << " |\n\n"
+     << "The paper prints A_3 = 0.072401066; see docs/verification.md.\n\n"
+     << "## Navier–Stokes core (d = 2)\n\n```json\n" << r.hydro.dump(2) << "\n```\n\n"
+     << "## MD ensemble\n\n" << r.md["realizations"] << " realizations of the paper's 2D scene, "
+     << r.md["collisions_total"] << " collisions in " << r.md["wall_seconds"] << " s; largest relative energy error "
+     << r.md["energy_error_max"] << ". Output: `md/`.\n\n";
+  const std::pair<const char*, const CompareResult*> comparisons[] = {
+      {"theory", &r.against_theory}, {"paper", &r.against_paper}, {"hydro", &r.against_hydro}};
+  for (const auto& [name, result] : comparisons) {
+    md << "## Against " << name << ": " << (result->pass ? "PASS" : "FAIL") << "\n\n"
+       << "| observable | alpha_T | reference | alpha_S (last two times) | deviation / sigma | verdict |\n"
+       << "|---|---|---|---|---|---|\n" << verdict_rows(*result)
+       << "\nFull report: [report-" << name << "/report.md](report-" << name << "/report.md)\n\n";
+  }
+  return md.str();
+}
+
+}  // namespace
+
+ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProgress& progress) {
+  config.validate();
+  const bool quick = config.scale == ReproduceScale::quick;
+  ReproduceResult r;
+  r.out = config.out;
+  fs::create_directories(config.out);
+
+  say(progress, "step 1/5: exact TvNS amplitudes A_2, A_3 and A_2 at the MD's packing fraction");
+  const hydro::TvnsSolution a2 = hydro::solve_tvns({2, 0.0, hydro::Eos::ideal, 0.0, 1e-13});
+  const hydro::TvnsSolution a3 = hydro::solve_tvns({3, 0.0, hydro::Eos::ideal, 0.0, 1e-13});
+  md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
+  r.phi_md = theory::packing_fraction(scene.d, scene.n, scene.a);
+  const hydro::TvnsSolution a2_md = hydro::solve_tvns({2, 0.0, hydro::Eos::henderson, r.phi_md, 1e-10});
+  r.A2 = a2.A();
+  r.A2_error = a2.A_error();
+  r.A3 = a3.A();
+  r.A3_error = a3.A_error();
+  r.A2_md = a2_md.A();
+  r.A2_md_error = a2_md.A_error();
+  common::write_file_atomic(config.out / "tvns.json",
+                            common::Json{{"A_2", r.A2}, {"A_2_error", r.A2_error}, {"A_3", r.A3},
+                                         {"A_3_error", r.A3_error}, {"phi_md", r.phi_md},
+                                         {"A_2_phi_md", r.A2_md}, {"A_2_phi_md_error", r.A2_md_error}}
+                                    .dump(2) + "\n");
+
+  say(progress, "step 2/5: Navier–Stokes core run (d = 2, heat conduction, Chapman–Enskog kappa)");
+  const double until = config.hydro_until > 0 ? config.hydro_until : (quick ? 1e4 : 1e6);
+  const hydro::NavierStokesResult ns = hydro::run_hydro_core(2, until);
+  r.hydro = hydro_json(ns);
+  common::write_file_atomic(config.out / "hydro" / "core.json", r.hydro.dump(2) + "\n");
+
+  say(progress, "step 3/5: MD ensemble of the paper's 2D scene");
+  scene.A_d = r.A2_md;
+  scene.seed = config.seed;
+  scene.realizations = config.realizations > 0 ? config.realizations : (quick ? 384 : 30000);
+  scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
+  md::RunOptions options;
+  options.threads = config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  options.progress = [&progress, total = scene.realizations](long long done, long long) {
+    if (progress && (done % std::max<long long>(1, total / 20) == 0 || done == total))
+      progress("  md: " + std::to_string(done) + "/" + std::to_string(total) + " realizations");
+  };
+  const md::BlastResult blast = md::run_blast(scene, options);
+  md::write_blast_outputs(blast, config.out / "md");
+  r.md = md::blast_summary(blast);
+
+  say(progress, "step 4/5: comparisons against theory, the paper's Table 1 and the Navier–Stokes prediction");
+  CompareConfig compare_config;
+  compare_config.run_dir = config.out / "md";
+  compare_config.against = Reference::theory;
+  r.against_theory = run_compare(compare_config);
+  compare_config.against = Reference::paper;
+  r.against_paper = run_compare(compare_config);
+  const HydroReference hydro_reference(ns);
+  compare_config.against = Reference::hydro;
+  const RunData& run = r.against_theory.run;
+  r.against_hydro = run_compare(compare_config, [&](const std::string& observable, double t) {
+    return hydro_reference.exponent(observable, md_R_over_lambda(run, t));
+  });
+
+  say(progress, "step 5/5: reports");
+  write_report(r.against_theory, {config.out / "report-theory", config.figures});
+  write_report(r.against_paper, {config.out / "report-paper", config.figures});
+  write_report(r.against_hydro, {config.out / "report-hydro", config.figures});
+  common::write_file_atomic(config.out / "REPORT.md", top_report(r));
+  common::write_file_atomic(config.out / "summary.json", reproduce_summary(r).dump(2) + "\n");
+  return r;
+}
+
+common::Json reproduce_summary(const ReproduceResult& r) {
+  return {{"A_2", r.A2},
+          {"A_2_error", r.A2_error},
+          {"A_3", r.A3},
+          {"A_3_error", r.A3_error},
+          {"phi_md", r.phi_md},
+          {"A_2_phi_md", r.A2_md},
+          {"hydro", r.hydro},
+          {"md", r.md},
+          {"against_theory", verdict_json(r.against_theory)},
+          {"against_paper", verdict_json(r.against_paper)},
+          {"against_hydro", verdict_json(r.against_hydro)},
+          {"out", r.out.string()}};
+}
+
+}  // namespace coldblast::compare

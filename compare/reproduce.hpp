@@ -1,0 +1,50 @@
+#pragma once
+// `coldblast reproduce`: the paper end to end on one machine. A_2 and A_3 (exact TvNS), A_2 at the
+// MD's packing fraction, the Navier–Stokes core run, an MD ensemble of the paper's 2D scene, and
+// the comparison against theory, the paper's Table 1 and the hydro prediction, with reports.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "common/output.hpp"
+#include "compare/verdict.hpp"
+
+namespace coldblast::compare {
+
+/// quick: a few minutes on 2 cores with meaningful error bars; paper: the paper's statistics.
+enum class ReproduceScale { quick, paper };
+/// Parses "quick" or "paper"; throws std::invalid_argument naming --scale.
+ReproduceScale parse_scale(const std::string& text);
+
+struct ReproduceConfig {
+  ReproduceScale scale = ReproduceScale::quick;
+  std::filesystem::path out = "coldblast-reproduce";  ///< output directory (sub-folders per step)
+  int threads = 0;                 ///< MD worker threads; 0 = all hardware threads
+  std::uint64_t seed = 1;          ///< MD master seed
+  long long realizations = 0;      ///< MD realizations; 0 = the scale's default (quick 384, paper 30000)
+  double hydro_until = 0;          ///< NS run up to this R/λ; 0 = the scale's default (quick 1e4, paper 1e6)
+  bool figures = true;             ///< gnuplot figures in the reports
+  void validate() const;
+};
+
+struct ReproduceResult {
+  double A2 = 0, A2_error = 0, A3 = 0, A3_error = 0;  ///< ideal gas, γ = 1 + 2/d
+  double A2_md = 0, A2_md_error = 0, phi_md = 0;      ///< A_2 at the MD's packing fraction (Henderson)
+  common::Json hydro;                                  ///< final NS exponents beside theory
+  common::Json md;                                     ///< the MD summary.json
+  CompareResult against_theory, against_paper, against_hydro;
+  std::filesystem::path out;
+};
+
+/// Progress lines ("step 2/5: ...") for stderr.
+using ReproduceProgress = std::function<void(const std::string&)>;
+
+/// Runs every step, writing out/{tvns.json, hydro/, md/, report-theory/, report-paper/,
+/// report-hydro/, REPORT.md, summary.json}. Throws std::invalid_argument / std::runtime_error.
+ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProgress& progress = {});
+
+/// summary.json of a reproduction (keys in docs/cli.md, `## reproduce`).
+common::Json reproduce_summary(const ReproduceResult& result);
+
+}  // namespace coldblast::compare
