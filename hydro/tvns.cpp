@@ -180,10 +180,11 @@ TvnsPoint TvnsSolution::at(double r_over_R) const {
   if (config_.eos != Eos::ideal) point = detail::ode_point(impl_->settings, impl_->ode, r_over_R);
   else if (case_ == TvnsCase::singular) point = detail::singular_point(r_over_R);
   else point = impl_->closed_form->at(r_over_R);
-  // Only the centre's temperature may be infinite (standard branch, x = 0).
-  const bool centre = r_over_R == 0.0 && case_ == TvnsCase::standard;
+  // Only the standard branch's temperature may be infinite: at x = 0, or where rho/rho0 ∝ x^(d/(gamma-1))
+  // underflows (e.g. d = 1, gamma = 1.01, x < 1e-3), so that T = p/n overflows.
+  const bool overflow = case_ == TvnsCase::standard && point.density == 0.0;
   if (!(std::isfinite(point.density) && std::isfinite(point.velocity) && std::isfinite(point.pressure) &&
-        (std::isfinite(point.temperature) || centre)))
+        (std::isfinite(point.temperature) || overflow)))
     throw std::runtime_error("TvNS: non-finite profile at r/R = " + common::format_number(r_over_R));
   return point;
 }

@@ -131,9 +131,11 @@ double integrate_to_end(Stepper stepper, System system, OdeState& y, double t, c
     const double negligible = 0.1 * tolerance * J;
     if (standard) {
       if ((std::abs(slope[3]) + std::abs(slope[4])) / d < negligible) return t;
-      const double tau = std::exp(-2.0 * t + y[1] - y[2]);
+      // Hard particles: Z(phi G) - 1 = O(phi G) also corrects the power laws.
+      const double tau = std::exp(-2.0 * t + y[1] - y[2]), dense = settings.phi * std::exp(y[1]);
+      const double correction = std::max(tau, 4.0 * dense);
       const double tail_kinetic = slope[3] / (d + 2.0 - slope[1]), tail_internal = slope[4] / d;
-      if (tau < 1e-3 && tau * (tail_kinetic + tail_internal) < negligible) {
+      if (correction < 1e-3 && correction * (tail_kinetic + tail_internal) < negligible) {
         y[3] += tail_kinetic;
         y[4] += tail_internal;
         return t;
@@ -181,10 +183,23 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
       equations.standard(state, derivative, s);
     };
     out.end_s = integrate_to_end(stepper, system, y, 0.0, settings, &out.checkpoint_s, &out.checkpoint_state, true);
-    OdeState slope{};
-    system(y, slope, out.end_s);
+    // The energy integrals are complete; for profiles, extend the checkpoints until tau = x^2 G/P and
+    // phi G are below 1e-14 (the relative error of the power laws used beyond), unless the saddle's growing mode (W drifting from
+    // 1/gamma) shows first.
+    OdeState extended = y, slope{};
+    for (double s = out.end_s; s < out.end_s + 40.0; s += 0.5) {
+      system(extended, slope, s);
+      const double correction = std::max(std::exp(-2.0 * s + extended[1] - extended[2]), 4.0 * settings.phi * std::exp(extended[1]));
+      if (correction < 1e-14 || std::abs(slope[0]) > 1e-9) break;
+      odeint::integrate_adaptive(stepper, system, extended, s, s + 0.5, 1e-3, [&](const OdeState& state, double time) {
+        out.checkpoint_s.push_back(time);
+        out.checkpoint_state.push_back(state);
+      });
+      out.end_s = s + 0.5;
+    }
+    system(extended, slope, out.end_s);
     out.end_density_exponent = -slope[1];
-    out.centre_pressure = std::exp(y[2]);
+    out.centre_pressure = std::exp(extended[2]);
   } else {
     // Near gamma = 7 the flow first follows the singular solution W = 1/4 while x shrinks by decades, so
     // sigma would hardly move: integrate in s until W is halfway from its shock value to 1, then in sigma.
