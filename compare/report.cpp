@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "common/validate.hpp"
+#include "compare/figures.hpp"
 
 namespace coldblast::compare {
 
@@ -135,7 +136,8 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
   run_gnuplot(folder, "observables.gp");
 }
 
-std::string markdown(const CompareResult& result, bool figures) {
+std::string markdown(const CompareResult& result, bool figures, const std::optional<DistributionFit>& fit,
+                     const ExtraFigures& extra) {
   std::ostringstream md;
   md << "# coldblast comparison: MD against " << to_string(result.against) << "\n\n"
      << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
@@ -156,6 +158,17 @@ std::string markdown(const CompareResult& result, bool figures) {
     md << buffer;
   }
   if (figures) md << "\n![Observables with running exponents](figures/observables.png)\n";
+  if (fit) {
+    md << "\n## Impurity radial distribution (paper Fig. 3)\n\nAt t = " << format_number(fit->t)
+       << ", a least-squares fit of the Gaussian radial density (Eq. (39) in 2D, Eq. (35) in general) with R_imp = b t^"
+       << format_number(fit->spread) << " gives b = " << format_number(fit->b_fit) << " ± " << format_number(fit->b_fit_error)
+       << " (unweighted least squares, rms residual " << format_number(fit->residual_rms) << " over " << fit->bins
+       << " bins); directly, R_imp/t^" << format_number(fit->spread) << " = " << format_number(fit->b_direct)
+       << ". The paper reports b = 1.75 (fit) and 1.71 (direct) at t = 4000.\n";
+    if (!extra.distribution.empty()) md << "\n![p_imp collapse](figures/" << extra.distribution << ")\n";
+  }
+  if (!extra.profiles.empty())
+    md << "\n## Radial profiles against TvNS\n\n![profiles](figures/" << extra.profiles << ")\n";
   md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
         "with errors at every recorded pair of times).\n";
   return md.str();
@@ -171,8 +184,19 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
   try {
     common::write_file_atomic(staging / "verdict.json", verdict_json(result).dump(2) + "\n");
     common::write_file_atomic(staging / "exponents.csv", running_exponents_csv(result));
-    if (config.figures) write_observable_figure(result, staging / "figures");
-    common::write_file_atomic(staging / "report.md", markdown(result, config.figures));
+    const std::optional<DistributionFit> fit = fit_impurity_distribution(result.run);
+    ExtraFigures extra;
+    if (config.figures) {
+      write_observable_figure(result, staging / "figures");
+      extra = write_extra_figures(result.run, fit, staging / "figures");
+    }
+    if (fit)
+      common::write_file_atomic(staging / "distribution_fit.json",
+                                common::Json{{"t", fit->t}, {"spread", fit->spread}, {"b_fit", fit->b_fit},
+                                             {"b_fit_error", fit->b_fit_error}, {"b_direct", fit->b_direct},
+                                             {"residual_rms", fit->residual_rms}, {"bins", fit->bins}}
+                                        .dump(2) + "\n");
+    common::write_file_atomic(staging / "report.md", markdown(result, config.figures, fit, extra));
   } catch (...) {
     fs::remove_all(staging);
     throw;

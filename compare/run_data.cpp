@@ -128,6 +128,40 @@ std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, con
   return result;
 }
 
+std::size_t CsvTable::column(const std::string& name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return i;
+  throw std::invalid_argument(source + ": no column '" + name + "'");
+}
+
+CsvTable read_numeric_csv(const std::filesystem::path& path) {
+  CsvTable table;
+  table.source = path.string();
+  std::istringstream stream(read_text(path));
+  std::string line;
+  long line_number = 0;
+  while (std::getline(stream, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    const auto fields = split(line, ',');
+    if (table.columns.empty()) {
+      table.columns = fields;
+      continue;
+    }
+    const std::string where = table.source + " line " + std::to_string(line_number);
+    if (fields.size() != table.columns.size())
+      throw std::invalid_argument(where + ": expected " + std::to_string(table.columns.size()) + " fields, found " +
+                                  std::to_string(fields.size()));
+    std::vector<double> row;
+    row.reserve(fields.size());
+    for (const auto& field : fields) row.push_back(parse_double(field, where));
+    table.rows.push_back(std::move(row));
+  }
+  if (table.columns.empty()) throw std::invalid_argument(table.source + ": empty, no header line");
+  return table;
+}
+
 RunData read_run(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory))
     throw std::invalid_argument("RUN_DIR = " + directory.string() + " is not a directory");

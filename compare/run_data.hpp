@@ -48,6 +48,19 @@ struct RunData {
 /// file (and line) when the directory, a file or a field is missing or malformed.
 RunData read_run(const std::filesystem::path& directory);
 
+/// A numeric CSV table: column names and rows (comment lines '#' skipped).
+struct CsvTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  /// Index of a column; throws std::invalid_argument naming the file and the column.
+  std::size_t column(const std::string& name) const;
+  std::string source;
+};
+
+/// Reads a CSV file whose fields are all numbers (after the header); throws
+/// std::invalid_argument naming the file and line on malformed input.
+CsvTable read_numeric_csv(const std::filesystem::path& path);
+
 /// Parses the blocks.csv text (header `block,t,observable,sum,count`, '#' comment lines allowed).
 std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, const std::string& source);
 

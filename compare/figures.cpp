@@ -1,0 +1,201 @@
+#include "compare/figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "common/output.hpp"
+#include "common/validate.hpp"
+#include "compare/report.hpp"
+#include "hydro/tvns.hpp"
+#include "theory/exponents.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::compare {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Bin {
+  double r, p, error;
+};
+
+std::map<double, std::vector<Bin>> distribution_by_time(const CsvTable& table) {
+  const std::size_t t = table.column("t"), r = table.column("r"), p = table.column("p"),
+                    e = table.column("p_stderr");
+  std::map<double, std::vector<Bin>> by_time;
+  for (const auto& row : table.rows) by_time[row[t]].push_back({row[r], row[p], row[e]});
+  return by_time;
+}
+
+double residual_sum(const std::vector<Bin>& bins, int d, double R_imp) {
+  double sum = 0;
+  for (const auto& bin : bins) sum += std::pow(bin.p - theory::radial_position_density(d, bin.r, R_imp), 2);
+  return sum;
+}
+
+}  // namespace
+
+std::optional<DistributionFit> fit_impurity_distribution(const RunData& run) {
+  const fs::path path = run.directory / "p_imp.csv";
+  if (!fs::exists(path)) return std::nullopt;
+  const auto by_time = distribution_by_time(read_numeric_csv(path));
+  if (by_time.empty()) return std::nullopt;
+  const auto& [t, bins] = *by_time.rbegin();
+  DistributionFit fit;
+  fit.t = t;
+  fit.spread = theory::to_double(theory::scaling_exponents(run.d).R_imp.in_time);
+  const double scale = std::pow(t, fit.spread);
+  if (run.series.count("R_imp")) {
+    const BlockSeries& s = run.series.at("R_imp");
+    const auto values = s.ensemble_values();
+    const auto k = static_cast<std::size_t>(std::lower_bound(s.t.begin(), s.t.end(), t) - s.t.begin());
+    if (k < s.t.size()) fit.b_direct = values[k] / scale;
+  }
+  // Unweighted least squares in b (the paper fits Eq. (39) to the histogram); per-bin errors
+  // from a few hundred impurities are too noisy to weight with. Golden-section search on ln b
+  // after a coarse scan; the error is the usual nonlinear least-squares one,
+  // σ_b² = [RSS/(bins - 1)] / Σ_i (∂m_i/∂b)².
+  auto cost = [&](double b) { return residual_sum(bins, run.d, b * scale); };
+  const double scan_lo = std::log(1e-2), scan_hi = std::log(1e2);
+  const int scan = 800;
+  double best = scan_lo, best_cost = INFINITY;
+  for (int i = 0; i <= scan; ++i) {
+    const double x = scan_lo + (scan_hi - scan_lo) * i / scan;
+    const double c = cost(std::exp(x));
+    if (c < best_cost) best_cost = c, best = x;
+  }
+  double lo = best - (scan_hi - scan_lo) / scan, hi = best + (scan_hi - scan_lo) / scan;
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
+    const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    if (cost(std::exp(x1)) < cost(std::exp(x2))) hi = x2;
+    else lo = x1;
+  }
+  fit.b_fit = std::exp(0.5 * (lo + hi));
+  fit.bins = static_cast<int>(bins.size());
+  const double rss = cost(fit.b_fit), h = 1e-5 * fit.b_fit;
+  double jacobian_sq = 0;
+  for (const auto& bin : bins) {
+    const double dm = (theory::radial_position_density(run.d, bin.r, (fit.b_fit + h) * scale) -
+                       theory::radial_position_density(run.d, bin.r, (fit.b_fit - h) * scale)) / (2 * h);
+    jacobian_sq += dm * dm;
+  }
+  fit.b_fit_error = jacobian_sq > 0 ? std::sqrt(rss / std::max(fit.bins - 1, 1) / jacobian_sq) : INFINITY;
+  fit.residual_rms = std::sqrt(rss / std::max(fit.bins, 1));
+  return fit;
+}
+
+namespace {
+
+std::string distribution_figure(const RunData& run, const DistributionFit& fit, const fs::path& folder) {
+  const auto by_time = distribution_by_time(read_numeric_csv(run.directory / "p_imp.csv"));
+  // The last five recorded times (a factor 2 in t), scaled by t^spread as in the paper's Fig. 3.
+  std::vector<double> times;
+  for (const auto& [t, bins] : by_time) times.push_back(t);
+  const std::size_t first = times.size() > 5 ? times.size() - 5 : 0;
+  std::ostringstream data, script;
+  data.precision(10);
+  script << "set terminal pngcairo size 800,560 font 'Sans,12'\nset output 'p_imp.png'\n"
+         << "set xlabel 'r / t^{" << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time) << "}'\n"
+         << "set ylabel 'p_{imp}(r,t) t^{" << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time)
+         << "}'\nset key top right\n"
+         << "set title 'Impurity radial distribution (Fig. 3 style): fitted b = "
+         << common::format_number(std::round(fit.b_fit * 1000) / 1000) << " ± "
+         << common::format_number(std::round(fit.b_fit_error * 1000) / 1000) << ", R_{imp}/t^{"
+         << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time) << "} = "
+         << common::format_number(std::round(fit.b_direct * 1000) / 1000) << "'\n";
+  std::string plot = "plot ";
+  for (std::size_t i = first; i < times.size(); ++i) {
+    const double scale = std::pow(times[i], fit.spread);
+    for (const auto& bin : by_time.at(times[i])) data << bin.r / scale << ' ' << bin.p * scale << ' ' << bin.error * scale << '\n';
+    data << "\n\n";
+    plot += "'p_imp.dat' index " + std::to_string(i - first) + " u 1:2:3 w yerrorbars pt 7 ps 0.6 t 't = " +
+            common::format_number(std::round(times[i] * 10) / 10) + "', ";
+  }
+  // Eq. (39) / its d-dimensional form with R_imp = b t^spread, in scaled variables.
+  std::ostringstream model;
+  model.precision(12);
+  const double Sd = theory::unit_sphere_area(run.d);
+  model << Sd << "*x**" << (run.d - 1) << "*(2*pi*" << fit.b_fit << "**2)**(-" << run.d << "/2.0)*exp(-x**2/(2*"
+        << fit.b_fit << "**2))";
+  plot += model.str() + " w l lw 2 dt 2 lc rgb 'black' t 'Eq. (39), fitted b'\n";
+  script << plot;
+  common::write_file_atomic(folder / "p_imp.dat", data.str());
+  common::write_file_atomic(folder / "p_imp.gp", script.str());
+  run_gnuplot(folder, "p_imp.gp");
+  return "p_imp.png";
+}
+
+std::string profile_figure(const RunData& run, const fs::path& folder) {
+  const CsvTable table = read_numeric_csv(run.directory / "profiles.csv");
+  const std::size_t ct = table.column("t"), lo = table.column("r_over_R_lo"), hi = table.column("r_over_R_hi"),
+                    cn = table.column("density_over_n"), cu = table.column("radial_velocity"),
+                    cT = table.column("temperature");
+  double t_last = 0;
+  for (const auto& row : table.rows) t_last = std::max(t_last, row[ct]);
+  // Ṙ from the MD's own R(t) (Eq. (1) form: Ṙ = 2R/((d+2)t)).
+  const double R = md_R_over_lambda(run, t_last) * run.summary["lambda"].get<double>();
+  const double Rdot = 2.0 * R / ((run.d + 2) * t_last);
+  std::ostringstream md_data, exact_data;
+  md_data.precision(10);
+  exact_data.precision(10);
+  for (const auto& row : table.rows)
+    if (row[ct] == t_last)
+      md_data << 0.5 * (row[lo] + row[hi]) << ' ' << row[cn] << ' ' << row[cu] / Rdot << ' ' << row[cT] / (Rdot * Rdot) << '\n';
+  const hydro::TvnsSolution exact = hydro::solve_tvns({run.d, 0.0, hydro::Eos::ideal, 0.0, 1e-10});
+  for (int i = 1; i <= 400; ++i) {
+    const hydro::TvnsPoint p = exact.at(i / 400.0);
+    exact_data << p.r_over_R << ' ' << p.density << ' ' << p.velocity << ' ' << std::min(p.temperature, 1e3) << '\n';
+  }
+  exact_data << "1.0 1.0 0 0\n1.5 1.0 0 0\n";
+  // The same blast with the hard-particle equation of state at the run's packing fraction.
+  std::ostringstream dense_data;
+  dense_data.precision(10);
+  const double phi = run.summary.contains("phi") ? run.summary["phi"].get<double>() : 0.0;
+  const bool dense = phi > 0;
+  if (dense) {
+    const hydro::TvnsSolution solution = hydro::solve_tvns(
+        {run.d, 0.0, run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling, phi, 1e-8});
+    std::vector<double> x;
+    for (int i = 1; i <= 400; ++i) x.push_back(i / 400.0);
+    for (const auto& p : solution.profile(x))
+      dense_data << p.r_over_R << ' ' << p.density << ' ' << p.velocity << ' ' << std::min(p.temperature, 1e3) << '\n';
+    dense_data << "1.0 1.0 0 0\n1.5 1.0 0 0\n";
+    common::write_file_atomic(folder / "profiles_tvns_phi.dat", dense_data.str());
+  }
+  const std::string eos_name = run.d == 2 ? "Henderson" : "Carnahan-Starling";
+  const auto dense_curve = [&](int column) {
+    return dense ? ", 'profiles_tvns_phi.dat' u 1:" + std::to_string(column) + " w l lw 2 dt 2 t 'TvNS, " + eos_name +
+                       " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000) + "'"
+                 : std::string();
+  };
+  common::write_file_atomic(folder / "profiles_md.dat", md_data.str());
+  common::write_file_atomic(folder / "profiles_tvns.dat", exact_data.str());
+  std::ostringstream script;
+  script << "set terminal pngcairo size 1500,460 font 'Sans,11'\nset output 'profiles.png'\nset multiplot layout 1,3 title "
+         << "'MD radial profiles at t = " << common::format_number(t_last) << " against the exact TvNS solution'\n"
+         << "set xlabel 'r/R'\nset xrange [0:1.5]\nset key top left Left reverse font ',10'\n"
+         << "set ylabel 'n/n_{/Symbol \\245}'\nplot 'profiles_md.dat' u 1:2 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:2 w l lw 2 t 'TvNS, ideal'" << dense_curve(2) << "\n"
+         << "set ylabel 'u/(dR/dt)'\nplot 'profiles_md.dat' u 1:3 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:3 w l lw 2 t 'TvNS, ideal'" << dense_curve(3) << "\n"
+         << "set ylabel 'T/(dR/dt)^2'\nset logscale y\nset yrange [1e-3:*]\nplot 'profiles_md.dat' u 1:($4>0?$4:1/0) w p pt 7 t 'MD', "
+         << "'profiles_tvns.dat' u 1:($4>0?$4:1/0) w l lw 2 t 'TvNS, ideal'" << dense_curve(4) << "\nunset multiplot\n";
+  common::write_file_atomic(folder / "profiles.gp", script.str());
+  run_gnuplot(folder, "profiles.gp");
+  return "profiles.png";
+}
+
+}  // namespace
+
+ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit, const fs::path& folder) {
+  ExtraFigures figures;
+  if (fit) figures.distribution = distribution_figure(run, *fit, folder);
+  if (fs::exists(run.directory / "profiles.csv") && run.summary.contains("lambda"))
+    figures.profiles = profile_figure(run, folder);
+  return figures;
+}
+
+}  // namespace coldblast::compare

@@ -1,0 +1,36 @@
+#pragma once
+// Figures beyond the exponent panels, drawn from the optional files of an MD run: the Fig. 3-style
+// collapse of p_imp(r, t) with the fitted Gaussian of Eq. (39) [eq:pr], MD radial profiles against
+// the exact TvNS profile, and the Fig. 1-style snapshot of moving and resting particles.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "compare/run_data.hpp"
+
+namespace coldblast::compare {
+
+/// Fit of the radial impurity distribution at one time to S_d r^(d-1) P(r) with the Gaussian P
+/// of Eq. (35) [Prt-d] and R_imp = b t^(spread) (in 2D exactly Eq. (39) [eq:pr], the paper's Fig. 3).
+struct DistributionFit {
+  double t = 0;
+  double spread = 0;           ///< exact R_imp time exponent (2D: 2/5) used to scale r
+  double b_fit = 0, b_fit_error = 0;  ///< least-squares b and its 1-sigma error (Δχ² = 1)
+  double b_direct = 0;         ///< R_imp(t)/t^spread from the R_imp observable (paper: 1.71)
+  double residual_rms = 0;     ///< root-mean-square residual of p (1/length)
+  int bins = 0;
+};
+
+/// Fits p_imp.csv at its last time; nullopt when the run has no p_imp.csv.
+std::optional<DistributionFit> fit_impurity_distribution(const RunData& run);
+
+/// The figure files written into `folder` (empty names for figures whose data is absent).
+struct ExtraFigures {
+  std::string distribution, profiles, snapshot;
+};
+
+/// Draws every figure whose data the run holds; returns the file names written.
+ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
+                                 const std::filesystem::path& folder);
+
+}  // namespace coldblast::compare
