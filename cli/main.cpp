@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   cli::add_md_command(app);
   cli::add_compare_command(app);
   cli::add_reproduce_command(app);
+  cli::add_tvns_command(app);
 
   try {
     app.parse(argc, argv);
