@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "common/validate.hpp"
+#include "hydro/tvns.hpp"
 #include "md/ensemble.hpp"
 #include "md/equilibrium.hpp"
 #include "md/scenes.hpp"
@@ -98,16 +99,27 @@ void run_md(const MdRunOptions& o) {
   common::require_integer_in_range("--threads", o.threads, 1, 1024);
   const auto [shard_index, shard_count] = md::parse_shard(o.shard);
   const std::string text = o.scene_file.empty() ? md::default_scene_toml() : read_scene(o.scene_file);
-  const md::BlastConfig config = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
-  // A_d = 0 means "not given": md uses the ideal-gas amplitude (hydro's A_d(phi) is wired in here
-  // once hydro/tvns.hpp exists).
+  md::BlastConfig config = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
+  // A_d = 0 means "not given": the hard-particle TvNS amplitude A_d(phi) from hydro (Henderson EOS
+  // in 2D, Carnahan-Starling in 3D) sizes the box and is written to the outputs.
+  std::string A_d_source;
+  if (config.A_d == 0.0) {
+    hydro::TvnsConfig tvns;
+    tvns.d = config.d;
+    tvns.eos = config.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    tvns.phi = md::resolve_scene(config).phi;
+    tvns.tolerance = 1e-8;
+    config.A_d = hydro::solve_tvns(tvns).A();
+    A_d_source = "hydro TvNS, " + hydro::to_string(tvns.eos) + " EOS at phi = " + common::format_number(tvns.phi);
+  }
   md::RunOptions options;
   options.threads = o.threads;
   options.shard_index = shard_index;
   options.shard_count = shard_count;
   Progress progress;
   options.progress = [&progress](long long done, long long total) { progress(done, total); };
-  const md::BlastResult result = md::run_blast(config, options);
+  md::BlastResult result = md::run_blast(config, options);
+  if (!A_d_source.empty()) result.scene.A_d_source = A_d_source;
   md::write_blast_outputs(result, o.out);
   print_summary(result, o.out, o.format);
 }
