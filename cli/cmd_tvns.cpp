@@ -77,7 +77,8 @@ hydro::TvnsConfig make_config(const TvnsOptions& options) {
   config.eos = hydro::eos_from_string(options.eos, "--eos");
   if (config.eos == hydro::Eos::ideal) {
     if (options.gamma != 0.0)
-      common::require_in_range("--gamma", options.gamma, 1.0, 1e6, common::Bound::open, common::Bound::closed,
+      common::require_in_range("--gamma", options.gamma, hydro::min_gamma, hydro::max_gamma, common::Bound::closed,
+                               common::Bound::closed,
                                "(0 selects 1 + 2/d)");
     if (options.phi != 0.0)
       throw std::invalid_argument("--phi = " + common::format_number(options.phi) +
@@ -219,7 +220,7 @@ void add_tvns_command(CLI::App& app) {
   command->add_option("--d", options->d, "Spatial dimension d (integer, 1 planar, 2 cylindrical, 3 spherical)")
       ->capture_default_str();
   command->add_option("--gamma", options->gamma,
-                      "Adiabatic index gamma > 1 (dimensionless, ideal EOS only; default 0 means 1 + 2/d)")
+                      "Adiabatic index gamma in [1.001, 1000] (dimensionless, ideal EOS only; default 0 means 1 + 2/d)")
       ->capture_default_str();
   command->add_option("--eos", options->eos,
                       "Equation of state: ideal, henderson (hard discs, d = 2) or carnahan-starling (hard spheres, d = 3)")

@@ -12,6 +12,7 @@
 #include <gsl/gsl_roots.h>
 
 #include "common/validate.hpp"
+#include "hydro/gsl_status.hpp"
 
 namespace coldblast::hydro {
 
@@ -122,6 +123,7 @@ double strong_shock_compression(Eos eos, double phi) {
     double phi;
     int d;
   } parameters{eos, phi, d};
+  detail::disable_gsl_abort();
   gsl_function F;
   F.function = [](double x, void* raw) {
     const auto* p = static_cast<const Parameters*>(raw);

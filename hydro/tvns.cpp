@@ -14,6 +14,7 @@
 #include <gsl/gsl_integration.h>
 
 #include "common/validate.hpp"
+#include "hydro/gsl_status.hpp"
 #include "hydro/tvns_closed_form.hpp"
 #include "hydro/tvns_ode.hpp"
 #include "theory/prefactors.hpp"
@@ -23,7 +24,7 @@ namespace coldblast::hydro {
 void TvnsConfig::validate() const {
   common::require_integer_in_range("d", d, 1, 3, "(TvNS: planar, cylindrical or spherical)");
   if (eos == Eos::ideal) {
-    if (gamma != 0.0) common::require_in_range("gamma", gamma, 1.0, 1e6, common::Bound::open, common::Bound::closed,
+    if (gamma != 0.0) common::require_in_range("gamma", gamma, min_gamma, max_gamma, common::Bound::closed, common::Bound::closed,
                                                "(0 selects 1 + 2/d)");
   } else {
     if (eos_dimension(eos) != d)
@@ -74,16 +75,6 @@ detail::EnergyIntegrals closed_form_integrals(int d, double gamma, double tolera
   return detail::ClosedForm(d, gamma).energy_integrals(tolerance);
 }
 
-void disable_gsl_abort() {
-  // GSL's default handler aborts; every status is checked instead (main() does this too, but tests and
-  // other callers reach this library directly).
-  static const bool done = [] {
-    gsl_set_error_handler_off();
-    return true;
-  }();
-  (void)done;
-}
-
 }  // namespace
 
 struct TvnsSolution::Impl {
@@ -94,7 +85,7 @@ struct TvnsSolution::Impl {
 
 TvnsAmplitude tvns_amplitude(const TvnsConfig& config, TvnsMethod method) {
   config.validate();
-  disable_gsl_abort();
+  detail::disable_gsl_abort();
   const double gamma = config.resolved_gamma();
   TvnsAmplitude out;
   if (method == TvnsMethod::closed_form) {
@@ -120,7 +111,7 @@ TvnsAmplitude tvns_amplitude(const TvnsConfig& config, TvnsMethod method) {
 
 TvnsSolution::TvnsSolution(const TvnsConfig& config) : config_(config) {
   config_.validate();
-  disable_gsl_abort();
+  detail::disable_gsl_abort();
   gamma_ = config_.resolved_gamma();
   const bool ideal = config_.eos == Eos::ideal;
   case_ = ideal ? tvns_case(config_.d, gamma_) : TvnsCase::standard;

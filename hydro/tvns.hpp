@@ -11,10 +11,15 @@
 
 namespace coldblast::hydro {
 
+/// Range of the adiabatic index: closer to 1 the shocked shell (density ratio (gamma+1)/(gamma-1))
+/// is thinner than double precision resolves; beyond 1000 the two methods no longer agree to 1e-10.
+constexpr double min_gamma = 1.001;
+constexpr double max_gamma = 1000.0;
+
 /// Physical and numerical options of the self-similar blast (units: m = 1, k_B = 1).
 struct TvnsConfig {
   int d = 2;                 ///< spatial dimension: 1 planar, 2 cylindrical, 3 spherical
-  double gamma = 0.0;        ///< adiabatic index > 1 (ideal EOS only); 0 means 1 + 2/d
+  double gamma = 0.0;        ///< adiabatic index in [min_gamma, max_gamma] (ideal EOS only); 0 means 1 + 2/d
   Eos eos = Eos::ideal;      ///< ideal, henderson (d = 2) or carnahan_starling (d = 3)
   double phi = 0.0;          ///< ambient packing fraction, (0, max_ambient_packing_fraction) for hard particles
   double tolerance = 1e-13;  ///< requested relative accuracy of A_d, [1e-14, 1e-3]

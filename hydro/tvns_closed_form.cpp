@@ -16,6 +16,7 @@
 #include <gsl/gsl_roots.h>
 
 #include "common/validate.hpp"
+#include "hydro/gsl_status.hpp"
 
 namespace coldblast::hydro::detail {
 
@@ -38,6 +39,7 @@ double log1p_over(double epsilon, double A) {
 }  // namespace
 
 ClosedForm::ClosedForm(int d, double gamma) : d_(d), gamma_(gamma) {
+  disable_gsl_abort();
   if (tvns_case(d, gamma) == TvnsCase::singular)
     throw std::logic_error("ClosedForm: the singular case has its own exact solution");
   vacuum_ = tvns_case(d, gamma) == TvnsCase::vacuum;
