@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include <cvode/cvode.h>
+#include <cvode/cvode_proj.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunmatrix/sunmatrix_band.h>
@@ -90,9 +91,8 @@ class Blast {
     kappa_ = c_kappa * n_inf_ * lambda_;  // Eq. (15) [kappa-HS]: κ = c_κ n∞ λ √T
     mu_ = c_mu * n_inf_ * lambda_;        // same form for μ (Chapman–Enskog, docs/hydro.md)
     build_grid(config);
-    const double t_end = time_of(config.until_R_over_lambda * lambda_);
-    T_inf_ = numerics.temperature_floor * std::pow(shock_speed(t_end), 2);
-    e_inf_ = 0.5 * d_ * n_inf_ * T_inf_;
+    floor_ = numerics.temperature_floor;
+    t0_ = time_of(numerics.start_R_over_lambda * lambda_);
     n_.resize(cells_); u_.resize(cells_); T_.resize(cells_); p_.resize(cells_);
     slope_.assign(3 * cells_, 0.0);
     flux_.assign(components * (cells_ + 1), 0.0);
@@ -103,7 +103,10 @@ class Blast {
 
   int cells() const { return cells_; }
   double lambda() const { return lambda_; }
-  double T_inf() const { return T_inf_; }
+  /// Temperature of the cold gas entering the grid at time t: floor Ṙ_ref(t)², so that the shock's
+  /// Mach number stays 1/√(γ floor) at all times (the gas of the paper is at T = 0).
+  double T_inf(double t) const { return floor_ * std::pow(shock_speed(t), 2); }
+  double internal_energy_inf(double t) const { return 0.5 * d_ * n_inf_ * T_inf(t); }
 
   /// Eq. (1) [R-shock] with the reference amplitude: R_ref(t) = (E t²/(A n∞))^(1/(d+2)).
   double reference_radius(double t) const { return std::pow(E_ * t * t / (A_ref_ * n_inf_), 1.0 / (d_ + 2)); }
@@ -115,7 +118,12 @@ class Blast {
   double face_area(double r) const { return d_ * omega_ * std::pow(r, d_ - 1); }
 
   /// Expected totals: E plus the cold gas energy swept in; n∞ times the grid volume.
-  double expected_energy(double t) const { return E_ + e_inf_ * ball_volume(outer_radius(t)); }
+  /// Energy entering through the outer edge, e∞(t) dV(L)/dt, is a constant K over t (Eq. (1):
+  /// Ṙ² L^(d-1) L̇ ∝ R^(d+2)/t³ ∝ 1/t), so its integral is K ln(t/t0).
+  double expected_energy(double t) const {
+    const double K = internal_energy_inf(t0_) * face_area(outer_radius(t0_)) * margin_ * shock_speed(t0_) * t0_;
+    return E_ + internal_energy_inf(t0_) * ball_volume(outer_radius(t0_)) + K * std::log(t / t0_);
+  }
   double expected_mass(double t) const { return n_inf_ * ball_volume(outer_radius(t)); }
 
   /// Face radii r_j = ξ_j R_ref(t), j = 0..cells, ξ_cells = outer_margin.
@@ -125,18 +133,24 @@ class Blast {
     for (int j = 0; j <= cells_; ++j) r[j] = xi_[j] * L;
   }
 
-  /// Uniform cold gas at rest plus E spread uniformly (as internal energy) over r < width R_ref(t0).
+  /// Cold gas at rest plus E as internal energy with density ∝ (1 - r²/w²)² for r < w = width R_ref(t0)
+  /// (smooth, so the integrator does not start on a discontinuity); cell shares integrated exactly.
   void initial_state(double t0, double width, double* y) const {
     std::vector<double> r;
     faces(t0, r);
     const double w = width * reference_radius(t0);
-    const double hot_volume = ball_volume(w);
+    // ∫_0^x (1 - s²)² s^(d-1) ds = x^d/d - 2 x^(d+2)/(d+2) + x^(d+4)/(d+4)
+    auto cumulative = [this](double x) {
+      x = std::min(x, 1.0);
+      return std::pow(x, d_) / d_ - 2 * std::pow(x, d_ + 2) / (d_ + 2) + std::pow(x, d_ + 4) / (d_ + 4);
+    };
+    const double total = cumulative(1.0);
     for (int i = 0; i < cells_; ++i) {
       const double volume = ball_volume(r[i + 1]) - ball_volume(r[i]);
-      const double hot = ball_volume(std::min(r[i + 1], w)) - ball_volume(std::min(r[i], w));
+      const double share = (cumulative(r[i + 1] / w) - cumulative(r[i] / w)) / total;
       y[components * i + 0] = n_inf_ * volume;
       y[components * i + 1] = 0.0;
-      y[components * i + 2] = e_inf_ * volume + E_ * hot / hot_volume;
+      y[components * i + 2] = internal_energy_inf(t0) * volume + E_ * share;
     }
   }
 
@@ -169,7 +183,7 @@ class Blast {
     // Limited slopes of q = (ln n, u, ln p); ghosts: mirror at r = 0, cold gas at rest outside.
     auto q = [&](int i, int k) -> double {
       if (i < 0) return k == 0 ? std::log(n_[0]) : k == 1 ? -u_[0] : std::log(p_[0]);
-      if (i >= N) return k == 0 ? std::log(n_inf_) : k == 1 ? 0.0 : std::log(n_inf_ * T_inf_);
+      if (i >= N) return k == 0 ? std::log(n_inf_) : k == 1 ? 0.0 : std::log(n_inf_ * T_inf(t));
       return k == 0 ? std::log(n_[i]) : k == 1 ? u_[i] : std::log(p_[i]);
     };
     for (int i = 0; i < N; ++i)
@@ -191,7 +205,7 @@ class Blast {
         left = State{right.n, -right.u, right.p};
       } else {
         left = face_state(j - 1, r_[j]);
-        right = j == N ? State{n_inf_, 0.0, n_inf_ * T_inf_} : face_state(j, r_[j]);
+        right = j == N ? State{n_inf_, 0.0, n_inf_ * T_inf(t)} : face_state(j, r_[j]);
       }
       hllc_flux(left, right, w, gamma_, &flux_[components * j]);
     }
@@ -243,22 +257,33 @@ class Blast {
   double heat_flux(int i) const { return 0.5 * (heat_[i] + heat_[i + 1]); }
 
  private:
-  /// Faces in ξ ∈ [0, margin] equidistributing the cell density 1/(ξ_c + ξ) + B: logarithmic
-  /// spacing ξ_c ≲ ξ ≲ 1/B, uniform near the shock; B puts half the cells into each part.
+  /// Faces in ξ = r/R_ref ∈ [0, margin] equidistributing the cell density
+///   φ(ξ) = 1/(ξ_c + ξ) + B + S b(ξ),
+  /// logarithmic for ξ_c ≲ ξ ≲ 1/B (the core), uniform beyond, and refined by S in the band
+  /// b = [0.85, 1.03] (smoothed) that holds the shock and the steep TvNS profile behind it. B gives the
+  /// uniform part as many cells as the logarithmic one; S gives the band a quarter of all cells.
   void build_grid(const NavierStokesConfig& config) {
     const double xi_c = *config.numerics.core_resolution;
     const double outer = margin_;
     const double B = std::log((xi_c + outer) / xi_c) / outer;
-    const double total = std::log((xi_c + outer) / xi_c) + B * outer;
+    auto band = [](double xi) { return 0.25 * (1 + std::tanh((xi - 0.85) / 0.03)) * (1 - std::tanh((xi - 1.03) / 0.03)); };
+    const int fine = 400000;  // trapezoidal cumulative of φ on a fine uniform mesh, then inverted
+    std::vector<double> cumulative_log(fine + 1, 0.0), cumulative_band(fine + 1, 0.0);
+    const double h = outer / fine;
+    for (int k = 1; k <= fine; ++k) {
+      const double x0 = (k - 1) * h, x1 = k * h;
+      cumulative_log[k] = std::log((xi_c + x1) / xi_c) + B * x1;
+      cumulative_band[k] = cumulative_band[k - 1] + 0.5 * h * (band(x0) + band(x1));
+    }
+    const double S = getenv("NS_NOBAND") ? 0.0 : cumulative_log[fine] / 3.0 / cumulative_band[fine];  // band: 1/4 of the cells
+    std::vector<double> cumulative(fine + 1);
+    for (int k = 0; k <= fine; ++k) cumulative[k] = cumulative_log[k] + S * cumulative_band[k];
     xi_.assign(cells_ + 1, 0.0);
     for (int j = 1; j < cells_; ++j) {
-      const double target = total * j / cells_;
-      double lo = 0, hi = outer;  // bisection on the monotone cumulative density
-      for (int iteration = 0; iteration < 200 && hi - lo > 1e-16 * outer; ++iteration) {
-        const double mid = 0.5 * (lo + hi);
-        (std::log((xi_c + mid) / xi_c) + B * mid < target ? lo : hi) = mid;
-      }
-      xi_[j] = 0.5 * (lo + hi);
+      const double target = cumulative[fine] * j / cells_;
+      const auto k = std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin();
+      const double f = (target - cumulative[k - 1]) / (cumulative[k] - cumulative[k - 1]);
+      xi_[j] = (k - 1 + f) * h;
     }
     xi_[cells_] = outer;
   }
@@ -266,7 +291,7 @@ class Blast {
   int d_;
   double gamma_, E_, n_inf_, lambda_, A_ref_, margin_, omega_;
   int cells_ = 0;
-  double kappa_ = 0, mu_ = 0, T_inf_ = 0, e_inf_ = 0;
+  double kappa_ = 0, mu_ = 0, floor_ = 0, t0_ = 0;
   std::vector<double> xi_, r_, centre_, n_, u_, T_, p_, slope_, flux_, heat_, stress_, face_velocity_;
 };
 
@@ -281,14 +306,49 @@ struct ErrorWeights {
 struct UserData {
   Blast* blast;
   ErrorWeights* weights;
+  double projected_energy = 0;  ///< Σ |energy correction| of the projections
+  double projected_mass = 0;    ///< Σ |mass correction|
 };
 
 int cvode_rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
   return static_cast<UserData*>(user_data)->blast->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
 }
 
+/// CVODE projection after each step: restores the exact totals of mass (n∞ V(grid)) and energy
+/// (E plus the cold gas swept in). The fluxes telescope, but CVODE's Newton corrections do not keep
+/// linear invariants exactly (drift ~ rtol per step); the correction of each total is spread over the
+/// cells with weights (rtol y_i)², i.e. the projection orthogonal in CVODE's own error norm.
+int project_totals(realtype t, N_Vector ycur, N_Vector corr, realtype, N_Vector err, void* user_data) {
+  UserData& user = *static_cast<UserData*>(user_data);
+  const Blast& blast = *user.blast;
+  const double* y = N_VGetArrayPointer(ycur);
+  double* c = N_VGetArrayPointer(corr);
+  double* e = err ? N_VGetArrayPointer(err) : nullptr;
+  const sunindextype size = N_VGetLength_Serial(ycur);
+  for (sunindextype i = 0; i < size; ++i) c[i] = 0.0;
+  for (int k : {0, 2}) {
+    const double expected = k == 0 ? blast.expected_mass(t) : blast.expected_energy(t);
+    double total = 0, weight_sum = 0, error_sum = 0;
+    for (sunindextype i = k; i < size; i += components) {
+      total += y[i];
+      weight_sum += y[i] * y[i];
+      if (e) error_sum += e[i];
+    }
+    if (!(weight_sum > 0)) return -1;
+    const double excess = total - expected;
+    (k == 0 ? user.projected_mass : user.projected_energy) += std::abs(excess);
+    for (sunindextype i = k; i < size; i += components) {
+      const double share = y[i] * y[i] / weight_sum;
+      c[i] = -excess * share;
+      if (e) e[i] -= error_sum * share;
+    }
+  }
+  return 0;
+}
+
 int error_weights(N_Vector y, N_Vector weight, void* user_data) {
   const double rtol = static_cast<UserData*>(user_data)->weights->rtol;
+  constexpr double momentum_scale = 1e-3;
   const double* state = N_VGetArrayPointer(y);
   double* w = N_VGetArrayPointer(weight);
   const sunindextype size = N_VGetLength_Serial(y);
@@ -296,7 +356,7 @@ int error_weights(N_Vector y, N_Vector weight, void* user_data) {
     const double mass = std::abs(state[i]), energy = std::abs(state[i + 2]);
     if (!(mass > 0) || !(energy > 0)) return -1;
     w[i] = 1.0 / (rtol * mass);
-    w[i + 1] = 1.0 / (rtol * (std::abs(state[i + 1]) + 1e-3 * std::sqrt(mass * energy)));
+    w[i + 1] = 1.0 / (rtol * (std::abs(state[i + 1]) + momentum_scale * std::sqrt(mass * energy)));
     w[i + 2] = 1.0 / (rtol * energy);
   }
   return 0;
@@ -314,6 +374,39 @@ double crossing_radius(const std::vector<double>& centres, const std::vector<dou
     }
   }
   return std::numeric_limits<double>::quiet_NaN();
+}
+
+/// Shock radius from mass conservation ("equal areas"): the mass excess over the cold gas beyond the
+/// outer face of cell b = peak - 3 equals that of a sharp shock at R behind which n continues the
+/// smooth profile of cells b-1, b linearly. Sub-cell accurate; NaN if the peak is too close to r = 0.
+double conservative_shock_radius(const Blast& blast, const double* state, int peak, double n_inf) {
+  const std::vector<double>& r = blast.radii();
+  const std::vector<double>& n = blast.density();
+  const int N = blast.cells(), b = peak - 3;
+  if (b < 1) return std::numeric_limits<double>::quiet_NaN();
+  double excess = 0;
+  for (int i = b + 1; i < N; ++i)
+    excess += state[components * i] - n_inf * (blast.ball_volume(r[i + 1]) - blast.ball_volume(r[i]));
+  const double centre_b = 0.5 * (r[b] + r[b + 1]), centre_a = 0.5 * (r[b - 1] + r[b]);
+  const double slope = (n[b] - n[b - 1]) / (centre_b - centre_a);
+  // ∫_{r_{b+1}}^{R} (n_lin - n∞) A(r) dr; the integrand is a polynomial of degree <= 3, so the
+  // 2-point Gauss-Legendre rule is exact.
+  auto excess_of = [&](double R) {
+    const double half = 0.5 * (R - r[b + 1]), middle = 0.5 * (R + r[b + 1]);
+    double sum = 0;
+    for (double node : {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}) {
+      const double x = middle + half * node;
+      sum += (n[b] + slope * (x - centre_b) - n_inf) * blast.face_area(x);
+    }
+    return half * sum;
+  };
+  double lo = r[b + 1], hi = r[N];
+  if (excess_of(hi) < excess) return std::numeric_limits<double>::quiet_NaN();
+  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+    const double mid = 0.5 * (lo + hi);
+    (excess_of(mid) < excess ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 double default_core_resolution(const NavierStokesConfig& config) {
@@ -459,6 +552,8 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   UserData user{&blast, &weights};
   sh::check_cvode(CVodeSetUserData(memory, &user), "CVodeSetUserData");
   sh::check_cvode(CVodeSetConstraints(memory, constraints.get()), "CVodeSetConstraints");
+  if (config.numerics.project_totals)
+    sh::check_cvode(CVodeSetProjFn(memory, project_totals), "CVodeSetProjFn");
   sh::check_cvode(CVodeSetMaxNumSteps(memory, 5000000), "CVodeSetMaxNumSteps");
   sh::check_cvode(CVodeSetMaxErrTestFails(memory, 20), "CVodeSetMaxErrTestFails");
   sh::check_cvode(CVodeSetMaxConvFails(memory, 50), "CVodeSetMaxConvFails");
@@ -473,6 +568,8 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   result.min_temperature = std::numeric_limits<double>::infinity();
   std::vector<double> centres(N);
   for (const Output& output : outputs) {
+    // Step exactly onto the output time: interpolated output would not keep the projected totals.
+    sh::check_cvode(CVodeSetStopTime(memory, output.t), "CVodeSetStopTime");
     const int flag = CVode(memory, output.t, y.get(), &t, CV_NORMAL);
     sh::check_cvode(flag, "CVode",
                     " at t = " + common::format_number(t) + " (R_ref/lambda = " +
@@ -492,10 +589,12 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     NavierStokesSample sample;
     sample.t = t;
     const int peak = static_cast<int>(std::max_element(n.begin(), n.end()) - n.begin());
-    sample.R = crossing_radius(centres, n, peak, 0.5 * (config.physics.n_inf + n[peak]), true);
-    if (!std::isfinite(sample.R) || sample.R > 0.97 * radii[N])
+    const double R_crossing = crossing_radius(centres, n, peak, 0.5 * (config.physics.n_inf + n[peak]), true);
+    if (!std::isfinite(R_crossing) || R_crossing > 0.97 * radii[N])
       throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) +
                                " (raise outer_margin)");
+    sample.R = conservative_shock_radius(blast, state, peak, config.physics.n_inf);
+    if (!std::isfinite(sample.R)) sample.R = R_crossing;
     sample.R_over_lambda = sample.R / lambda;
     sample.n0 = n[0];
     sample.T0 = T[0];
@@ -509,6 +608,12 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     }
     sample.energy = energy;
     sample.mass = mass;
+    const double x = sample.R_over_lambda, shock_speed = 2 * sample.R / ((d + 2) * t);
+    const double core_exponent = 2.0 * d * d / (8.0 + 3.0 * d * d);
+    sample.H_prefactor = sample.H / (lambda * std::pow(x, (4.0 + 3.0 * d * d) / (8.0 + 3.0 * d * d)));  // Eq. (4)
+    sample.n0_prefactor = sample.n0 / (config.physics.n_inf * std::pow(x, -core_exponent));           // Eq. (11)
+    sample.T0_prefactor = sample.T0 / (shock_speed * shock_speed * std::pow(x, core_exponent));        // Eq. (12)
+    sample.p0_scaled = sample.p0 / (config.physics.n_inf * shock_speed * shock_speed);
     sample.energy_error = std::abs(energy - blast.expected_energy(t)) / config.physics.E;
     sample.mass_error = std::abs(mass - blast.expected_mass(t)) / mass;
     for (double value : {sample.R, sample.n0, sample.T0, sample.energy, sample.mass})
@@ -556,6 +661,8 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   sh::check_cvode(CVodeGetNumNonlinSolvConvFails(memory, &value), "CVodeGetNumNonlinSolvConvFails");
   result.statistics.nonlinear_failures = value;
 
+  result.energy_projected = user.projected_energy / config.physics.E;
+  result.mass_projected = user.projected_mass / result.samples.back().mass;
   const NavierStokesSample& last = result.final_sample();
   result.A_measured = config.physics.E * last.t * last.t / (config.physics.n_inf * std::pow(last.R, d + 2));
 

@@ -25,13 +25,14 @@ struct NavierStokesPhysics {
 /// Discretisation and integrator options; none of them changes the physics being solved.
 struct NavierStokesNumerics {
   int cells = 256;                    ///< finite-volume cells in [0, outer_margin R_ref], [16, 100000]
-  double start_R_over_lambda = 1.0;   ///< R_ref/λ at the initial time, (0, until)
+  double start_R_over_lambda = 2.0;   ///< R_ref/λ at the initial time, (0, until)
   double initial_width = 0.2;         ///< radius of the initial hot region / R_ref(t_start), (0, 0.8]
-  double temperature_floor = 1e-6;    ///< ambient T / Ṙ_ref(t_end)^2, (0, 1e-2]: the cold gas is never at T = 0
+  double temperature_floor = 1e-6;    ///< T of the cold gas entering the grid / Ṙ_ref(t)², (0, 1e-2]: never T = 0
   double relative_tolerance = 1e-6;   ///< CVODE relative tolerance, [1e-12, 1e-2]
   int samples_per_decade = 20;        ///< diagnostics per decade of R/λ, [4, 200]
   double outer_margin = 1.15;         ///< outer grid edge / R_ref(t), [1.05, 2]
   std::optional<double> core_resolution;  ///< ξ_c of the grid (cells ~ ξ_c + ξ near the centre); default from H/R at `until`
+  bool project_totals = true;         ///< restore exact mass/energy totals after each step (CVODE projection)
   std::vector<double> profile_R_over_lambda;  ///< extra profile times (R_ref/λ); the final profile is always kept
 };
 
@@ -61,6 +62,9 @@ struct NavierStokesSample {
   double energy = 0, mass = 0;    ///< totals over the grid, including the cold gas swept in
   double energy_error = 0;   ///< |energy - (E + energy that entered through the outer edge)|/E
   double mass_error = 0;     ///< |mass - n∞ V(grid)|/mass
+  /// Prefactors of Eqs. (4), (11), (12) with Ṙ = 2R/((d+2)t) and x = R/λ: H/(λ x^h_d),
+  /// n0/(n∞ x^(-2d²/(8+3d²))), T0/(Ṙ² x^(2d²/(8+3d²))); and the central pressure p0/(n∞ Ṙ²).
+  double H_prefactor = 0, n0_prefactor = 0, T0_prefactor = 0, p0_scaled = 0;
 };
 
 /// d ln X / d ln t (time) and d ln X / d ln(R/λ) of the diagnostics, centred differences.
@@ -91,6 +95,8 @@ struct NavierStokesResult {
   double A_reference = 0;     ///< A_d used for the grid scale R_ref(t)
   double A_measured = 0;      ///< E t^2/(n∞ R^(d+2)) at the last sample
   double max_energy_error = 0;  ///< max over samples of sample.energy_error
+  double energy_projected = 0;  ///< Σ |energy corrections| of the projection / E (integrator drift)
+  double mass_projected = 0;    ///< Σ |mass corrections| / final mass
   double min_density = 0, min_temperature = 0;  ///< over all samples and cells (positivity check)
   std::vector<NavierStokesSample> samples;   ///< log-spaced in R/λ, up to slightly beyond `until`
   std::vector<RunningExponents> exponents;   ///< at the interior samples
