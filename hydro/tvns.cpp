@@ -172,8 +172,8 @@ TvnsPoint TvnsSolution::at(double r_over_R) const {
   else if (case_ == TvnsCase::singular) point = detail::singular_point(r_over_R);
   else point = impl_->closed_form->at(r_over_R);
   // Only the standard branch's temperature may be infinite: at x = 0, or where rho/rho0 ∝ x^(d/(gamma-1))
-  // underflows (e.g. d = 1, gamma = 1.01, x < 1e-3), so that T = p/n overflows.
-  const bool overflow = case_ == TvnsCase::standard && point.density == 0.0;
+  // underflows below the normal double range (e.g. d = 1, gamma = 1.01, x < 1e-3), so that T = p/n overflows.
+  const bool overflow = case_ == TvnsCase::standard && point.density < std::numeric_limits<double>::min();
   if (!(std::isfinite(point.density) && std::isfinite(point.velocity) && std::isfinite(point.pressure) &&
         (std::isfinite(point.temperature) || overflow)))
     throw std::runtime_error("TvNS: non-finite profile at r/R = " + common::format_number(r_over_R));
@@ -207,7 +207,9 @@ TvnsSolution::ProfileEnergy TvnsSolution::energy_from_profile(double tolerance) 
       double density_of_energy = 0.0;
       if (params->kinetic) density_of_energy = 0.5 * point.density * point.velocity * point.velocity;
       else if (solution.config().eos == Eos::ideal) density_of_energy = point.pressure / (solution.gamma() - 1.0);
-      else density_of_energy = d / 2.0 * point.density * point.temperature;  // (d/2) n T
+      else  // (d/2) n T = (d/2) p/Z, without T, which overflows where n underflows
+        density_of_energy = d / 2.0 * point.pressure /
+                            compressibility(solution.config().eos, solution.config().phi * point.density);
       return density_of_energy * std::pow(x, d - 1);
     };
     F.params = &parameters;

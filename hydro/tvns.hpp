@@ -84,7 +84,7 @@ class TvnsSolution {
   double cavity_radius() const { return cavity_radius_; }
 
   /// Profile at r/R in [0, 1]; in the standard case the temperature is +inf at r/R = 0 and wherever
-  /// rho/rho0 underflows to 0 (below 1e-308, e.g. d = 1, gamma = 1.01, r/R < 1e-3); inside the cavity
+  /// rho/rho0 underflows (below 2.2e-308, e.g. d = 1, gamma = 1.01, r/R < 1e-3); inside the cavity
   /// (vacuum case) every field is 0. Throws std::invalid_argument outside [0, 1].
   TvnsPoint at(double r_over_R) const;
   /// Profile at many r/R (one ODE pass for a non-ideal EOS), in the given order.
