@@ -61,7 +61,8 @@ std::vector<double> parse_at(const std::string& text) {
       used = 0;
     }
     if (used == 0 || used != item.size())
-      throw std::invalid_argument("--at = " + text + ": '" + item + "' is not a number (expected r/R values in [0, 1], e.g. 0.1,0.5,1)");
+      throw std::invalid_argument("--at = " + text + ": '" + item +
+                                  "' is not a number (expected r/R values in [0, 1], e.g. 0.1,0.5,1)");
     common::require_in_range("--at r/R", value, 0.0, 1.0, common::Bound::closed, common::Bound::closed);
     values.push_back(value);
   }

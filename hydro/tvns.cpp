@@ -24,8 +24,12 @@ namespace coldblast::hydro {
 void TvnsConfig::validate() const {
   common::require_integer_in_range("d", d, 1, 3, "(TvNS: planar, cylindrical or spherical)");
   if (eos == Eos::ideal) {
-    if (gamma != 0.0) common::require_in_range("gamma", gamma, min_gamma, max_gamma, common::Bound::closed, common::Bound::closed,
-                                               "(0 selects 1 + 2/d)");
+    if (gamma != 0.0)
+      common::require_in_range("gamma", gamma, min_gamma, max_gamma, common::Bound::closed, common::Bound::closed,
+                               "(0 selects 1 + 2/d)");
+    if (phi != 0.0)
+      throw std::invalid_argument("phi = " + common::format_number(phi) +
+                                  " needs eos = henderson (d = 2) or carnahan_starling (d = 3), not ideal");
   } else {
     if (eos_dimension(eos) != d)
       throw std::invalid_argument("eos = " + to_string(eos) + " is for d = " +
@@ -51,6 +55,8 @@ TvnsCase tvns_case(int d, double gamma) {
 }
 
 double amplitude_from_energy_integral(int d, double J) {
+  // Eq. (1) [R-shock]: R = (E t^2/(A_d n))^(1/(d+2)), so A_d = E t^2/(n R^(d+2)) = E/(rho0 R^d Rdot^2) (2/(d+2))^2,
+  // and E = rho0 R^d Rdot^2 S_d J by self-similarity (m = 1, rho0 = n).
   return 4.0 * theory::unit_sphere_area(d) * J / ((d + 2.0) * (d + 2.0));
 }
 

@@ -33,7 +33,10 @@ class ClosedForm {
   /// (p -> 0) and the shock (q -> 0) are resolved to full relative precision.
   struct Parameter {
     double p, q;
-    double ln_p() const { return p <= 0.0 ? -std::numeric_limits<double>::infinity() : p < 0.5 ? std::log(p) : std::log1p(-q); }
+    double ln_p() const {
+      if (p <= 0.0) return -std::numeric_limits<double>::infinity();
+      return p < 0.5 ? std::log(p) : std::log1p(-q);
+    }
   };
   /// Fields at a parameter: x = r/R and G, V, P as in EnergyIntegrals.
   struct State {

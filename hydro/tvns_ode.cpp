@@ -184,12 +184,13 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
     };
     out.end_s = integrate_to_end(stepper, system, y, 0.0, settings, &out.checkpoint_s, &out.checkpoint_state, true);
     // The energy integrals are complete; for profiles, extend the checkpoints until tau = x^2 G/P and
-    // phi G are below 1e-14 (the relative error of the power laws used beyond), unless the saddle's growing mode (W drifting from
-    // 1/gamma) shows first.
+    // phi G are below 1e-14 (the relative error of the power laws used beyond), unless the saddle's
+    // growing mode (W drifting from 1/gamma) shows first.
     OdeState extended = y, slope{};
     for (double s = out.end_s; s < out.end_s + 40.0; s += 0.5) {
       system(extended, slope, s);
-      const double correction = std::max(std::exp(-2.0 * s + extended[1] - extended[2]), 4.0 * settings.phi * std::exp(extended[1]));
+      const double tau = std::exp(-2.0 * s + extended[1] - extended[2]);
+      const double correction = std::max(tau, 4.0 * settings.phi * std::exp(extended[1]));
       if (correction < 1e-14 || std::abs(slope[0]) > 1e-9) break;
       odeint::integrate_adaptive(stepper, system, extended, s, s + 0.5, 1e-3, [&](const OdeState& state, double time) {
         out.checkpoint_s.push_back(time);

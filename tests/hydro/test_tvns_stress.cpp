@@ -1,6 +1,6 @@
-// Stress sweep over d = 1, 2, 3 and gamma from 1.01 to 20 (and the ends of the accepted range,
-// 1.001 and 1000), including gamma = 2 and 7 and their neighbourhoods: A finite and positive, the two methods agree, the profile is finite and positive
-// where gas is, and the energy integral of the profile equals E.
+// Stress sweep over d = 1, 2, 3 and gamma from 1.01 to 20 (and the accepted range's ends 1.001 and
+// 1000), including gamma = 2 and 7 and their neighbourhoods: A finite and positive, the two methods
+// agree, the profile finite and positive where gas is, the energy integral of the profile equal to E.
 #include <cmath>
 #include <vector>
 
@@ -11,7 +11,7 @@
 using namespace coldblast::hydro;
 using Catch::Matchers::WithinRel;
 
-TEST_CASE("stress: d = 1..3, gamma in [1.01, 20] with special values", "[slow]") {
+TEST_CASE("stress: d = 1..3, gamma in [1.001, 1000] with special values", "[slow]") {
   const std::vector<double> gammas = {min_gamma, 1.01, 1.05, 1.1, 1.2, 1.4, 5.0 / 3.0, 1.999, 2.0 - 1e-6, 2.0,
                                       2.0 + 1e-6, 2.001, 2.5, 3.0, 4.0, 5.0, 6.0, 6.9, 6.999, 6.9999,
                                       7.0, 7.0001, 7.001, 7.1, 8.0, 10.0, 15.0, 20.0, 100.0, max_gamma};
