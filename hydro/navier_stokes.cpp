@@ -18,6 +18,7 @@
 
 #include "common/validate.hpp"
 #include "hydro/sundials_handles.hpp"
+#include "hydro/tvns.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::hydro {
@@ -25,16 +26,6 @@ namespace coldblast::hydro {
 namespace {
 
 constexpr int components = 3;  // per cell: mass, radial momentum, total energy (cell totals)
-
-/// TvNS amplitudes for γ = 1 + 2/d used only to scale the grid (R_ref); measured values are in
-/// docs/verification.md. 2D and 3D are the exact ones (hydro/tvns.hpp), 1D from our Euler runs.
-double reference_amplitude(int d) {
-  switch (d) {
-    case 1: return 0.87;  // grid scale only; the shock position is measured, never assumed
-    case 2: return 0.3519359;
-    default: return 0.4935902;
-  }
-}
 
 /// Van Leer's harmonic limiter: smooth away from extrema, zero slope at extrema.
 double van_leer(double left, double right) {
@@ -509,7 +500,10 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
       config.physics.heat_conduction ? config.physics.kappa_prefactor.value_or(chapman_enskog_kappa_prefactor(d)) : 0.0;
   result.viscosity_prefactor =
       config.physics.viscosity ? config.physics.viscosity_prefactor.value_or(chapman_enskog_viscosity_prefactor(d)) : 0.0;
-  result.A_reference = reference_amplitude(d);
+  TvnsConfig tvns_config;
+  tvns_config.d = d;
+  tvns_config.tolerance = 1e-10;
+  result.A_reference = solve_tvns(tvns_config).A();  // sets the grid scale R_ref(t) only
 
   Blast blast(config, result.kappa_prefactor, result.viscosity_prefactor, result.A_reference);
   const double lambda = blast.lambda();
@@ -687,6 +681,49 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     result.exponents.push_back(e);
   }
   return result;
+}
+
+TvnsComparison compare_to_tvns(const NavierStokesResult& result, double x_min) {
+  common::require_in_range("x_min", x_min, 0.0, 1.0, common::Bound::closed, common::Bound::open);
+  if (result.profiles.empty()) throw std::invalid_argument("compare_to_tvns: the result has no profile");
+  const NavierStokesPhysics& physics = result.config.physics;
+  const int d = physics.d;
+  TvnsConfig tvns_config;
+  tvns_config.d = d;
+  const TvnsSolution exact = solve_tvns(tvns_config);
+  const NavierStokesProfile& profile = result.profiles.back();
+  TvnsComparison comparison;
+  comparison.x_min = x_min;
+  comparison.A_exact = exact.A();
+  comparison.A_measured = physics.E * profile.t * profile.t / (physics.n_inf * std::pow(profile.R, d + 2));
+  comparison.A_relative_error = comparison.A_measured / comparison.A_exact - 1;
+  // Eq. (1) [R-shock] with the exact amplitude
+  const double R = std::pow(physics.E * profile.t * profile.t / (exact.A() * physics.n_inf), 1.0 / (d + 2));
+  const double shock_speed = 2 * R / ((d + 2) * profile.t);
+  double error[3] = {0, 0, 0}, norm[3] = {0, 0, 0};
+  const std::size_t cells = profile.r.size();
+  for (std::size_t i = 0; i < cells; ++i) {
+    const double x = profile.r[i] / R;
+    if (x < x_min) continue;
+    if (x >= 1) break;
+    // cell width in x from the neighbouring centres (cells are contiguous)
+    const double left = i == 0 ? 0.0 : 0.5 * (profile.r[i - 1] + profile.r[i]);
+    const double right = i + 1 == cells ? profile.r[i] : 0.5 * (profile.r[i] + profile.r[i + 1]);
+    const double dx = (right - left) / R;
+    const TvnsPoint point = exact.at(x);
+    const double numerical[3] = {profile.density[i] / physics.n_inf, profile.velocity[i] / shock_speed,
+                                 profile.pressure[i] / (physics.n_inf * shock_speed * shock_speed)};
+    const double reference[3] = {point.density, point.velocity, point.pressure};
+    for (int k = 0; k < 3; ++k) {
+      error[k] += std::abs(numerical[k] - reference[k]) * dx;
+      norm[k] += std::abs(reference[k]) * dx;
+    }
+  }
+  if (!(norm[0] > 0)) throw std::invalid_argument("compare_to_tvns: no cell with x_min <= r/R < 1");
+  comparison.L1_density = error[0] / norm[0];
+  comparison.L1_velocity = error[1] / norm[1];
+  comparison.L1_pressure = error[2] / norm[2];
+  return comparison;
 }
 
 NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells) {

@@ -110,6 +110,17 @@ struct NavierStokesResult {
   const NavierStokesSample& final_sample() const;
 };
 
+/// The final profile against the exact TvNS solution for γ = 1 + 2/d (hydro/tvns.hpp).
+struct TvnsComparison {
+  double A_measured = 0, A_exact = 0, A_relative_error = 0;  ///< A_measured/A_exact - 1
+  /// Σ|numerical - exact| Δx / Σ|exact| Δx over cells with x = r/R_exact in [x_min, 1), R_exact from
+  /// Eq. (1) with A_exact (so shock-position errors count); density ρ/n∞, velocity u/Ṙ, pressure p/(n∞Ṙ²).
+  double L1_density = 0, L1_velocity = 0, L1_pressure = 0;
+  double x_min = 0;
+};
+/// Compares result.profiles.back(); x_min in [0, 1) (use > H/R to look only outside the core).
+TvnsComparison compare_to_tvns(const NavierStokesResult& result, double x_min = 0.0);
+
 /// Called with each sample as it is produced (progress reports).
 using NavierStokesProgress = std::function<void(const NavierStokesSample&)>;
 

@@ -1,0 +1,246 @@
+// coldblast hydro core|euler: the radial Navier–Stokes blast (hydro/navier_stokes.hpp, paper Sec. III,
+// Eqs. (4), (11)-(20)): running exponents of H, n0, T0 beside the theory's rationals, or the Euler
+// limit (κ = μ = 0) against the exact TvNS solution (Eq. (1) [R-shock]).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "common/output.hpp"
+#include "common/validate.hpp"
+#include "hydro/navier_stokes.hpp"
+#include "theory/exponents.hpp"
+
+namespace coldblast::cli {
+
+namespace {
+
+struct HydroOptions {
+  int d = 2;
+  double until = 0;  // 0: the mode's default
+  int cells = 256;
+  std::string viscosity = "off";
+  double kappa_prefactor = -1;  // < 0: Chapman–Enskog default (only the flag's own value is range-checked)
+  bool kappa_given = false;
+  std::string out;
+  Format format = Format::table;
+};
+
+constexpr double default_core_until = 1e4;
+constexpr double default_euler_until = 50;
+
+std::string number(double value, int digits = 17) {
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+  return buffer;
+}
+
+/// Maps flags to the library config; every range error names the flag.
+hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
+  common::require_integer_in_range("--d", options.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
+  common::require_integer_in_range("--cells", options.cells, 16, 100000);
+  hydro::NavierStokesConfig config;
+  config.physics.d = options.d;
+  config.numerics.cells = options.cells;
+  const double until = options.until == 0 ? (euler ? default_euler_until : default_core_until) : options.until;
+  common::require_in_range("--until", until, config.numerics.start_R_over_lambda, 1e12, common::Bound::open,
+                           common::Bound::closed,
+                           " (R/lambda at the end; must exceed the initial size R/lambda = " +
+                               common::format_number(config.numerics.start_R_over_lambda) + ")");
+  config.until_R_over_lambda = until;
+  if (euler) {
+    config.physics.heat_conduction = false;
+    config.physics.viscosity = false;
+  } else {
+    if (options.kappa_given) {
+      common::require_in_range("--kappa-prefactor", options.kappa_prefactor, 0, 1e6, common::Bound::closed,
+                               common::Bound::closed);
+      config.physics.kappa_prefactor = options.kappa_prefactor;
+    }
+    if (options.viscosity != "on" && options.viscosity != "off")
+      throw std::invalid_argument("--viscosity = " + options.viscosity + " is not one of on, off");
+    config.physics.viscosity = options.viscosity == "on";
+  }
+  config.validate();
+  return config;
+}
+
+hydro::NavierStokesResult solve(const hydro::NavierStokesConfig& config, const char* mode) {
+  int count = 0;
+  return hydro::run_navier_stokes(config, [&](const hydro::NavierStokesSample& s) {
+    if (++count % config.numerics.samples_per_decade == 0)
+      std::cerr << "hydro " << mode << ": R/lambda = " << number(s.R_over_lambda, 4) << '\n';
+  });
+}
+
+std::string config_header(const hydro::NavierStokesResult& r) {
+  const hydro::NavierStokesConfig& c = r.config;
+  return common::provenance_header(
+      {{"d", std::to_string(c.physics.d)},
+       {"E", number(c.physics.E)},
+       {"n_inf", number(c.physics.n_inf)},
+       {"a", number(c.physics.a)},
+       {"lambda", number(r.lambda)},
+       {"kappa_prefactor", number(r.kappa_prefactor)},
+       {"viscosity_prefactor", number(r.viscosity_prefactor)},
+       {"until_R_over_lambda", number(c.until_R_over_lambda)},
+       {"cells", std::to_string(c.numerics.cells)},
+       {"start_R_over_lambda", number(c.numerics.start_R_over_lambda)},
+       {"initial_width", number(c.numerics.initial_width)},
+       {"temperature_floor", number(c.numerics.temperature_floor)},
+       {"relative_tolerance", number(c.numerics.relative_tolerance)},
+       {"core_resolution", number(c.numerics.core_resolution.value_or(0))},
+       {"outer_margin", number(c.numerics.outer_margin)},
+       {"A_reference", number(r.A_reference)},
+       {"max_energy_error", number(r.max_energy_error, 3)}},
+      "m = k_B = 1; lengths and times in the units of E, n_inf and a (lambda = 1/(n_inf Omega_{d-1} a^{d-1})); "
+      "exponents are d ln X/d ln t (and d ln X/d ln(R/lambda) where marked _in_R)");
+}
+
+void write_files(const hydro::NavierStokesResult& r, const std::string& directory) {
+  if (directory.empty()) return;
+  std::string series = config_header(r);
+  series += "t,R_over_lambda,R,H,H_density,n0,T0,p0,energy,mass,energy_error,H_prefactor,n0_prefactor,T0_prefactor,"
+            "p0_scaled\n";
+  for (const auto& s : r.samples)
+    series += number(s.t) + "," + number(s.R_over_lambda) + "," + number(s.R) + "," + number(s.H) + "," +
+              number(s.H_density) + "," + number(s.n0) + "," + number(s.T0) + "," + number(s.p0) + "," +
+              number(s.energy) + "," + number(s.mass) + "," + number(s.energy_error, 3) + "," +
+              number(s.H_prefactor) + "," + number(s.n0_prefactor) + "," + number(s.T0_prefactor) + "," +
+              number(s.p0_scaled) + "\n";
+  common::write_file_atomic(directory + "/samples.csv", series);
+  std::string exponents = config_header(r);
+  exponents += "t,R_over_lambda,R,H,H_density,n0,T0,H_in_R,H_density_in_R,n0_in_R,T0_in_R\n";
+  for (const auto& e : r.exponents)
+    exponents += number(e.t) + "," + number(e.R_over_lambda) + "," + number(e.R) + "," + number(e.H) + "," +
+                 number(e.H_density) + "," + number(e.n0) + "," + number(e.T0) + "," + number(e.H_in_R) + "," +
+                 number(e.H_density_in_R) + "," + number(e.n0_in_R) + "," + number(e.T0_in_R) + "\n";
+  common::write_file_atomic(directory + "/exponents.csv", exponents);
+  std::string profile_text = config_header(r);
+  const auto& p = r.profiles.back();
+  profile_text += "# t: " + number(p.t) + "\n# R: " + number(p.R) + "\n";
+  profile_text += "r,r_over_R,density,velocity,temperature,pressure,heat_flux\n";
+  for (std::size_t i = 0; i < p.r.size(); ++i)
+    profile_text += number(p.r[i]) + "," + number(p.r_over_R[i]) + "," + number(p.density[i]) + "," +
+                    number(p.velocity[i]) + "," + number(p.temperature[i]) + "," + number(p.pressure[i]) + "," +
+                    number(p.heat_flux[i]) + "\n";
+  common::write_file_atomic(directory + "/profile.csv", profile_text);
+  std::cerr << "hydro: wrote samples.csv, exponents.csv, profile.csv in " << directory << '\n';
+}
+
+void run_core(const HydroOptions& options) {
+  const hydro::NavierStokesConfig config = make_config(options, false);
+  const hydro::NavierStokesResult r = solve(config, "core");
+  write_files(r, options.out);
+  const theory::ScalingExponents theory_exponents = theory::scaling_exponents(config.physics.d);
+  const hydro::RunningExponents e = r.final_exponents();
+  const hydro::NavierStokesSample& s = r.final_sample();
+  struct Row {
+    const char* name;
+    double measured;
+    theory::Rational theory;
+  };
+  const Row rows[] = {{"H", e.H, theory_exponents.H.in_time},
+                      {"n0", e.n0, theory_exponents.n0.in_time},
+                      {"T0", e.T0, theory_exponents.T0.in_time},
+                      {"R", e.R, theory_exponents.R.in_time}};
+  if (options.format == Format::json) {
+    common::Json exponents = common::Json::object();
+    for (const Row& row : rows)
+      exponents[row.name] = {{"measured", row.measured},
+                             {"theory", theory::to_double(row.theory)},
+                             {"theory_rational", theory::to_string(row.theory)}};
+    print_json({{"d", config.physics.d},
+                {"R_over_lambda", s.R_over_lambda},
+                {"exponents", exponents},
+                {"prefactors", {{"H", s.H_prefactor}, {"n0", s.n0_prefactor}, {"T0", s.T0_prefactor}}},
+                {"p0_scaled", s.p0_scaled},
+                {"kappa_prefactor", r.kappa_prefactor},
+                {"viscosity_prefactor", r.viscosity_prefactor},
+                {"energy_error", r.max_energy_error},
+                {"cells", config.numerics.cells},
+                {"wall_seconds", r.statistics.wall_seconds},
+                {"rhs_evaluations", r.statistics.rhs_evaluations}});
+    return;
+  }
+  std::printf("Navier-Stokes core, d = %d, R/lambda = %s, %d cells, c_kappa = %.6g, c_mu = %.6g\n", config.physics.d,
+              number(s.R_over_lambda, 6).c_str(), config.numerics.cells, r.kappa_prefactor, r.viscosity_prefactor);
+  std::printf("running time exponents d ln X / d ln t at the end:\n  %-4s %10s %10s %10s\n", "X", "measured",
+              "theory", "");
+  for (const Row& row : rows)
+    std::printf("  %-4s %10.5f %10.5f %10s\n", row.name, row.measured, theory::to_double(row.theory),
+                theory::to_string(row.theory).c_str());
+  std::printf("prefactors: H/(lambda x^h_d) = %.4f, n0/(n_inf x^-2d^2/(8+3d^2)) = %.4f, T0/(Rdot^2 x^2d^2/(8+3d^2)) = "
+              "%.4f (x = R/lambda)\n",
+              s.H_prefactor, s.n0_prefactor, s.T0_prefactor);
+  std::printf("central pressure p0/(n_inf Rdot^2) = %.4f; energy error %.2e; %.2f s, %ld RHS evaluations\n",
+              s.p0_scaled, r.max_energy_error, r.statistics.wall_seconds, r.statistics.rhs_evaluations);
+}
+
+void run_euler(const HydroOptions& options) {
+  const hydro::NavierStokesConfig config = make_config(options, true);
+  const hydro::NavierStokesResult r = solve(config, "euler");
+  write_files(r, options.out);
+  const hydro::TvnsComparison c = hydro::compare_to_tvns(r);
+  if (options.format == Format::json) {
+    print_json({{"d", config.physics.d},
+                {"A_measured", c.A_measured},
+                {"A_exact", c.A_exact},
+                {"A_relative_error", c.A_relative_error},
+                {"profile_L1_error", {{"density", c.L1_density}, {"velocity", c.L1_velocity}, {"pressure", c.L1_pressure}}},
+                {"R_over_initial_width", config.until_R_over_lambda /
+                                             (config.numerics.start_R_over_lambda * config.numerics.initial_width)},
+                {"cells", config.numerics.cells},
+                {"energy_error", r.max_energy_error},
+                {"wall_seconds", r.statistics.wall_seconds}});
+    return;
+  }
+  std::printf("Euler (kappa = mu = 0), d = %d, %d cells, R/(initial width) = %.4g\n", config.physics.d,
+              config.numerics.cells,
+              config.until_R_over_lambda / (config.numerics.start_R_over_lambda * config.numerics.initial_width));
+  std::printf("  A measured %.7f  exact %.7f  relative error %+.2e\n", c.A_measured, c.A_exact, c.A_relative_error);
+  std::printf("  profile L1 errors: density %.2e  velocity %.2e  pressure %.2e\n", c.L1_density, c.L1_velocity,
+              c.L1_pressure);
+  std::printf("  energy error %.2e; %.2f s, %ld RHS evaluations\n", r.max_energy_error, r.statistics.wall_seconds,
+              r.statistics.rhs_evaluations);
+}
+
+void add_common_options(CLI::App& command, HydroOptions& options, const char* until_help) {
+  command.add_option("--d", options.d, "Spatial dimension: 1 planar, 2 cylindrical, 3 spherical")->capture_default_str();
+  command.add_option("--until", options.until, until_help);
+  command.add_option("--cells", options.cells, "Finite-volume cells (>= 16)")->capture_default_str();
+  command.add_option("--out", options.out, "Folder for samples.csv, exponents.csv, profile.csv (none if empty)");
+  add_format_option(command, options.format);
+}
+
+}  // namespace
+
+void add_hydro_command(CLI::App& app) {
+  CLI::App* hydro = app.add_subcommand("hydro", "Radial Navier-Stokes blast (paper Sec. III): core exponents, Euler check");
+  hydro->require_subcommand(1);
+
+  auto core_options = std::make_shared<HydroOptions>();
+  CLI::App* core = hydro->add_subcommand(
+      "core", "Heat-conducting blast: running exponents of H, n0, T0 and R beside the theory (Eqs. 4, 11, 12)");
+  add_common_options(*core, *core_options, "Stop at R/lambda (default 1e4)");
+  core->add_option("--viscosity", core_options->viscosity, "Shear viscosity mu = c_mu n_inf lambda sqrt(T): on or off")
+      ->capture_default_str();
+  core->add_option_function<double>(
+      "--kappa-prefactor",
+      [core_options](const double& value) {
+        core_options->kappa_prefactor = value;
+        core_options->kappa_given = true;
+      },
+      "c_kappa in kappa = c_kappa n_inf lambda sqrt(T), >= 0 (default: Chapman-Enskog, 2/sqrt(pi) in 2D, "
+      "75 sqrt(pi)/256 in 3D)");
+  core->callback([core_options] { run_core(*core_options); });
+
+  auto euler_options = std::make_shared<HydroOptions>();
+  CLI::App* euler = hydro->add_subcommand("euler", "kappa = mu = 0: A_d and profiles against the exact TvNS solution");
+  add_common_options(*euler, *euler_options, "Stop at R/lambda (default 50; the initial hot region has R/lambda = 0.4)");
+  euler->callback([euler_options] { run_euler(*euler_options); });
+}
+
+}  // namespace coldblast::cli
