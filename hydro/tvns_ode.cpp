@@ -148,6 +148,7 @@ double integrate_to_end(Stepper stepper, System system, OdeState& y, double t, c
       if (one_minus_W < 0.05 && one_minus_W * (tail_kinetic + tail_internal) < negligible) {
         y[3] += tail_kinetic;
         y[4] += tail_internal;
+        y[0] += slope[0];  // ln x still to go: dln x/dsigma ∝ 1 - W (first order only, O((1 - W)^2) left)
         return t;
       }
     }
@@ -185,22 +186,29 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
     out.end_s = integrate_to_end(stepper, system, y, 0.0, settings, &out.checkpoint_s, &out.checkpoint_state, true);
     // The energy integrals are complete; for profiles, extend the checkpoints until tau = x^2 G/P and
     // phi G are below 1e-14 (the relative error of the power laws used beyond), unless the saddle's
-    // growing mode (W drifting from 1/gamma) shows first.
+    // growing mode shows first: physically dW/ds decays like tau, the mode makes it grow like x^-d.
     OdeState extended = y, slope{};
+    double previous_drift = std::numeric_limits<double>::infinity();
     for (double s = out.end_s; s < out.end_s + 40.0; s += 0.5) {
       system(extended, slope, s);
       const double tau = std::exp(-2.0 * s + extended[1] - extended[2]);
       const double correction = std::max(tau, 4.0 * settings.phi * std::exp(extended[1]));
-      if (correction < 1e-14 || std::abs(slope[0]) > 1e-9) break;
+      if (correction < 1e-14 || std::abs(slope[0]) > previous_drift) break;
+      previous_drift = std::abs(slope[0]);
       odeint::integrate_adaptive(stepper, system, extended, s, s + 0.5, 1e-3, [&](const OdeState& state, double time) {
         out.checkpoint_s.push_back(time);
         out.checkpoint_state.push_back(state);
       });
       out.end_s = s + 0.5;
     }
-    system(extended, slope, out.end_s);
-    out.end_density_exponent = -slope[1];
-    out.centre_pressure = std::exp(extended[2]);
+    system(extended, out.end_slope, out.end_s);
+    // Centre: W -> 1/gamma0, G ∝ x^k with k = d/(gamma0 - 1) (gamma0 = kappa of the dilute gas), P -> P_c;
+    // the corrections decay like tau ∝ x^(2+k), or like phi G ∝ x^k for hard particles.
+    const double gamma0 = equations.kappa(0.0);
+    out.centre_W = 1.0 / gamma0;
+    out.centre_density_exponent = settings.d / (gamma0 - 1.0);
+    out.relaxation_rate = out.centre_density_exponent + (settings.phi > 0.0 ? 0.0 : 2.0);
+    out.centre_pressure = std::exp(extended[2] + out.end_slope[2] / out.relaxation_rate);
   } else {
     // Near gamma = 7 the flow first follows the singular solution W = 1/4 while x shrinks by decades, so
     // sigma would hardly move: integrate in s until W is halfway from its shock value to 1, then in sigma.
@@ -271,9 +279,14 @@ TvnsPoint ode_point(const OdeSettings& settings, const OdeResult& result, double
   const double s = -std::log(r_over_R);
   OdeState y{};
   if (s >= result.end_s) {
-    // Near-centre power laws past the end of the integration (relative error O(tau) there).
+    // Near-centre expansion past the end of the integration: each of W, dln G/ds, dln P/ds relaxes to its
+    // centre value like exp(-r (s - end_s)); the error is second order in the end's tau (or phi G).
     y = result.checkpoint_state.back();
-    y[1] -= result.end_density_exponent * (s - result.end_s);
+    const double r = result.relaxation_rate, delta = s - result.end_s, relaxed = -std::expm1(-r * delta) / r;
+    const double k = result.centre_density_exponent;
+    y[0] = result.centre_W + (y[0] - result.centre_W) * std::exp(-r * delta);
+    y[1] += -k * delta + (result.end_slope[1] + k) * relaxed;
+    y[2] += result.end_slope[2] * relaxed;
   } else {
     // Last checkpoint at or before s, then a short integration to s itself.
     const auto after = std::upper_bound(result.checkpoint_s.begin(), result.checkpoint_s.end(), s);
@@ -286,9 +299,8 @@ TvnsPoint ode_point(const OdeSettings& settings, const OdeResult& result, double
       auto system = [&](const OdeState& state, OdeState& derivative, double time) {
         equations.standard(state, derivative, time);
       };
-      auto stepper =
-          odeint::make_controlled<odeint::runge_kutta_fehlberg78<OdeState>>(settings.tolerance, settings.tolerance);
-      odeint::integrate_adaptive(stepper, system, y, s0, s, s - s0);
+      odeint::integrate_adaptive(make_stepper<odeint::bulirsch_stoer<OdeState>>(settings.tolerance), system, y, s0, s,
+                                 s - s0);
     }
   }
   const double G = std::exp(y[1]), P = std::exp(y[2]);

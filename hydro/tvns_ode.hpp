@@ -32,8 +32,11 @@ struct OdeResult {
   std::vector<double> checkpoint_s;        ///< s = -ln(r/R) at accepted steps (standard branch)
   std::vector<OdeState> checkpoint_state;  ///< state there
   double centre_pressure = 0.0;            ///< P at r = 0 (standard branch)
-  double end_s = 0.0;                 ///< last s integrated; beyond it the near-centre power laws are used
-  double end_density_exponent = 0.0;  ///< -dln G/ds there
+  double end_s = 0.0;  ///< last s integrated; beyond it the near-centre expansion below is used
+  OdeState end_slope{};               ///< d/ds of the state at end_s
+  double centre_density_exponent = 0.0;  ///< k = d/(gamma0 - 1), gamma0 = kappa at G -> 0
+  double centre_W = 0.0;                 ///< V/x at the centre, 1/gamma0
+  double relaxation_rate = 0.0;          ///< rate r of the corrections exp(-r (s - end_s))
   double tolerance_used = 0.0;        ///< step tolerance actually used (see integrate_self_similar)
 };
 

@@ -1,6 +1,7 @@
 // TvNS solution: the paper's A_2 (Eq. 3), Kamm & Timmes' published tables (LA-UR-07-2849, Tables 1-4),
 // exact special cases, energy integral = E, Rankine-Hugoniot at r/R = 1, the near-centre power laws
 // (Eqs. 18a,b), the phi -> 0 limit of the hard-particle EOS, and bad input.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -8,6 +9,8 @@
 
 #include "hydro/equation_of_state.hpp"
 #include "hydro/tvns.hpp"
+#include "hydro/tvns_closed_form.hpp"
+#include "hydro/tvns_ode.hpp"
 
 using namespace coldblast::hydro;
 using Catch::Matchers::Contains;
@@ -304,4 +307,42 @@ TEST_CASE("bad configurations and r/R are rejected with the parameter, value and
   const TvnsSolution s = ideal(2);
   CHECK_THROWS_WITH(s.at(1.5), Contains("r/R = 1.5 is outside [0, 1]"));
   CHECK_THROWS_WITH(s.at(-0.1), Contains("r/R = -0.1"));
+}
+
+TEST_CASE("ODE profiles and cavity edge agree with the closed form", "[fast]") {
+  // Profiles (not just A): the ODE checkpoints re-integrated to x against the closed form's Brent root.
+  // Integrating inward towards the centre's saddle amplifies step errors (1e-13) roughly like x^-d, so
+  // the bound is 1e-10 down to x = 0.3 and grows like (0.3/x)^3 below (d <= 3).
+  for (int d = 1; d <= 3; ++d) {
+    for (const double gamma : {1.4, 2.0, 5.0}) {
+      detail::OdeSettings settings;
+      settings.d = d;
+      settings.gamma = gamma;
+      const detail::OdeResult ode = detail::integrate_self_similar(settings);
+      const detail::ClosedForm closed(d, gamma);
+      for (const double x : {0.999, 0.9, 0.6, 0.3, 0.1, 0.01}) {
+        INFO("d = " << d << ", gamma = " << gamma << ", r/R = " << x);
+        const TvnsPoint a = detail::ode_point(settings, ode, x), b = closed.at(x);
+        const double bound = 1e-10 * std::max(1.0, std::pow(0.3 / x, 3));
+        CHECK_THAT(a.density, WithinRel(b.density, bound));
+        CHECK_THAT(a.velocity, WithinRel(b.velocity, bound));
+        CHECK_THAT(a.pressure, WithinRel(b.pressure, bound));
+      }
+    }
+  }
+  // Cavity edge: the ODE stops at 1 - W < 0.05 and adds the first-order rest of ln x, leaving
+  // O((1 - W)^2) with a coefficient that grows as gamma -> 7 (there the closed form's value is used).
+  for (const double gamma : {8.0, 20.0, 100.0}) {
+    detail::OdeSettings settings;
+    settings.d = 3;
+    settings.gamma = gamma;
+    CHECK_THAT(detail::integrate_self_similar(settings).cavity_radius,
+               WithinRel(detail::ClosedForm(3, gamma).cavity_radius(), 1e-9));
+  }
+}
+
+TEST_CASE("phi with the ideal EOS is rejected, not ignored", "[fast]") {
+  TvnsConfig config;
+  config.phi = 0.1;
+  CHECK_THROWS_WITH(solve_tvns(config), Contains("phi = 0.1 needs eos = henderson"));
 }
