@@ -187,18 +187,30 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
     // The energy integrals are complete; for profiles, extend the checkpoints until tau = x^2 G/P and
     // phi G are below 1e-14 (the relative error of the power laws used beyond), unless the saddle's
     // growing mode shows first: physically dW/ds decays like tau, the mode makes it grow like x^-d.
+    // Only in the near-centre regime (not near the singular case, where tau stays O(1)); a chunk whose
+    // step control fails is dropped, since A is already complete.
     OdeState extended = y, slope{};
     double previous_drift = std::numeric_limits<double>::infinity();
     for (double s = out.end_s; s < out.end_s + 40.0; s += 0.5) {
       system(extended, slope, s);
       const double tau = std::exp(-2.0 * s + extended[1] - extended[2]);
       const double correction = std::max(tau, 4.0 * settings.phi * std::exp(extended[1]));
-      if (correction < 1e-14 || std::abs(slope[0]) > previous_drift) break;
+      if (correction < 1e-14 || correction > 1e-3 || std::abs(slope[0]) > previous_drift) break;
       previous_drift = std::abs(slope[0]);
-      odeint::integrate_adaptive(stepper, system, extended, s, s + 0.5, 1e-3, [&](const OdeState& state, double time) {
-        out.checkpoint_s.push_back(time);
-        out.checkpoint_state.push_back(state);
-      });
+      OdeState next = extended;
+      std::vector<double> times;
+      std::vector<OdeState> states;
+      try {
+        odeint::integrate_adaptive(stepper, system, next, s, s + 0.5, 1e-3, [&](const OdeState& state, double time) {
+          times.push_back(time);
+          states.push_back(state);
+        });
+      } catch (const odeint::step_adjustment_error&) {
+        break;
+      }
+      extended = next;
+      out.checkpoint_s.insert(out.checkpoint_s.end(), times.begin(), times.end());
+      out.checkpoint_state.insert(out.checkpoint_state.end(), states.begin(), states.end());
       out.end_s = s + 0.5;
     }
     system(extended, out.end_slope, out.end_s);
