@@ -41,23 +41,7 @@ CellList<D> CellList<D>::open(double region_radius, double guard_radius, double 
     list.box_[k] = cells_per_axis * min_width;
   }
   list.set_up(particle_count);
-  // Guard cells: any point of the cell farther than guard_radius from the origin.
-  list.guard_.assign(list.head_.size(), 0);
-  for (std::int32_t cell = 0; cell < list.cell_count(); ++cell) {
-    const auto c = list.coordinates(cell);
-    double far2 = 0.0;
-    for (int k = 0; k < D; ++k) {
-      const double lo = list.lower_[k] + c[k] * min_width, hi = lo + min_width;
-      const double far = std::max(std::abs(lo), std::abs(hi));
-      far2 += far * far;
-    }
-    const bool edge = [&] {
-      for (int k = 0; k < D; ++k)
-        if (c[k] == 0 || c[k] == list.count_[k] - 1) return true;
-      return false;
-    }();
-    list.guard_[cell] = (edge || far2 > guard_radius * guard_radius) ? 1 : 0;
-  }
+  (void)guard_radius;  // the engine checks positions against it directly
   return list;
 }
 
@@ -66,6 +50,7 @@ void CellList<D>::set_up(std::size_t particle_count) {
   std::size_t total = 1;
   for (int k = 0; k < D; ++k) {
     stride_[k] = static_cast<std::int32_t>(total);
+    inverse_stride_[k] = 1.0 / static_cast<double>(total);
     total *= static_cast<std::size_t>(count_[k]);
   }
   head_.assign(total, -1);
@@ -112,10 +97,15 @@ std::int32_t CellList<D>::cell_of(const Vec<D>& x) const {
 template <int D>
 std::array<std::int32_t, D> CellList<D>::coordinates(std::int32_t cell) const {
   std::array<std::int32_t, D> c;
-  for (int k = D - 1; k >= 0; --k) {
-    c[k] = cell / stride_[k];
-    cell -= c[k] * stride_[k];
+  for (int k = D - 1; k >= 1; --k) {
+    // cell / stride by a multiplication and one correction step (an integer division is slow).
+    std::int32_t q = static_cast<std::int32_t>(cell * inverse_stride_[k]);
+    if (q * stride_[k] > cell) --q;
+    else if ((q + 1) * stride_[k] <= cell) ++q;
+    c[k] = q;
+    cell -= q * stride_[k];
   }
+  c[0] = cell;
   return c;
 }
 

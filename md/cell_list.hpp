@@ -2,8 +2,7 @@
 // Cell list for the event-driven engine: a regular grid of cells at least one contact distance wide,
 // so a particle can only touch particles in its own and the 3^D - 1 adjacent cells. Cell crossings
 // are events; on a crossing only the newly adjacent slab of 3^(D-1) cells is searched (DynamO).
-// Two geometries: periodic (equilibrium) and open (blast: a cube around a ball of particles whose
-// outer cells are "guard" cells that a moving particle must never enter).
+// Two geometries: periodic (equilibrium) and open (blast: a cube of cells around a ball of particles).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -17,8 +16,8 @@ class CellList {
  public:
   /// Periodic box [0, box_k) with cells of width >= min_width (at least 3 cells per axis).
   static CellList periodic(const Vec<D>& box, double min_width, std::size_t particle_count);
-  /// Open cube [-half, half)^D, half = region_radius + 2 cell widths; cells reaching beyond
-  /// guard_radius from the origin are guard cells.
+  /// Open cube [-half, half)^D, half = region_radius + 2 cell widths (the engine keeps moving
+  /// particles inside guard_radius < region_radius, so their neighbour cells always exist).
   static CellList open(double region_radius, double guard_radius, double min_width, std::size_t particle_count);
 
   bool is_periodic() const { return periodic_; }
@@ -27,7 +26,6 @@ class CellList {
   std::int32_t count(int k) const { return count_[k]; }
   const Vec<D>& lower() const { return lower_; }
   const Vec<D>& box() const { return box_; }
-  bool is_guard(std::int32_t cell) const { return !guard_.empty() && guard_[cell] != 0; }
 
   /// Cell containing position x (clamped to the grid).
   std::int32_t cell_of(const Vec<D>& x) const;
@@ -51,7 +49,7 @@ class CellList {
   template <class F>
   void for_each_new_neighbour_cell(std::int32_t cell, int axis, int direction, F&& f) const;
 
-  std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + guard_.capacity() + boundary_.capacity(); }
+  std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + boundary_.capacity(); }
 
  private:
   CellList() = default;
@@ -59,8 +57,8 @@ class CellList {
   bool periodic_ = false;
   Vec<D> lower_ = Vec<D>::Zero(), box_ = Vec<D>::Zero(), width_ = Vec<D>::Zero();
   std::array<std::int32_t, D> count_{}, stride_{};
+  std::array<double, D> inverse_stride_{};
   std::vector<std::int32_t> head_, next_;
-  std::vector<std::uint8_t> guard_;
   std::vector<std::uint8_t> boundary_;  // periodic: cell on a face of the box (its neighbours wrap)
   std::vector<std::int32_t> neighbour_delta_;                       // 3^D index offsets (no wrap)
   std::array<std::array<std::vector<std::int32_t>, 2>, D> slab_delta_;  // per axis, direction (no wrap)

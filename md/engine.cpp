@@ -42,6 +42,15 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
   for (int s = 0; s < 2; ++s)
     for (int r = 0; r < 2; ++r) sigma_[s][r] = radius_[s] + radius_[r];
   same_radius_ = radius_[0] == radius_[1];
+  if (!config.periodic) {
+    // Positions are checked at every event of a moving particle, and a particle has an event at
+    // least once per cell it crosses, so checking |x| against guard_radius minus one cell diagonal
+    // keeps every moving particle inside guard_radius (and its neighbour cells inside the grid).
+    double diagonal = 0.0;
+    for (int k = 0; k < D; ++k) diagonal += cells_.width(k) * cells_.width(k);
+    const double trigger = std::max(0.0, config.guard_radius - std::sqrt(diagonal));
+    guard_trigger2_ = trigger * trigger;
+  }
   for (std::size_t i = 0; i < state.size(); ++i) {
     Particle<D>& p = particles_[i];
     p.position = state.position[i];
@@ -71,7 +80,7 @@ void Engine<D, Queue>::start_moving(std::int32_t id) {
 
 template <int D, class Queue>
 void Engine<D, Queue>::check_guard(std::int32_t id) const {
-  if (config_.periodic || !cells_.is_guard(particles_[id].cell)) return;
+  if (config_.periodic || particles_[id].position_at(now_).squaredNorm() <= guard_trigger2_) return;
   std::ostringstream message;
   message << "a moving particle came within " << 2.0 * (2.0 * radius_[host_species])
           << " (2 sigma) of the edge of the simulated region (radius " << config_.region_radius << ") at t = " << now_

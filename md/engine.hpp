@@ -98,7 +98,8 @@ class Engine {
   std::vector<std::uint8_t> species_, moving_flag_;
   std::vector<std::int32_t> moving_;
   double radius_[2], mass_[2], sigma_[2][2];
-  bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
+  bool same_radius_ = true;
+  double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run  // host and impurity radii equal: the contact distance needs no species lookup
   CellList<D> cells_;
   Queue queue_;
   double now_ = 0.0;

@@ -10,7 +10,7 @@ namespace coldblast::md {
 
 // ---------------------------------------------------------------- HeapEventQueue
 
-HeapEventQueue::HeapEventQueue(std::size_t capacity) : position_(capacity, -1) { heap_.reserve(capacity); }
+HeapEventQueue::HeapEventQueue(std::size_t capacity) : position_(capacity, -1) {}
 
 void HeapEventQueue::clear() {
   for (const Entry& e : heap_) position_[e.id] = -1;
@@ -82,6 +82,7 @@ std::size_t bucket_count_for(std::size_t capacity) {
   return count;
 }
 constexpr std::uint64_t adapt_interval = 1 << 15;
+constexpr double target_per_bucket = 4.0;  // events popped per bucket visited
 }  // namespace
 
 CalendarEventQueue::CalendarEventQueue(std::size_t capacity)
@@ -109,8 +110,10 @@ void CalendarEventQueue::clear() {
 }
 
 std::int64_t CalendarEventQueue::bucket_of(double time) const {
-  const double q = std::floor(time * inverse_width_);
-  if (q >= 1e18) return std::int64_t{1} << 60;
+  const double scaled = time * inverse_width_;
+  if (scaled >= 1e18) return std::int64_t{1} << 60;
+  if (scaled >= 0.0) return static_cast<std::int64_t>(scaled);  // truncation = floor; avoids a libm call
+  const double q = std::floor(scaled);
   if (q <= -1e18) return -(std::int64_t{1} << 60);
   return static_cast<std::int64_t>(q);
 }
@@ -267,7 +270,8 @@ void CalendarEventQueue::pop() {
   if (++pops_ == adapt_interval) {
     // Events per bucket visited; keep it within [1/4, 8] (target 2) by rescaling the width.
     const double ratio = static_cast<double>(pops_) / static_cast<double>(std::max<std::uint64_t>(advances_, 1));
-    if (ratio > 8.0 || ratio < 0.25) rebuild(width_ * std::clamp(2.0 / ratio, 1.0 / 64.0, 64.0));
+    if (ratio > 4.0 * target_per_bucket || ratio < 0.125 * target_per_bucket)
+      rebuild(width_ * std::clamp(target_per_bucket / ratio, 1.0 / 64.0, 64.0));
     else pops_ = advances_ = 0;
   }
 }

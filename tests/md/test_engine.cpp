@@ -80,7 +80,7 @@ TEST_CASE("the guard stops a particle that approaches the region's edge", "[fast
   add<2>(s, Vec<2>(-5.0, 0.0), Vec<2>(-1.0, 0.0));
   Engine<2, HeapEventQueue> engine(open_config<2>(20.0), s);
   CHECK_THROWS_WITH(engine.run_until(100.0), Catch::Contains("raise the test region"));
-  // Disc 1 (x = -5 - t) reaches the guard radius 18 at t = 13; the cell test trips at most one
+  // Disc 1 (x = -5 - t) reaches the guard radius 18 at t = 13; the check trips at most one
   // cell diagonal (sqrt(2) for unit cells) earlier.
   CHECK(engine.now() <= 13.0);
   CHECK(engine.now() >= 13.0 - std::sqrt(2.0));
