@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "theory/exponents.hpp"
+
 namespace coldblast::compare {
 
 HydroReference::HydroReference(int d, double until_R_over_lambda, int cells)
@@ -16,13 +18,14 @@ HydroReference::HydroReference(hydro::NavierStokesResult result) : result_(std::
 
 void HydroReference::build_collision_exponents() {
   // C(t) ∝ ∫_0^t n0 √T0 dt' (Eq. (24) [C-imp-long] argument with τ = 1/(n0 a^{d-1} √T0)). The
-  // part before the first sample is the power-law extrapolation t0 f(t0)/(1 + β), β the local
-  // exponent of f = n0 √T0 there; the rest is the trapezoid rule in ln t.
+  // solver starts at R/λ ~ 1 from a hot central region whose early transient is not the MD's,
+  // so the part before the first sample is the asymptotic power law t0 f(t0)/(1 + β), β the exact
+  // exponent of f = n0 √T0 (2D: -3/5); the rest is the trapezoid rule in ln t.
   const auto& s = result_.samples;
   std::vector<double> f(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) f[i] = s[i].n0 * std::sqrt(s[i].T0);
-  const double beta = std::log(f[1] / f[0]) / std::log(s[1].t / s[0].t);
-  if (!(beta > -1.0)) throw std::runtime_error("hydro reference: n0 √T0 decays too fast at early times to integrate");
+  const auto exact = theory::scaling_exponents(result_.config.physics.d);
+  const double beta = theory::to_double(exact.n0.in_time + exact.T0.in_time / 2);
   double C = s[0].t * f[0] / (1.0 + beta);
   log_R_over_lambda_.clear();
   collision_exponent_.clear();
