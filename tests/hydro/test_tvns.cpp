@@ -346,3 +346,18 @@ TEST_CASE("phi with the ideal EOS is rejected, not ignored", "[fast]") {
   config.phi = 0.1;
   CHECK_THROWS_WITH(solve_tvns(config), Contains("phi = 0.1 needs eos = henderson"));
 }
+
+TEST_CASE("per-method error estimates cover the actual error at loose tolerances", "[fast]") {
+  const double exact = ideal(2).A();
+  for (const double tolerance : {1e-3, 1e-6}) {
+    for (const TvnsMethod method : {TvnsMethod::ode, TvnsMethod::ode_check, TvnsMethod::closed_form}) {
+      TvnsConfig config;
+      config.tolerance = tolerance;
+      const TvnsAmplitude a = tvns_amplitude(config, method);
+      INFO("tolerance = " << tolerance << ", method = " << static_cast<int>(method));
+      CHECK(std::abs(a.A - exact) <= a.A_error);
+      CHECK(a.A_error < 100.0 * tolerance * a.A);
+      CHECK(a.evaluations > 0);
+    }
+  }
+}
