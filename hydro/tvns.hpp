@@ -29,7 +29,8 @@ struct TvnsConfig {
   double resolved_gamma() const;
 };
 
-/// One point of the self-similar profile: rho/rho0, u/Rdot, p/(rho0 Rdot^2), T/Rdot^2 (T = p/n, m = 1).
+/// One point of the self-similar profile: rho/rho0, u/Rdot, p/(rho0 Rdot^2), T/Rdot^2 (k_B T = p/(n Z), which
+/// is p/n for the ideal gas; m = 1).
 struct TvnsPoint {
   double r_over_R, density, velocity, pressure, temperature;
 };
@@ -44,7 +45,7 @@ enum class TvnsCase {
 /// How A_d is computed.
 enum class TvnsMethod {
   closed_form,  ///< Kamm & Timmes parametric solution, GSL quadrature (ideal gas only)
-  ode,          ///< self-similar ODEs from the shock inward, Boost.Odeint Runge-Kutta-Fehlberg 7(8)
+  ode,          ///< self-similar ODEs from the shock inward, Boost.Odeint Bulirsch-Stoer
   ode_check,    ///< the same ODEs with an independent stepper, Dormand-Prince 5(4)
 };
 
@@ -72,7 +73,8 @@ class TvnsSolution {
   double A() const { return A_; }
   /// Absolute error estimate of A() (quadrature/ODE estimates and the two methods' difference).
   double A_error() const { return A_error_; }
-  /// |A_1 - A_2|/A of the two independent methods (closed form vs ODE; RKF78 vs DOPRI5 if non-ideal).
+  /// |A_1 - A_2|/A of the two independent methods (closed form vs ODE; Bulirsch-Stoer vs Dormand-Prince
+  /// if non-ideal).
   double method_agreement() const { return method_agreement_; }
   /// A from each method (closed_form is NaN for a non-ideal EOS).
   double A_closed_form() const { return A_closed_form_; }
@@ -87,7 +89,7 @@ class TvnsSolution {
   /// rho/rho0 underflows (below 2.2e-308, e.g. d = 1, gamma = 1.01, r/R < 1e-3); inside the cavity
   /// (vacuum case) every field is 0. Throws std::invalid_argument outside [0, 1].
   TvnsPoint at(double r_over_R) const;
-  /// Profile at many r/R (one ODE pass for a non-ideal EOS), in the given order.
+  /// Profile at many r/R, in the given order (non-ideal EOS: each from the nearest stored ODE checkpoint).
   std::vector<TvnsPoint> profile(const std::vector<double>& r_over_R) const;
 
   /// Near-centre power laws, Eqs. (18a,b) [r-est, T-est]: rho ∝ x^density_exponent,
@@ -98,15 +100,14 @@ class TvnsSolution {
 
   /// Self-similar energy integrals ∫0^1 G V^2/2 x^(d-1) dx and ∫0^1 e x^(d-1) dx (e = internal energy per
   /// volume in rho0 Rdot^2) recomputed from at() by GSL QAGS in x, independent of how A was obtained;
-  /// A = 4 S_d (kinetic + internal)/(d+2)^2. Slow (thousands of at() calls): for tests and verification.
+  /// A = 4 S_d (kinetic + internal)/(d+2)^2. Thousands of at() calls (~10 ms): for tests and verification.
   struct ProfileEnergy {
     double kinetic, internal, error;
   };
   ProfileEnergy energy_from_profile(double tolerance = 1e-13) const;
 
-  struct Impl;
-
  private:
+  struct Impl;
   std::shared_ptr<const Impl> impl_;
   TvnsConfig config_;
   double gamma_ = 0.0;

@@ -21,7 +21,7 @@ struct OdeSettings {
   Eos eos = Eos::ideal;
   double phi = 0.0;           ///< ambient packing fraction (hard particles)
   double tolerance = 1e-13;   ///< absolute and relative step tolerance
-  bool check_stepper = false; ///< Dormand-Prince 5(4) instead of Runge-Kutta-Fehlberg 7(8)
+  bool check_stepper = false; ///< Dormand-Prince 5(4) instead of Bulirsch-Stoer
 };
 
 /// Result of one integration: energy integrals, cavity edge and checkpoints for profiles.
