@@ -585,8 +585,9 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     const int peak = static_cast<int>(std::max_element(n.begin(), n.end()) - n.begin());
     const double R_crossing = crossing_radius(centres, n, peak, 0.5 * (config.physics.n_inf + n[peak]), true);
     if (!std::isfinite(R_crossing) || R_crossing > 0.97 * radii[N])
-      throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) +
-                               " (raise outer_margin)");
+      throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) + ", R_ref/lambda = " +
+                               common::format_number(blast.reference_radius(t) / lambda) +
+                               " (raise outer_margin; at R/lambda <~ 1 heat conduction outruns the shock: start later)");
     sample.R = conservative_shock_radius(blast, state, peak, config.physics.n_inf);
     if (!std::isfinite(sample.R)) sample.R = R_crossing;
     sample.R_over_lambda = sample.R / lambda;
