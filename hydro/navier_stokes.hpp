@@ -1,7 +1,7 @@
 #pragma once
 // Radially symmetric compressible Navier–Stokes blast (d = 1, 2, 3) of an ideal monatomic gas with
 // hard-sphere heat conduction κ = c_κ n∞ λ √T (paper Sec. III, Eqs. (13)-(20)): measures the core
-// radius H, central density n0 and temperature T0 and their running exponents from R/λ ≈ 1 upward.
+// radius H, central density n0 and temperature T0 and their running exponents from R/λ ≈ 2 upward.
 // Numerics (docs/hydro.md): finite volumes on a grid r = ξ R_ref(t), HLLC, CVODE BDF, banded Jacobian.
 #include <functional>
 #include <optional>
