@@ -78,7 +78,7 @@ void HeapEventQueue::remove(std::int32_t id) {
 namespace {
 std::size_t bucket_count_for(std::size_t capacity) {
   std::size_t count = 1024;
-  while (count < 2 * capacity && count < (std::size_t{1} << 22)) count *= 2;
+  while (count < capacity && count < (std::size_t{1} << 22)) count *= 2;
   return count;
 }
 constexpr std::uint64_t adapt_interval = 1 << 15;
@@ -210,7 +210,11 @@ void CalendarEventQueue::advance() {
       continue;
     }
     ++current_;
-    ++advances_;
+    if (++advances_ > 64 * (pops_ + 1) && advances_ > adapt_interval) {
+      // Mostly empty buckets: widen at once rather than waiting for the next pop-count check.
+      rebuild(width_ * 64.0);
+      continue;
+    }
     if (current_ >= window_end_) {
       window_end_ = current_ + mask_ + 1;
       redistribute_overflow();  // lists are empty here: all their buckets are < current_
@@ -250,13 +254,16 @@ void CalendarEventQueue::rebuild(double new_width) {
 std::pair<double, std::int32_t> CalendarEventQueue::top() {
   assert(size_ > 0);
   if (!width_known_) {
-    // First use: a width giving about two events per bucket over the current spread of times.
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::int32_t id = overflow_; id >= 0; id = next_[id]) {
-      lo = std::min(lo, time_[id]);
-      hi = std::max(hi, time_[id]);
-    }
-    rebuild(hi > lo ? 2.0 * (hi - lo) / static_cast<double>(size_) : 1.0);
+    // First use: a width giving about target_per_bucket events per bucket among the earliest
+    // tenth of the events (robust to a few very late ones).
+    std::vector<double> times;
+    times.reserve(size_);
+    for (std::int32_t id = overflow_; id >= 0; id = next_[id]) times.push_back(time_[id]);
+    const std::size_t tenth = times.size() / 10;
+    std::nth_element(times.begin(), times.begin() + tenth, times.end());
+    const double lo = *std::min_element(times.begin(), times.begin() + tenth + 1);
+    const double span = times[tenth] - lo;
+    rebuild(span > 0.0 ? target_per_bucket * span / static_cast<double>(tenth + 1) : 1.0);
   }
   if (heap_.empty()) advance();
   return heap_.top();
