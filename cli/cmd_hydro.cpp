@@ -92,6 +92,7 @@ std::string config_header(const hydro::NavierStokesResult& r) {
        {"temperature_floor", number(c.numerics.temperature_floor)},
        {"relative_tolerance", number(c.numerics.relative_tolerance)},
        {"core_resolution", number(c.numerics.core_resolution.value_or(0))},
+       {"shock_band_fraction", number(c.numerics.shock_band_fraction.value_or(0))},
        {"outer_margin", number(c.numerics.outer_margin)},
        {"A_reference", number(r.A_reference)},
        {"max_energy_error", number(r.max_energy_error, 3)}},

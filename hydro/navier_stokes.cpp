@@ -252,7 +252,7 @@ class Blast {
 ///   φ(ξ) = 1/(ξ_c + ξ) + B + S b(ξ),
   /// logarithmic for ξ_c ≲ ξ ≲ 1/B (the core), uniform beyond, and refined by S in the band
   /// b = [0.85, 1.03] (smoothed) that holds the shock and the steep TvNS profile behind it. B gives the
-  /// uniform part as many cells as the logarithmic one; S gives the band a quarter of all cells.
+  /// uniform part as many cells as the logarithmic one; S gives the band its share of all cells.
   void build_grid(const NavierStokesConfig& config) {
     const double xi_c = *config.numerics.core_resolution;
     const double outer = margin_;
@@ -266,7 +266,8 @@ class Blast {
       cumulative_log[k] = std::log((xi_c + x1) / xi_c) + B * x1;
       cumulative_band[k] = cumulative_band[k - 1] + 0.5 * h * (band(x0) + band(x1));
     }
-    const double S = getenv("NS_NOBAND") ? 0.0 : cumulative_log[fine] / 3.0 / cumulative_band[fine];  // band: 1/4 of the cells
+    const double f = *config.numerics.shock_band_fraction;  // the band's share of the cells
+    const double S = f / (1 - f) * cumulative_log[fine] / cumulative_band[fine];
     std::vector<double> cumulative(fine + 1);
     for (int k = 0; k <= fine; ++k) cumulative[k] = cumulative_log[k] + S * cumulative_band[k];
     xi_.assign(cells_ + 1, 0.0);
@@ -446,6 +447,9 @@ void NavierStokesConfig::validate() const {
                            Bound::closed);
   common::require_integer_in_range("samples_per_decade", numerics.samples_per_decade, 4, 200);
   common::require_in_range("outer_margin", numerics.outer_margin, 1.05, 2, Bound::closed, Bound::closed);
+  if (numerics.shock_band_fraction)
+    common::require_in_range("shock_band_fraction", *numerics.shock_band_fraction, 0, 0.9, Bound::closed,
+                             Bound::closed);
   if (numerics.core_resolution)
     common::require_in_range("core_resolution", *numerics.core_resolution, 1e-6, 0.5, Bound::closed, Bound::closed);
   for (double R : numerics.profile_R_over_lambda)
@@ -494,6 +498,11 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   NavierStokesConfig config = input;
   const int d = config.physics.d;
   if (!config.numerics.core_resolution) config.numerics.core_resolution = default_core_resolution(config);
+  if (!config.numerics.shock_band_fraction) {
+    // Euler mode has no core to resolve: most cells go to the shock, whose smearing sets A's error
+    const bool euler = !config.physics.heat_conduction && !config.physics.viscosity;
+    config.numerics.shock_band_fraction = euler ? 0.75 : 0.25;
+  }
   NavierStokesResult result;
   result.config = config;
   result.kappa_prefactor =

@@ -32,6 +32,7 @@ struct NavierStokesNumerics {
   int samples_per_decade = 20;        ///< diagnostics per decade of R/λ, [4, 200]
   double outer_margin = 1.15;         ///< outer grid edge / R_ref(t), [1.05, 2]
   std::optional<double> core_resolution;  ///< ξ_c of the grid (cells ~ ξ_c + ξ near the centre); default from H/R at `until`
+  std::optional<double> shock_band_fraction;  ///< share of cells in 0.85 < r/R_ref < 1.03, [0, 0.9]; default 0.25 (Euler: 0.75)
   bool project_totals = true;         ///< restore exact mass/energy totals after each step (CVODE projection)
   std::vector<double> profile_R_over_lambda;  ///< extra profile times (R_ref/λ); the final profile is always kept
 };

@@ -146,7 +146,8 @@ TEST_CASE("Euler mode converges to the exact TvNS solution", "[slow]") {
   INFO("A errors " << coarse.A_relative_error << " -> " << fine.A_relative_error << "; L1 density "
                    << coarse.L1_density << " -> " << fine.L1_density);
   CHECK(fine.A_exact == Approx(0.3519359).epsilon(1e-6));
-  CHECK(std::abs(fine.A_relative_error) < 0.01);
+  // observed -4.2e-3 (64 cells) and -5e-4 (128); the finite-width bias at R/λ = 50 is ~+1e-3
+  CHECK(std::abs(fine.A_relative_error) < 3e-3);
   CHECK(fine.L1_density < 0.01);
   CHECK(fine.L1_pressure < 0.01);
   // errors fall with resolution at an order of at least 1/2 (measured ~1, shock-limited)
