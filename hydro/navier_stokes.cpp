@@ -596,7 +596,7 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     if (!std::isfinite(R_crossing) || R_crossing > 0.97 * radii[N])
       throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) + ", R_ref/lambda = " +
                                common::format_number(blast.reference_radius(t) / lambda) +
-                               " (raise outer_margin; at R/lambda <~ 1 heat conduction outruns the shock: start later)");
+                               " (heat conduction outruns the shock when R/lambda is ~1 or kappa is large: start later, or raise outer_margin)");
     sample.R = conservative_shock_radius(blast, state, peak, config.physics.n_inf);
     if (!std::isfinite(sample.R)) sample.R = R_crossing;
     sample.R_over_lambda = sample.R / lambda;
