@@ -1,0 +1,126 @@
+// Observables of one small blast ensemble: the impurity radial density of Eq. (39) is normalised,
+// the density profile returns to n∞ ahead of the shock and peaks in the shocked shell,
+// the moving-mass shock radius R tracks Eq. (1), snapshots and trajectories are complete.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include "md/ensemble.hpp"
+#include "md/scenes.hpp"
+#include "theory/prefactors.hpp"
+
+using namespace coldblast::md;
+namespace fs = std::filesystem;
+
+namespace {
+std::vector<std::vector<std::string>> rows(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::vector<std::vector<std::string>> out;
+  bool header = false;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (!header) {
+      header = true;
+      continue;
+    }
+    std::vector<std::string> fields;
+    std::stringstream s(line);
+    std::string f;
+    while (std::getline(s, f, ',')) fields.push_back(f);
+    out.push_back(fields);
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[slow]") {
+  const std::uint64_t seed = 4;
+  INFO("seed " << seed);
+  const BlastConfig scene = parse_scene(
+      default_scene_toml(),
+      {"t_max=400", "realizations=12", "seed=4", "A_d=0.2238", "snapshot_times=[100.0, 400.0]",
+       R"(observables=["R_imp","R","profiles","p_imp","snapshots","trajectories"])"});
+  const fs::path dir = fs::temp_directory_path() / "coldblast_test_observers";
+  fs::remove_all(dir);
+  RunOptions options;
+  options.threads = 2;
+  const BlastResult result = run_blast(scene, options);
+  write_blast_outputs(result, dir);
+
+  // p_imp: Σ p Δr over the bins is the fraction of impurities inside R(t) of Eq. (1): <= 1, and
+  // 1 at late times (they stay in the core).
+  std::map<std::string, double> total;
+  for (const auto& r : rows(dir / "p_imp.csv"))
+    total[r[0]] += std::stod(r[5]) * (std::stod(r[3]) - std::stod(r[2]));
+  REQUIRE(!total.empty());
+  for (const auto& [t, sum] : total) CHECK(sum <= 1.0 + 1e-12);
+  CHECK(std::abs(total.rbegin()->second - 1.0) < 1e-12);
+
+  // Profiles at the last time: density n∞ ahead of the shock (r/R in [1.2, 1.5)), a compressed
+  // shell behind it (peak above 1.2 n∞; the small blast's shock is smeared over ~0.2 R), a
+  // rarefied core (r/R < 0.3 below 0.6 n∞, Eq. (18a)), and outward flow in the shell.
+  const auto profile = rows(dir / "profiles.csv");
+  const std::string last = profile.back()[0];
+  double ahead = 0.0, ahead_error2 = 0.0, peak = 0.0, core = 0.0, flow = 0.0;
+  int n_ahead = 0, n_shell = 0, n_core = 0;
+  for (const auto& r : profile) {
+    if (r[0] != last) continue;
+    const double x = std::stod(r[2]);
+    if (x >= 1.2 - 1e-9) {
+      ahead += std::stod(r[4]);
+      ahead_error2 += std::pow(std::stod(r[5]), 2);
+      ++n_ahead;
+    } else if (x >= 0.6 - 1e-9 && x < 1.0 - 1e-9) {
+      peak = std::max(peak, std::stod(r[4]));
+      flow += std::stod(r[6]);
+      ++n_shell;
+    } else if (x < 0.3 - 1e-9) {
+      core += std::stod(r[4]);
+      ++n_core;
+    }
+  }
+  REQUIRE(n_ahead > 0);
+  REQUIRE(n_shell > 0);
+  CHECK(std::abs(ahead / n_ahead - 1.0) < 4.0 * std::sqrt(ahead_error2) / n_ahead + 0.02);
+  CHECK(peak > 1.2);
+  CHECK(core / n_core < 0.6);
+  CHECK(flow > 0.0);
+
+  // R from the moving mass against Eq. (1) with the hard-disc A_2(phi) given: within 10% at t = 400.
+  double R_measured = 0.0;
+  for (const auto& r : rows(dir / "observables.csv"))
+    if (r[1] == "R") R_measured = std::stod(r[2]);
+  const coldblast::theory::BlastParameters p{2, scene.n, scene.a, scene.E, 0.2238};
+  CHECK(std::abs(R_measured / coldblast::theory::shock_radius(p, 400.0) - 1.0) < 0.1);
+
+  // Snapshots: every particle once, the four impurities flagged and moving.
+  const ResolvedScene resolved = resolve_scene(scene);
+  for (const char* name : {"snapshot_100.csv", "snapshot_400.csv"}) {
+    const auto snapshot = rows(dir / name);
+    CHECK(snapshot.size() == resolved.particle_count);
+    int impurities = 0, moving = 0;
+    for (const auto& r : snapshot) {
+      impurities += r[4] == "1";
+      moving += r[3] == "1";
+      if (r[4] == "1") CHECK(r[3] == "1");
+    }
+    CHECK(impurities == 4);
+    CHECK(moving > 100);
+  }
+  // Trajectories: per impurity, times start at 0, end at t_max and never decrease.
+  std::map<std::string, std::vector<double>> times;
+  for (const auto& r : rows(dir / "trajectories.csv")) times[r[0]].push_back(std::stod(r[1]));
+  CHECK(times.size() == 4);
+  for (const auto& [id, t] : times) {
+    CHECK(t.front() == 0.0);
+    CHECK(t.back() == 400.0);
+    CHECK(std::is_sorted(t.begin(), t.end()));
+    CHECK(t.size() > 3);
+  }
+  fs::remove_all(dir);
+}
