@@ -29,7 +29,7 @@ struct HydroOptions {
 };
 
 constexpr double default_core_until = 1e4;
-constexpr double default_euler_until = 50;
+constexpr double default_euler_until = 500;
 
 std::string number(double value, int digits = 17) {
   char buffer[48];
@@ -240,7 +240,7 @@ void add_hydro_command(CLI::App& app) {
 
   auto euler_options = std::make_shared<HydroOptions>();
   CLI::App* euler = hydro->add_subcommand("euler", "kappa = mu = 0: A_d and profiles against the exact TvNS solution");
-  add_common_options(*euler, *euler_options, "Stop at R/lambda (default 50; the initial hot region has R/lambda = 0.4)");
+  add_common_options(*euler, *euler_options, "Stop at R/lambda (default 500; the initial hot region has R/lambda = 0.4)");
   euler->callback([euler_options] { run_euler(*euler_options); });
 }
 

@@ -140,19 +140,21 @@ TEST_CASE("two physical parameter sets with the same scaled values give the same
 }
 
 TEST_CASE("Euler mode converges to the exact TvNS solution", "[slow]") {
-  // κ = μ = 0; until R/λ = 50 with the hot region at R/λ = 0.4 (R/width = 125).
-  const auto coarse = hydro::compare_to_tvns(run_navier_stokes(euler_config(2, 50, 64)));
-  const auto fine = hydro::compare_to_tvns(run_navier_stokes(euler_config(2, 50, 128)));
+  // κ = μ = 0; until R/λ = 500 with the hot region at R/λ = 0.4 (R/width = 1250, so the finite-width
+  // bias of A, ~2 t0/t = 3e-5, is below the discretisation error).
+  const auto coarse = hydro::compare_to_tvns(run_navier_stokes(euler_config(2, 500, 64)));
+  const auto fine = hydro::compare_to_tvns(run_navier_stokes(euler_config(2, 500, 128)));
   INFO("A errors " << coarse.A_relative_error << " -> " << fine.A_relative_error << "; L1 density "
                    << coarse.L1_density << " -> " << fine.L1_density);
   CHECK(fine.A_exact == Approx(0.3519359).epsilon(1e-6));
-  // observed -4.2e-3 (64 cells) and -5e-4 (128); the finite-width bias at R/λ = 50 is ~+1e-3
-  CHECK(std::abs(fine.A_relative_error) < 3e-3);
+  // docs/verification.md: -3.2e-3 at 128 cells, first order (-1.3e-3 at 256, -6.9e-4 at 512)
+  CHECK(std::abs(fine.A_relative_error) < 5e-3);
   CHECK(fine.L1_density < 0.01);
+  CHECK(fine.L1_velocity < 0.01);
   CHECK(fine.L1_pressure < 0.01);
   // errors fall with resolution at an order of at least 1/2 (measured ~1, shock-limited)
-  const double order = std::log2(coarse.L1_density / fine.L1_density);
-  CHECK(order > 0.5);
+  CHECK(std::log2(coarse.A_relative_error / fine.A_relative_error) > 0.5);
+  CHECK(std::log2(coarse.L1_density / fine.L1_density) > 0.5);
   CHECK(std::log2(coarse.L1_pressure / fine.L1_pressure) > 0.5);
 }
 
