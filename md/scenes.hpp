@@ -31,7 +31,7 @@ struct BlastConfig {
   std::uint64_t seed = 1;             ///< master seed; realization i uses splitmix64(seed, i)
   int block_size = 16;                ///< realizations per block for jackknife errors (compare/)
   std::vector<std::string> observables{"R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"};
-  double box_margin = 1.25;           ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25
+  double box_margin = 3.0;            ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25 (3: safe for small blasts)
   double cell_width = 0.0;            ///< cell side (length); 0 = automatic
   std::string queue = "calendar";     ///< event calendar: "calendar" (bucketed) or "heap"
   std::vector<double> snapshot_times; ///< times of snapshot_<t>.csv (realization 0); empty = t_max/4, /2, 3/4, 1
