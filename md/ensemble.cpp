@@ -36,25 +36,28 @@ const char* units_text = "m = 1 (host mass), k_B = 1, lengths and times in the s
 common::HeaderFields scene_fields(const ResolvedScene& s) {
   return {{"scene", s.config.name},
           {"seed", std::to_string(s.config.seed)},
-          {"resolved scene (TOML, one line per key)", ""},
-          {"  ", [&] {
-             std::string t = s.config.to_toml();
-             std::string out;
-             for (const char ch : t) out += ch == '\n' ? std::string("\n#   ") : std::string(1, ch);
-             return out;
-           }()},
           {"A_d", format_number(s.A_d) + " (" + s.A_d_source + ")"},
           {"particles", std::to_string(s.particle_count)},
           {"region_radius", format_number(s.region_radius)}};
 }
 
+/// Provenance header: the standard block, the scene's derived sizes, then the resolved scene as
+/// commented TOML lines ("#   key = value").
+std::string header_for(const ResolvedScene& s, common::HeaderFields extra = {}) {
+  common::HeaderFields fields = scene_fields(s);
+  fields.insert(fields.end(), extra.begin(), extra.end());
+  std::string header = common::provenance_header(fields, units_text) + "# resolved scene (TOML):\n";
+  std::istringstream toml_lines(s.config.to_toml());
+  std::string line;
+  while (std::getline(toml_lines, line))
+    if (!line.empty()) header += "#   " + line + "\n";
+  return header;
+}
+
 template <int D, class Queue>
 std::string snapshot_csv(const ResolvedScene& scene, const Engine<D, Queue>& engine) {
   std::ostringstream out;
-  common::HeaderFields fields = scene_fields(scene);
-  fields.push_back({"realization", "0"});
-  fields.push_back({"t", format_number(engine.now())});
-  out << common::provenance_header(fields, units_text) << (D == 2 ? "id,x,y,moving,impurity\n" : "id,x,y,z,moving,impurity\n");
+  out << header_for(scene, {{"realization", "0"}, {"t", format_number(engine.now())}}) << (D == 2 ? "id,x,y,moving,impurity\n" : "id,x,y,z,moving,impurity\n");
   for (std::size_t i = 0; i < engine.size(); ++i) {
     const auto id = static_cast<std::int32_t>(i);
     const Vec<D> x = engine.position(id);
@@ -115,9 +118,7 @@ RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLa
     for (const std::int32_t id : observer.impurities()) points.push_back({engine.now(), id, engine.position(id)});
     std::stable_sort(points.begin(), points.end(), [](const auto& x, const auto& y) { return x.id < y.id; });
     std::ostringstream file;
-    common::HeaderFields fields = scene_fields(scene);
-    fields.push_back({"realization", "0"});
-    file << common::provenance_header(fields, units_text) << (D == 2 ? "id,t,x,y\n" : "id,t,x,y,z\n");
+    file << header_for(scene, {{"realization", "0"}}) << (D == 2 ? "id,t,x,y\n" : "id,t,x,y,z\n");
     for (const auto& p : points) {
       file << p.id << ',' << format_number(p.t);
       for (int k = 0; k < D; ++k) file << ',' << format_number(p.position[k]);
@@ -356,7 +357,7 @@ common::Json blast_summary(const BlastResult& result) {
 void write_blast_outputs(const BlastResult& result, const std::filesystem::path& directory) {
   const ResolvedScene& scene = result.scene;
   const ObservableLayout layout(scene);
-  const std::string header = common::provenance_header(scene_fields(scene), units_text);
+  const std::string header = header_for(scene);
   {
     std::ostringstream out;
     out << header << "t,observable,mean,stderr,count\n";
