@@ -161,11 +161,13 @@ void Engine<D, Queue>::process(std::int32_t id, double t) {
       collide(id, partner, t);
       return;
     }
+    ++stale_count_;
     particles_[id].advance(t);  // stale: the partner changed course since the prediction
     full_scan(id);
     schedule(id);
     return;
   }
+  ++crossing_count_;
   cross(id, t);
 }
 

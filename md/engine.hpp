@@ -58,6 +58,9 @@ class Engine {
   const std::vector<std::int32_t>& moving() const { return moving_; }
   std::uint64_t collision_count() const { return collision_count_; }
   std::uint64_t event_count() const { return event_count_; }
+  /// Events that were cell crossings, and collision predictions found stale when popped.
+  std::uint64_t crossing_count() const { return crossing_count_; }
+  std::uint64_t stale_count() const { return stale_count_; }
   /// Σ over collisions of r_ij·Δp_i (mass length²/time), for the collisional virial pressure.
   double virial_sum() const { return virial_sum_; }
   double kinetic_energy() const;
@@ -103,7 +106,7 @@ class Engine {
   CellList<D> cells_;
   Queue queue_;
   double now_ = 0.0;
-  std::uint64_t collision_count_ = 0, event_count_ = 0;
+  std::uint64_t collision_count_ = 0, event_count_ = 0, crossing_count_ = 0, stale_count_ = 0;
   double virial_sum_ = 0.0;
   std::vector<TrajectoryPoint<D>> trajectories_;
 };
