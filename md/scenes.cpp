@@ -162,8 +162,8 @@ const std::vector<std::string>& known_observable_names() {
 const std::string& default_scene_toml() { return default_scene; }
 
 double ideal_gas_amplitude(int d) {
-  if (d == 2) return 0.351935906;  // Eq. (3), γ = 2
-  if (d == 3) return 0.4935902;    // γ = 5/3; the paper's 0.0724 is wrong (docs/verification.md)
+  if (d == 2) return 0.351935906848599;  // Eq. (3), γ = 2 (hydro::solve_tvns, ±2.5e-14)
+  if (d == 3) return 0.493590149582568;  // γ = 5/3 (±3.7e-14); the paper's 0.0724 is wrong (docs/verification.md)
   throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
 }
 
