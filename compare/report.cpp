@@ -167,6 +167,8 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
        << ". The paper reports b = 1.75 (fit) and 1.71 (direct) at t = 4000.\n";
     if (!extra.distribution.empty()) md << "\n![p_imp collapse](figures/" << extra.distribution << ")\n";
   }
+  if (!extra.snapshot.empty())
+    md << "\n## Snapshots (paper Fig. 1)\n\n![snapshot](figures/" << extra.snapshot << ")\n";
   if (!extra.profiles.empty())
     md << "\n## Radial profiles against TvNS\n\n![profiles](figures/" << extra.profiles << ")\n";
   md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
