@@ -131,7 +131,7 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& config,
                                      const NavierStokesProgress& progress = {});
 
 /// Convenience for compare/: the conduction-only core run in scaled units (E = n∞ = λ = 1) up to
-/// R/λ = until (>= 10), default numerics; the result's exponents_at(R/λ) gives running exponents.
+/// R/λ = until (> 2, the start), default numerics; exponents_at(R/λ) then gives running exponents.
 NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells = 256);
 
 /// Euler mode (κ = μ = 0) with the same numerics, for comparison with the exact TvNS solution.
