@@ -66,6 +66,8 @@ void add_reproduce_command(CLI::App& app) {
   command->add_option("--hydro-until", options->config.hydro_until,
                       "Navier–Stokes run up to this R/lambda, [20, 1e8]; 0 = the scale's default (1e4, 1e6)")
       ->capture_default_str();
+  command->add_option("--md-run", options->config.md_run,
+                      "Use this existing `md run` directory of the paper scene instead of running the MD step");
   command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
   add_format_option(*command, options->format);
   command->callback([options] { run(*options); });

@@ -25,6 +25,7 @@ struct ReproduceConfig {
   long long realizations = 0;      ///< MD realizations; 0 = the scale's default (quick 384, paper 30000)
   double hydro_until = 0;          ///< NS run up to this R/λ; 0 = the scale's default (quick 1e4, paper 1e6)
   bool figures = true;             ///< gnuplot figures in the reports
+  std::filesystem::path md_run;    ///< an existing `md run` directory of the paper scene to use instead of step 3
   void validate() const;
 };
 
@@ -43,6 +44,10 @@ using ReproduceProgress = std::function<void(const std::string&)>;
 /// Runs every step, writing out/{tvns.json, hydro/, md/, report-theory/, report-paper/,
 /// report-hydro/, REPORT.md, summary.json}. Throws std::invalid_argument / std::runtime_error.
 ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProgress& progress = {});
+
+/// The paper's Table 1 beside coldblast's numbers (Markdown; written as table1.md and pasted into
+/// docs/verification.md).
+std::string table1_markdown(const ReproduceResult& result);
 
 /// summary.json of a reproduction (keys in docs/cli.md, `## reproduce`).
 common::Json reproduce_summary(const ReproduceResult& result);
