@@ -3,6 +3,7 @@
 // equilibrium` runs periodic hard spheres (md::run_equilibrium). Output formats: docs/md-output.md.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -26,6 +27,8 @@ struct MdRunOptions {
   long long seed = -1;
   std::string out = "md-output";
   std::string shard = "0/1";
+  std::string resume;      // --resume DIR: continue the checkpoint in DIR/checkpoint
+  bool out_given = false;  // --out on the command line (must then equal --resume)
   Format format = Format::table;
 };
 
@@ -118,10 +121,22 @@ void run_md(const MdRunOptions& o) {
   options.shard_count = shard_count;
   Progress progress;
   options.progress = [&progress](long long done, long long total) { progress(done, total); };
+  // Every finished block is checkpointed in OUT/checkpoint (removed once the outputs are written);
+  // --resume DIR continues there (DIR is the output directory).
+  std::string out = o.out;
+  if (!o.resume.empty()) {
+    if (o.out_given && std::filesystem::path(o.out).lexically_normal() != std::filesystem::path(o.resume).lexically_normal())
+      throw std::invalid_argument("--resume = " + o.resume + " must be the output directory (--out = " + o.out + ")");
+    out = o.resume;
+    options.resume = true;
+  }
+  options.checkpoint = std::filesystem::path(out) / "checkpoint";
   md::BlastResult result = md::run_blast(config, options);
   if (!A_d_source.empty()) result.scene.A_d_source = A_d_source;
-  md::write_blast_outputs(result, o.out);
-  print_summary(result, o.out, o.format);
+  md::write_blast_outputs(result, out);
+  std::error_code ignored;
+  std::filesystem::remove_all(options.checkpoint, ignored);
+  print_summary(result, out, o.format);
 }
 
 void merge_md(const MdMergeOptions& o) {
@@ -179,10 +194,14 @@ void add_md_command(CLI::App& app) {
   run_command->add_option("--realizations", run->realizations, "Number of realizations (overrides the scene)");
   run_command->add_option("--threads", run->threads, "Worker threads (results are identical for any count)")->capture_default_str();
   run_command->add_option("--seed", run->seed, "Master seed (overrides the scene; >= 0)");
-  run_command->add_option("--out", run->out, "Output directory")->capture_default_str();
+  CLI::Option* out_option = run_command->add_option("--out", run->out, "Output directory (finished blocks are checkpointed in OUT/checkpoint until the run ends)")->capture_default_str();
   run_command->add_option("--shard", run->shard, "Run only blocks i, i+n, ... of the ensemble: i/n")->capture_default_str();
+  run_command->add_option("--resume", run->resume, "Continue a killed run in output directory DIR: load its checkpoint (same scene required) and run only the missing blocks");
   add_format_option(*run_command, run->format);
-  run_command->callback([run] { run_md(*run); });
+  run_command->callback([run, out_option] {
+    run->out_given = out_option->count() > 0;
+    run_md(*run);
+  });
 
   auto merge = std::make_shared<MdMergeOptions>();
   CLI::App* merge_command = md->add_subcommand("merge", "Combine the output directories of shards exactly");

@@ -14,6 +14,7 @@
 #include <toml++/toml.h>
 
 #include "common/validate.hpp"
+#include "md/checkpoint.hpp"
 #include "md/engine.hpp"
 #include "md/initial_state.hpp"
 #include "md/observers.hpp"
@@ -220,6 +221,34 @@ std::pair<int, int> parse_shard(const std::string& text) {
   return {i, n};
 }
 
+long long block_realizations(const BlastConfig& config, long long block) {
+  const long long R = config.realizations, B = config.block_size;
+  return std::max(0LL, std::min(R, (block + 1) * B) - block * B);
+}
+
+BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* realization0_files,
+                    const std::function<void()>& realization_done, const std::atomic<bool>* stop) {
+  const ObservableLayout layout(scene);
+  const long long B = scene.config.block_size;
+  BlockSums s;
+  s.sum.assign(layout.size(), 0.0);
+  s.sum_squares.assign(layout.size(), 0.0);
+  for (long long r = block * B; r < block * B + block_realizations(scene.config, block); ++r) {
+    if (stop && *stop) break;
+    RealizationOutput out = dispatch(scene, layout, r);
+    for (std::size_t e = 0; e < out.record.size(); ++e) {
+      s.sum[e] += out.record[e];
+      s.sum_squares[e] += out.record[e] * out.record[e];
+    }
+    ++s.count;
+    s.collisions += out.collisions;
+    s.energy_error_max = std::max(s.energy_error_max, out.energy_error);
+    if (r == 0 && realization0_files) *realization0_files = std::move(out.files);
+    if (realization_done) realization_done();
+  }
+  return s;
+}
+
 BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
   common::require_integer_in_range("threads", options.threads, 1, 1024);
   common::require_integer_in_range("shard_count", options.shard_count, 1, 1000000);
@@ -231,13 +260,22 @@ BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
   result.shard_index = options.shard_index;
   result.shard_count = options.shard_count;
   const ResolvedScene& scene = result.scene;
-  const ObservableLayout layout(scene);
-  const long long R = config.realizations, B = config.block_size;
-  const long long block_count = (R + B - 1) / B;
-  std::vector<long long> owned;
-  for (long long b = options.shard_index; b < block_count; b += options.shard_count) owned.push_back(b);
+  const long long block_count = (config.realizations + config.block_size - 1) / config.block_size;
+  if (!options.checkpoint.empty()) {
+    if (options.resume) {
+      Checkpoint saved = load_checkpoint(options.checkpoint, scene);
+      for (auto& [b, s] : saved.blocks)
+        if (b % options.shard_count == options.shard_index) result.blocks[b] = std::move(s);
+      if (result.blocks.count(0)) result.realization0_files = std::move(saved.realization0_files);
+    } else {
+      start_checkpoint(options.checkpoint, scene);
+    }
+  }
+  std::vector<long long> owned;  // blocks still to run
+  for (long long b = options.shard_index; b < block_count; b += options.shard_count)
+    if (!result.blocks.count(b)) owned.push_back(b);
   long long total = 0;
-  for (const long long b : owned) total += std::min(R, (b + 1) * B) - b * B;
+  for (const long long b : owned) total += block_realizations(config, b);
 
   std::vector<BlockSums> sums(owned.size());
   std::atomic<std::size_t> next{0};
@@ -245,33 +283,29 @@ BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
   std::exception_ptr error;
   std::mutex mutex;
   long long done = 0;
+  const auto realization_done = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (options.progress) options.progress(done, total);
+  };
   auto worker = [&] {
     while (!failed) {
       const std::size_t slot = next++;
       if (slot >= owned.size()) return;
-      const long long b = owned[slot];
-      BlockSums& s = sums[slot];
-      s.sum.assign(layout.size(), 0.0);
-      s.sum_squares.assign(layout.size(), 0.0);
-      for (long long r = b * B; r < std::min(R, (b + 1) * B) && !failed; ++r) {
-        try {
-          RealizationOutput out = dispatch(scene, layout, r);
-          for (std::size_t e = 0; e < out.record.size(); ++e) {
-            s.sum[e] += out.record[e];
-            s.sum_squares[e] += out.record[e] * out.record[e];
-          }
-          ++s.count;
-          s.collisions += out.collisions;
-          s.energy_error_max = std::max(s.energy_error_max, out.energy_error);
+      try {
+        NamedFiles files;
+        sums[slot] = run_block(scene, owned[slot], &files, realization_done, &failed);
+        if (failed) return;
+        if (!options.checkpoint.empty())
+          save_checkpoint_block(options.checkpoint, owned[slot], sums[slot], owned[slot] == 0 ? &files : nullptr);
+        if (owned[slot] == 0) {
           std::lock_guard<std::mutex> lock(mutex);
-          if (r == 0) result.realization0_files = std::move(out.files);
-          ++done;
-          if (options.progress) options.progress(done, total);
-        } catch (...) {
-          std::lock_guard<std::mutex> lock(mutex);
-          if (!error) error = std::current_exception();
-          failed = true;
+          result.realization0_files = std::move(files);
         }
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
       }
     }
   };
@@ -347,8 +381,10 @@ common::Json blast_summary(const BlastResult& result) {
   j["recording_times"] = s.times.size();
   j["block_size"] = c.block_size;
   j["blocks"] = result.blocks.size();
-  j["seconds_per_realization"] = result.realizations() > 0 ? result.wall_seconds * result.threads / result.realizations() : 0.0;
+  j["seconds_per_realization"] =
+      result.realizations() > 0 ? result.wall_seconds * result.threads * result.ranks / result.realizations() : 0.0;
   j["threads"] = result.threads;
+  j["ranks"] = result.ranks;
   j["shard"] = std::to_string(result.shard_index) + "/" + std::to_string(result.shard_count);
   j["scene_toml"] = c.to_toml();
   return j;

@@ -4,6 +4,7 @@
 // in index order by one worker and totalled in block order, so every number is bit-identical for
 // any thread count and sharding. Outputs (observables.csv, blocks.csv, summary.json, ...) are
 // described in docs/md-output.md.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -24,7 +25,16 @@ struct RunOptions {
   int shard_count = 1;    ///< number of shards, >= 1
   /// Called after each realization with (done, total); may be empty. Called under a lock.
   std::function<void(long long, long long)> progress;
+  /// Folder where every finished block is saved at once (md/checkpoint.hpp); empty = no checkpoint.
+  /// A fresh run clears the folder's old blocks.
+  std::filesystem::path checkpoint;
+  /// Load the blocks already saved in `checkpoint` (same resolved scene required, else
+  /// std::invalid_argument naming --resume) and run only the missing ones.
+  bool resume = false;
 };
+
+/// Extra files of realization 0 (snapshot_<t>.csv, trajectories.csv): name → content.
+using NamedFiles = std::vector<std::pair<std::string, std::string>>;
 
 /// Sums over the realizations of one block.
 struct BlockSums {
@@ -40,8 +50,9 @@ struct BlastResult {
   std::map<long long, BlockSums> blocks;  ///< by block index
   double wall_seconds = 0.0;
   int threads = 1, shard_index = 0, shard_count = 1;
+  int ranks = 1;  ///< MPI ranks that ran the ensemble (md/mpi_ensemble.hpp), each with `threads` threads
   /// Extra files of realization 0 (snapshot_<t>.csv, trajectories.csv): name → content.
-  std::vector<std::pair<std::string, std::string>> realization0_files;
+  NamedFiles realization0_files;
 
   long long realizations() const;
   std::uint64_t collisions() const;
@@ -59,6 +70,14 @@ struct ObservableEstimate {
 /// Runs the realizations of `config` owned by this shard. Throws std::invalid_argument for bad
 /// options/scene and std::runtime_error when a realization fails (e.g. the guard trips).
 BlastResult run_blast(const BlastConfig& config, const RunOptions& options = {});
+/// Realizations in block `block` (the last block may be short).
+long long block_realizations(const BlastConfig& config, long long block);
+/// Runs the realizations of one block in index order on the calling thread: the unit of work of
+/// threads, shards and MPI ranks. Fills `realization0_files` (if given) when the block holds
+/// realization 0; calls `realization_done` after each realization; stops early when `*stop` becomes
+/// true (the partial sums must then be discarded). Throws like run_blast.
+BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* realization0_files = nullptr,
+                    const std::function<void()>& realization_done = {}, const std::atomic<bool>* stop = nullptr);
 /// The ensemble estimates (mean, standard error) of the scalar observables, in output order.
 std::vector<ObservableEstimate> estimate_observables(const BlastResult& result);
 /// Writes every output file into `directory` (atomically, file by file).

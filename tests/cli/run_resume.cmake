@@ -1,0 +1,61 @@
+# Kill-and-resume: a run killed midway (execute_process TIMEOUT kills the child) leaves some but not
+# all blocks in OUT/checkpoint; `--resume OUT` runs only the missing realizations and ends with
+# files identical to an uninterrupted run's (apart from the "# command:" line). A resume with a
+# different scene exits 2 naming the differing key.
+# Usage: cmake -DBINARY=... -DWORK=dir -P run_resume.cmake
+set(realizations 200)
+set(block_size 2)
+math(EXPR block_count "${realizations} / ${block_size}")
+set(scene --set t_max=200 --realizations ${realizations} --set block_size=${block_size})
+file(REMOVE_RECURSE ${WORK})
+
+execute_process(COMMAND ${BINARY} md run ${scene} --threads 2 --out ${WORK}/reference
+                RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "reference run failed (${code}):\n${err}")
+endif()
+if(EXISTS ${WORK}/reference/checkpoint)
+  message(FATAL_ERROR "a finished run left its checkpoint behind")
+endif()
+
+# Kill after 1 s; a loaded machine may not have finished a block yet, so wait longer then.
+foreach(seconds 1 2 4 8)
+  execute_process(COMMAND ${BINARY} md run ${scene} --threads 2 --out ${WORK}/killed
+                  TIMEOUT ${seconds} RESULT_VARIABLE code OUTPUT_QUIET ERROR_QUIET)
+  file(GLOB saved ${WORK}/killed/checkpoint/block_*.txt)
+  list(LENGTH saved saved_count)
+  message(STATUS "killed after ${seconds} s (${code}): ${saved_count} of ${block_count} blocks saved")
+  if(saved_count GREATER 0)
+    break()
+  endif()
+endforeach()
+if(saved_count EQUAL 0 OR NOT saved_count LESS block_count OR EXISTS ${WORK}/killed/observables.csv)
+  message(FATAL_ERROR "expected an interrupted run with some but not all of ${block_count} blocks saved, "
+                      "found ${saved_count} (exit ${code})")
+endif()
+
+execute_process(COMMAND ${BINARY} md run ${scene} --set t_max=100 --resume ${WORK}/killed
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 2 OR NOT err MATCHES "--resume: .*different scene: t_max = 200 there, 100 now")
+  message(FATAL_ERROR "resume with another t_max: exit ${code}, expected 2 naming t_max\n${out}${err}")
+endif()
+
+execute_process(COMMAND ${BINARY} md run ${scene} --threads 2 --resume ${WORK}/killed
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "resume failed (${code}):\n${out}\n${err}")
+endif()
+math(EXPR missing "${realizations} - ${saved_count} * ${block_size}")
+if(NOT err MATCHES "md run: ${missing}/${missing} realizations")
+  message(FATAL_ERROR "the resumed run should have run ${missing} realizations:\n${err}")
+endif()
+foreach(file observables.csv blocks.csv accumulators.csv block_totals.csv)
+  foreach(dir reference killed)
+    file(STRINGS ${WORK}/${dir}/${file} lines_${dir})
+    list(FILTER lines_${dir} EXCLUDE REGEX "^# command: ")
+  endforeach()
+  if(NOT lines_reference STREQUAL lines_killed)
+    message(FATAL_ERROR "${file} of the resumed run differs from the uninterrupted run's")
+  endif()
+endforeach()
+message(STATUS "resumed ${missing} of ${realizations} realizations; outputs identical")
