@@ -274,8 +274,8 @@ class Blast {
     for (int j = 1; j < cells_; ++j) {
       const double target = cumulative[fine] * j / cells_;
       const auto k = std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin();
-      const double f = (target - cumulative[k - 1]) / (cumulative[k] - cumulative[k - 1]);
-      xi_[j] = (k - 1 + f) * h;
+      const double weight = (target - cumulative[k - 1]) / (cumulative[k] - cumulative[k - 1]);
+      xi_[j] = (k - 1 + weight) * h;
     }
     xi_[cells_] = outer;
   }
