@@ -95,28 +95,6 @@ std::int32_t CellList<D>::cell_of(const Vec<D>& x) const {
 }
 
 template <int D>
-std::array<std::int32_t, D> CellList<D>::coordinates(std::int32_t cell) const {
-  std::array<std::int32_t, D> c;
-  for (int k = D - 1; k >= 1; --k) {
-    // cell / stride by a multiplication and one correction step (an integer division is slow).
-    std::int32_t q = static_cast<std::int32_t>(cell * inverse_stride_[k]);
-    if (q * stride_[k] > cell) --q;
-    else if ((q + 1) * stride_[k] <= cell) ++q;
-    c[k] = q;
-    cell -= q * stride_[k];
-  }
-  c[0] = cell;
-  return c;
-}
-
-template <int D>
-std::int32_t CellList<D>::index(const std::array<std::int32_t, D>& c) const {
-  std::int32_t cell = 0;
-  for (int k = 0; k < D; ++k) cell += c[k] * stride_[k];
-  return cell;
-}
-
-template <int D>
 void CellList<D>::remove(std::int32_t id, std::int32_t cell) {
   std::int32_t* link = &head_[cell];
   while (*link != id) {

@@ -29,8 +29,26 @@ class CellList {
 
   /// Cell containing position x (clamped to the grid).
   std::int32_t cell_of(const Vec<D>& x) const;
-  std::array<std::int32_t, D> coordinates(std::int32_t cell) const;
-  std::int32_t index(const std::array<std::int32_t, D>& c) const;
+  std::array<std::int32_t, D> coordinates(std::int32_t cell) const {
+    std::array<std::int32_t, D> c;
+    for (int k = D - 1; k >= 1; --k) {
+      // cell / stride by a multiplication and one correction step (an integer division is slow).
+      std::int32_t q = static_cast<std::int32_t>(cell * inverse_stride_[k]);
+      if (q * stride_[k] > cell) --q;
+      else if ((q + 1) * stride_[k] <= cell) ++q;
+      c[k] = q;
+      cell -= q * stride_[k];
+    }
+    c[0] = cell;
+    return c;
+  }
+  std::int32_t index(const std::array<std::int32_t, D>& c) const {
+    std::int32_t cell = 0;
+    for (int k = 0; k < D; ++k) cell += c[k] * stride_[k];
+    return cell;
+  }
+  /// Index distance between adjacent cells along axis k (no wrap).
+  std::int32_t stride(int k) const { return stride_[k]; }
 
   void insert(std::int32_t id, std::int32_t cell) {
     next_[id] = head_[cell];
@@ -39,6 +57,16 @@ class CellList {
   void remove(std::int32_t id, std::int32_t cell);
   std::int32_t first(std::int32_t cell) const { return head_[cell]; }
   std::int32_t next(std::int32_t id) const { return next_[id]; }
+
+  /// True if a neighbour of `cell` lies across a periodic face (needs an image shift).
+  bool wraps(std::int32_t cell) const { return periodic_ && boundary_[cell]; }
+  /// Index offsets of the 3^D cells around a cell that does not wrap (itself included), in the
+  /// order for_each_neighbour_cell visits them.
+  const std::vector<std::int32_t>& neighbour_deltas() const { return neighbour_delta_; }
+  /// Index offsets of the 3^(D-1) newly adjacent cells after a move along `axis` in `direction`.
+  const std::vector<std::int32_t>& slab_deltas(int axis, int direction) const {
+    return slab_delta_[axis][direction > 0 ? 1 : 0];
+  }
 
   /// Calls f(cell, shift) for the 3^D cells around `cell` (itself included); `shift` is the
   /// periodic image offset to add to a neighbour's position (zero in an open grid).

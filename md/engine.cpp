@@ -32,6 +32,7 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       predictions_(state.size()),
       species_(state.species),
       moving_flag_(state.size(), 0),
+      crossing_(state.size(), 0),
       radius_{state.host.radius, state.impurity.radius},
       mass_{state.host.mass, state.impurity.mass},
       cells_(make_cells(config, choose_width(config, state), state.size())),
@@ -62,6 +63,9 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
     p.cell = cells_.cell_of(p.position);
     cells_.insert(static_cast<std::int32_t>(i), p.cell);
   }
+  std::size_t initially_moving = 0;
+  for (const Vec<D>& v : state.velocity) initially_moving += v.squaredNorm() > 0.0;
+  moving_.reserve(initially_moving);  // exact in equilibrium (all move); the blast grows it
   for (std::size_t i = 0; i < state.size(); ++i)
     if (particles_[i].velocity.squaredNorm() > 0.0) start_moving(static_cast<std::int32_t>(i));
   for (const std::int32_t id : moving_) {
@@ -79,8 +83,7 @@ void Engine<D, Queue>::start_moving(std::int32_t id) {
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::check_guard(std::int32_t id) const {
-  if (config_.periodic || particles_[id].position_at(now_).squaredNorm() <= guard_trigger2_) return;
+void Engine<D, Queue>::guard_tripped() const {
   std::ostringstream message;
   message << "a moving particle came within " << 2.0 * (2.0 * radius_[host_species])
           << " (2 sigma) of the edge of the simulated region (radius " << config_.region_radius << ") at t = " << now_
@@ -112,21 +115,52 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, int& axis, int& dir
 template <int D, class Queue>
 void Engine<D, Queue>::scan_cell(std::int32_t id, std::int32_t cell, const Vec<D>& shift) {
   const Particle<D>& p = particles_[id];
-  Prediction& best = predictions_[id];
+  const Vec<D> position = p.position, velocity = p.velocity;
+  const double time = p.time;
+  Prediction best = predictions_[id];
   const double* sigma_row = sigma_[species_[id]];
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
     if (j == id) continue;
     const Particle<D>& q = particles_[j];
-    const Vec<D> dr = q.position + q.velocity * (p.time - q.time) + shift - p.position;
+    const Vec<D> dr = q.position + q.velocity * (time - q.time) + shift - position;
     const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
-    const double tau = contact_time<D>(dr, q.velocity - p.velocity, sigma);
-    const double t = p.time + tau;
+    const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
+    const double t = time + tau;
     if (t < best.time) {
       best.time = t;
       best.partner = j;
       best.partner_collisions = q.collisions;
     }
   }
+  predictions_[id] = best;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first,
+                                  const std::int32_t* last) {
+  // Same arithmetic and visiting order as scan_cell with a zero shift, with the particle's data
+  // and its best prediction kept in registers across the cells.
+  const Particle<D>& p = particles_[id];
+  const Vec<D> position = p.position, velocity = p.velocity;
+  const double time = p.time;
+  Prediction best = predictions_[id];
+  const double* sigma_row = sigma_[species_[id]];
+  for (; first != last; ++first) {
+    for (std::int32_t j = cells_.first(base + *first); j >= 0; j = cells_.next(j)) {
+      if (j == id) continue;
+      const Particle<D>& q = particles_[j];
+      const Vec<D> dr = q.position + q.velocity * (time - q.time) - position;
+      const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
+      const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
+      const double t = time + tau;
+      if (t < best.time) {
+        best.time = t;
+        best.partner = j;
+        best.partner_collisions = q.collisions;
+      }
+    }
+  }
+  predictions_[id] = best;
 }
 
 template <int D, class Queue>
@@ -134,17 +168,21 @@ void Engine<D, Queue>::full_scan(std::int32_t id) {
   Prediction& p = predictions_[id];
   p.time = never;
   p.partner = -1;
-  cells_.for_each_neighbour_cell(particles_[id].cell,
-                                 [&](std::int32_t cell, const Vec<D>& shift) { scan_cell(id, cell, shift); });
+  const std::int32_t cell = particles_[id].cell;
+  if (!cells_.wraps(cell)) {
+    const auto& deltas = cells_.neighbour_deltas();
+    scan_cells(id, cell, deltas.data(), deltas.data() + deltas.size());
+    return;
+  }
+  cells_.for_each_neighbour_cell(cell, [&](std::int32_t c, const Vec<D>& shift) { scan_cell(id, c, shift); });
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::schedule(std::int32_t id) {
   int axis, direction;
   const double crossing = crossing_time(particles_[id], axis, direction);
-  Prediction& p = predictions_[id];
-  p.crossing_axis = static_cast<std::int8_t>(axis);
-  p.crossing_direction = static_cast<std::int8_t>(direction);
+  crossing_[id] = static_cast<std::uint8_t>(axis < 0 ? 0 : 2 * axis + (direction > 0 ? 1 : 0));
+  const Prediction& p = predictions_[id];
   const double t = std::min(crossing, p.time);
   if (t == never) queue_.remove(id);
   else queue_.set(id, t);
@@ -209,11 +247,12 @@ void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
 template <int D, class Queue>
 void Engine<D, Queue>::cross(std::int32_t id, double t) {
   Particle<D>& p = particles_[id];
-  const int axis = predictions_[id].crossing_axis, direction = predictions_[id].crossing_direction;
+  const int axis = crossing_[id] >> 1, direction = (crossing_[id] & 1) ? 1 : -1;
   p.advance(t);
-  auto c = cells_.coordinates(p.cell);
-  c[axis] += direction;
+  std::int32_t cell = p.cell + direction * cells_.stride(axis);  // open grid: never at its edge (guard)
   if (config_.periodic) {
+    auto c = cells_.coordinates(p.cell);
+    c[axis] += direction;
     if (c[axis] < 0) {
       c[axis] += cells_.count(axis);
       p.position[axis] += config_.box[axis];
@@ -221,15 +260,19 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
       c[axis] = 0;
       p.position[axis] -= config_.box[axis];
     }
+    cell = cells_.index(c);
   }
   cells_.remove(id, p.cell);
-  p.cell = cells_.index(c);
+  p.cell = cell;
   cells_.insert(id, p.cell);
   check_guard(id);
   if (config_.overlap_check) check_overlaps_of(id);
   Prediction& prediction = predictions_[id];
   if (prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions) {
     full_scan(id);
+  } else if (!cells_.wraps(p.cell)) {
+    const auto& deltas = cells_.slab_deltas(axis, direction);
+    scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size());
   } else {
     cells_.for_each_new_neighbour_cell(p.cell, axis, direction,
                                        [&](std::int32_t cell, const Vec<D>& shift) { scan_cell(id, cell, shift); });
@@ -315,7 +358,7 @@ void Engine<D, Queue>::check_all_overlaps(double tolerance) const {
 template <int D, class Queue>
 std::size_t Engine<D, Queue>::bytes() const {
   return particles_.capacity() * sizeof(Particle<D>) + predictions_.capacity() * sizeof(Prediction) +
-         species_.capacity() + moving_flag_.capacity() + moving_.capacity() * 4 + cells_.bytes() + queue_.bytes();
+         species_.capacity() + moving_flag_.capacity() + crossing_.capacity() + moving_.capacity() * 4 + cells_.bytes() + queue_.bytes();
 }
 
 template class Engine<2, HeapEventQueue>;

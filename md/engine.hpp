@@ -77,21 +77,26 @@ class Engine {
   std::size_t bytes() const;
 
  private:
+  // 16 bytes; the scheduled cell crossing lives in crossing_ (one byte) to stay within the memory budget.
   struct Prediction {
     double time = never;              // earliest predicted collision
     std::int32_t partner = -1;        // its partner
     std::uint32_t partner_collisions = 0;  // partner's counter when predicted
-    std::int8_t crossing_axis = -1, crossing_direction = 0;  // of the scheduled cell crossing
   };
   void process(std::int32_t id, double t);
   void collide(std::int32_t i, std::int32_t j, double t);
   void cross(std::int32_t id, double t);
   void scan_cell(std::int32_t id, std::int32_t cell, const Vec<D>& shift);
+  // Scans the unwrapped cells base + delta for delta in [first, last) (no periodic image shift).
+  void scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first, const std::int32_t* last);
   void full_scan(std::int32_t id);
   void schedule(std::int32_t id);
   double crossing_time(const Particle<D>& p, int& axis, int& direction) const;
   void start_moving(std::int32_t id);
-  void check_guard(std::int32_t id) const;
+  void check_guard(std::int32_t id) const {
+    if (!config_.periodic && particles_[id].position_at(now_).squaredNorm() > guard_trigger2_) guard_tripped();
+  }
+  [[noreturn]] void guard_tripped() const;
   void check_overlaps_of(std::int32_t id) const;
   Vec<D> separation(std::int32_t i, std::int32_t j) const;  // r_j - r_i at now_, minimum image
 
@@ -99,10 +104,11 @@ class Engine {
   std::vector<Particle<D>> particles_;
   std::vector<Prediction> predictions_;
   std::vector<std::uint8_t> species_, moving_flag_;
+  std::vector<std::uint8_t> crossing_;  // scheduled cell crossing: 2 axis + (direction > 0)
   std::vector<std::int32_t> moving_;
   double radius_[2], mass_[2], sigma_[2][2];
-  bool same_radius_ = true;
-  double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run  // host and impurity radii equal: the contact distance needs no species lookup
+  bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
+  double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run
   CellList<D> cells_;
   Queue queue_;
   double now_ = 0.0;

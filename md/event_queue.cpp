@@ -81,7 +81,6 @@ std::size_t bucket_count_for(std::size_t capacity) {
   while (count < capacity && count < (std::size_t{1} << 22)) count *= 2;
   return count;
 }
-constexpr std::uint64_t adapt_interval = 1 << 15;
 constexpr double target_per_bucket = 4.0;  // events popped per bucket visited
 }  // namespace
 
@@ -251,7 +250,7 @@ void CalendarEventQueue::rebuild(double new_width) {
   pops_ = advances_ = 0;
 }
 
-std::pair<double, std::int32_t> CalendarEventQueue::top() {
+std::pair<double, std::int32_t> CalendarEventQueue::top_slow() {
   assert(size_ > 0);
   if (!width_known_) {
     // First use: a width giving about target_per_bucket events per bucket among the earliest
@@ -269,18 +268,12 @@ std::pair<double, std::int32_t> CalendarEventQueue::top() {
   return heap_.top();
 }
 
-void CalendarEventQueue::pop() {
-  const std::int32_t id = top().second;
-  heap_.pop();
-  where_[id] = absent;
-  --size_;
-  if (++pops_ == adapt_interval) {
-    // Events per bucket visited; keep it within [1/4, 8] (target 2) by rescaling the width.
-    const double ratio = static_cast<double>(pops_) / static_cast<double>(std::max<std::uint64_t>(advances_, 1));
-    if (ratio > 4.0 * target_per_bucket || ratio < 0.125 * target_per_bucket)
-      rebuild(width_ * std::clamp(target_per_bucket / ratio, 1.0 / 64.0, 64.0));
-    else pops_ = advances_ = 0;
-  }
+void CalendarEventQueue::adapt() {
+  // Events per bucket visited; keep it within [1/2, 16] (target 4) by rescaling the width.
+  const double ratio = static_cast<double>(pops_) / static_cast<double>(std::max<std::uint64_t>(advances_, 1));
+  if (ratio > 4.0 * target_per_bucket || ratio < 0.125 * target_per_bucket)
+    rebuild(width_ * std::clamp(target_per_bucket / ratio, 1.0 / 64.0, 64.0));
+  else pops_ = advances_ = 0;
 }
 
 }  // namespace coldblast::md

@@ -58,12 +58,24 @@ class CalendarEventQueue {
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
   /// Earliest event (time, id); the queue must not be empty (not const: it may advance buckets).
-  std::pair<double, std::int32_t> top();
-  void pop();
+  std::pair<double, std::int32_t> top() {
+    if (!heap_.empty()) return heap_.top();  // the fast path of every event
+    return top_slow();
+  }
+  void pop() {
+    const std::int32_t id = top().second;
+    heap_.pop();
+    where_[id] = absent;
+    --size_;
+    if (++pops_ == adapt_interval) adapt();
+  }
   void clear();
   std::size_t bytes() const;
 
  private:
+  static constexpr std::uint64_t adapt_interval = 1 << 15;
+  std::pair<double, std::int32_t> top_slow();
+  void adapt();
   static constexpr std::int32_t absent = -3, in_heap = -1, in_overflow = -2;
   void insert(std::int32_t id, double time);
   void unlink(std::int32_t id);
