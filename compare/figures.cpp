@@ -9,6 +9,7 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/report.hpp"
+#include "hydro/navier_stokes.hpp"
 #include "hydro/tvns.hpp"
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
@@ -167,17 +168,37 @@ std::string profile_figure(const RunData& run, const fs::path& folder) {
     dense_data << "1.0 1.0 0 0\n1.5 1.0 0 0\n";
     common::write_file_atomic(folder / "profiles_tvns_phi.dat", dense_data.str());
   }
+  // The Navier–Stokes blast (heat conduction, Chapman–Enskog κ, ideal gas) at the MD's own R/λ.
+  bool have_ns = false;
+  const double x_md = R / run.summary["lambda"].get<double>();
+  if (x_md > 4.0) {
+    const hydro::NavierStokesResult ns = hydro::run_hydro_core(run.d, x_md, 256);
+    const hydro::NavierStokesProfile& profile = ns.profiles.back();
+    const double ns_Rdot = 2.0 * profile.R / ((run.d + 2) * profile.t);
+    std::ostringstream ns_data;
+    ns_data.precision(10);
+    for (std::size_t i = 0; i < profile.r.size(); ++i)
+      ns_data << profile.r_over_R[i] << ' ' << profile.density[i] << ' ' << profile.velocity[i] / ns_Rdot << ' '
+              << profile.temperature[i] / (ns_Rdot * ns_Rdot) << '\n';
+    common::write_file_atomic(folder / "profiles_ns.dat", ns_data.str());
+    have_ns = true;
+  }
   const std::string eos_name = run.d == 2 ? "Henderson" : "Carnahan-Starling";
   const auto dense_curve = [&](int column) {
-    return dense ? ", 'profiles_tvns_phi.dat' u 1:" + std::to_string(column) + " w l lw 2 dt 2 t 'TvNS, " + eos_name +
-                       " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000) + "'"
-                 : std::string();
+    std::string curves;
+    if (dense)
+      curves += ", 'profiles_tvns_phi.dat' u 1:" + std::to_string(column) + " w l lw 2 dt 2 t 'TvNS, " + eos_name +
+                " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000) + "'";
+    if (have_ns)
+      curves += ", 'profiles_ns.dat' u 1:" + std::to_string(column) + " w l lw 2 dt 4 lc rgb 'black' t 'Navier-Stokes, R/{/Symbol l} = " +
+                common::format_number(std::round(x_md * 10) / 10) + "'";
+    return curves;
   };
   common::write_file_atomic(folder / "profiles_md.dat", md_data.str());
   common::write_file_atomic(folder / "profiles_tvns.dat", exact_data.str());
   std::ostringstream script;
   script << "set terminal pngcairo size 1500,460 font 'Sans,11'\nset output 'profiles.png'\nset multiplot layout 1,3 title "
-         << "'MD radial profiles at t = " << common::format_number(t_last) << " against the exact TvNS solution'\n"
+         << "'MD radial profiles at t = " << common::format_number(t_last) << " against the exact TvNS solution and the Navier-Stokes blast'\n"
          << "set xlabel 'r/R'\nset xrange [0:1.5]\nset key top left Left reverse font ',10'\n"
          << "set ylabel 'n/n_{/Symbol \\245}'\nplot 'profiles_md.dat' u 1:2 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:2 w l lw 2 t 'TvNS, ideal'" << dense_curve(2) << "\n"
          << "set ylabel 'u/(dR/dt)'\nplot 'profiles_md.dat' u 1:3 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:3 w l lw 2 t 'TvNS, ideal'" << dense_curve(3) << "\n"
