@@ -14,6 +14,9 @@
 #include "md/ensemble.hpp"
 #include "md/equilibrium.hpp"
 #include "md/scenes.hpp"
+#if COLDBLAST_HAVE_MPI
+#include "md/mpi_ensemble.hpp"
+#endif
 
 namespace coldblast::cli {
 
@@ -131,7 +134,14 @@ void run_md(const MdRunOptions& o) {
     options.resume = true;
   }
   options.checkpoint = std::filesystem::path(out) / "checkpoint";
+#if COLDBLAST_HAVE_MPI
+  // Under mpirun: blocks spread over ranks; rank 0 alone reports progress and writes the outputs.
+  if (md::MpiSession::rank() != 0) options.progress = nullptr;
+  md::BlastResult result = md::run_blast_mpi(config, options);
+  if (md::MpiSession::rank() != 0) return;
+#else
   md::BlastResult result = md::run_blast(config, options);
+#endif
   if (!A_d_source.empty()) result.scene.A_d_source = A_d_source;
   md::write_blast_outputs(result, out);
   std::error_code ignored;

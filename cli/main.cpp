@@ -9,6 +9,9 @@
 
 #include "cli/commands.hpp"
 #include "coldblast/build_info.hpp"
+#if COLDBLAST_HAVE_MPI
+#include "md/mpi_ensemble.hpp"
+#endif
 
 namespace coldblast::cli {
 void print_json(const common::Json& document) { std::cout << document.dump(2) << '\n'; }
@@ -16,6 +19,12 @@ void print_json(const common::Json& document) { std::cout << document.dump(2) <<
 
 int main(int argc, char** argv) {
   using namespace coldblast;
+#if COLDBLAST_HAVE_MPI
+  md::MpiSession mpi(argc, argv);  // under mpirun/srun only; an error on any rank ends all ranks
+  const auto failure = [](int code) { return md::MpiSession::end_all_ranks(code); };
+#else
+  const auto failure = [](int code) { return code; };
+#endif
   gsl_set_error_handler_off();  // GSL aborts by default; every status is checked instead
   common::set_command_line(argc, argv);
 
@@ -43,13 +52,13 @@ int main(int argc, char** argv) {
     return status.code;
   } catch (const CLI::ParseError& e) {
     std::cerr << "coldblast: error: " << e.what() << "\n(run with --help for the options)\n";
-    return 2;
+    return failure(2);
   } catch (const std::invalid_argument& e) {
     std::cerr << "coldblast: error: " << e.what() << '\n';
-    return 2;
+    return failure(2);
   } catch (const std::exception& e) {
     std::cerr << "coldblast: failed: " << e.what() << '\n';
-    return 1;
+    return failure(1);
   }
   return 0;
 }

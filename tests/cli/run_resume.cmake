@@ -2,7 +2,8 @@
 # all blocks in OUT/checkpoint; `--resume OUT` runs only the missing realizations and ends with
 # files identical to an uninterrupted run's (apart from the "# command:" line). A resume with a
 # different scene exits 2 naming the differing key.
-# Usage: cmake -DBINARY=... -DWORK=dir -P run_resume.cmake
+# With -DMPIEXEC="mpirun;...;-np;2" the resume runs under MPI (the checkpoint is the same).
+# Usage: cmake -DBINARY=... -DWORK=dir [-DMPIEXEC=...] -P run_resume.cmake
 set(realizations 200)
 set(block_size 2)
 math(EXPR block_count "${realizations} / ${block_size}")
@@ -40,7 +41,7 @@ if(NOT code EQUAL 2 OR NOT err MATCHES "--resume: .*different scene: t_max = 200
   message(FATAL_ERROR "resume with another t_max: exit ${code}, expected 2 naming t_max\n${out}${err}")
 endif()
 
-execute_process(COMMAND ${BINARY} md run ${scene} --threads 2 --resume ${WORK}/killed
+execute_process(COMMAND ${MPIEXEC} ${BINARY} md run ${scene} --threads 2 --resume ${WORK}/killed
                 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "resume failed (${code}):\n${out}\n${err}")

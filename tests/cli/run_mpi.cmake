@@ -1,0 +1,42 @@
+# MPI ensembles (COLDBLAST_MPI=ON): `mpirun -np 2 coldblast md run` writes observables.csv,
+# blocks.csv, accumulators.csv and block_totals.csv byte-identical (apart from the "# command:"
+# line) to the 2-thread single-process run of the same scene and seed; ranks > 0 write nothing.
+# Usage: cmake -DBINARY=... -DMPIEXEC="mpirun;--allow-run-as-root;--oversubscribe;-np;2" -DWORK=dir -P run_mpi.cmake
+set(scene md run --set t_max=50 --realizations 32 --set block_size=2 --seed 5)
+file(REMOVE_RECURSE ${WORK})
+execute_process(COMMAND ${BINARY} ${scene} --threads 2 --out ${WORK}/threads
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "threaded run failed (${code}):\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${MPIEXEC} ${BINARY} ${scene} --out ${WORK}/ranks
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "mpirun run failed (${code}):\n${out}\n${err}")
+endif()
+string(REGEX MATCHALL "scene default" summaries "${out}")
+list(LENGTH summaries summary_count)
+if(NOT summary_count EQUAL 1)
+  message(FATAL_ERROR "expected one summary (rank 0 only), found ${summary_count}:\n${out}")
+endif()
+file(READ ${WORK}/ranks/summary.json summary)
+if(NOT summary MATCHES "\"ranks\": 2")
+  message(FATAL_ERROR "summary.json does not record 2 ranks:\n${summary}")
+endif()
+foreach(file observables.csv blocks.csv accumulators.csv block_totals.csv)
+  foreach(dir threads ranks)
+    file(STRINGS ${WORK}/${dir}/${file} lines_${dir})
+    list(FILTER lines_${dir} EXCLUDE REGEX "^# command: ")
+  endforeach()
+  if(NOT lines_threads STREQUAL lines_ranks)
+    message(FATAL_ERROR "${file} of mpirun -np 2 differs from the threaded run's")
+  endif()
+endforeach()
+
+# A bad scene value ends every rank with exit 2 naming the key.
+execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set n=-1 --out ${WORK}/bad
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 2 OR NOT err MATCHES "n = -1 is outside")
+  message(FATAL_ERROR "bad n under mpirun: exit ${code}, expected 2 naming n\n${out}${err}")
+endif()
+message(STATUS "mpirun -np 2: outputs identical to --threads 2")
