@@ -68,6 +68,11 @@ class CellList {
     return slab_delta_[axis][direction > 0 ? 1 : 0];
   }
 
+  /// Writes the cells around a cell that wraps (as for_each_neighbour_cell, same order) to `cells`
+  /// and their image shifts to `shifts` (room for 3^D each); returns their number. With axis >= 0,
+  /// only the slab newly adjacent after a move along `axis` in `direction` (3^(D-1) cells).
+  int wrapped_cells(std::int32_t cell, std::int32_t* cells, Vec<D>* shifts, int axis = -1, int direction = 0) const;
+
   /// Calls f(cell, shift) for the 3^D cells around `cell` (itself included); `shift` is the
   /// periodic image offset to add to a neighbour's position (zero in an open grid).
   template <class F>
@@ -91,6 +96,44 @@ class CellList {
   std::vector<std::int32_t> neighbour_delta_;                       // 3^D index offsets (no wrap)
   std::array<std::array<std::vector<std::int32_t>, 2>, D> slab_delta_;  // per axis, direction (no wrap)
 };
+
+template <int D>
+int CellList<D>::wrapped_cells(std::int32_t cell, std::int32_t* cells, Vec<D>* shifts, int axis, int direction) const {
+  const auto c = coordinates(cell);
+  std::array<std::array<std::int32_t, 3>, D> part;
+  std::array<std::array<double, 3>, D> image;
+  std::array<int, D> lo, hi, o;
+  for (int k = 0; k < D; ++k) {
+    lo[k] = k == axis ? direction : -1;
+    hi[k] = k == axis ? direction : 1;
+    for (int step = lo[k]; step <= hi[k]; ++step) {
+      std::int32_t n = c[k] + step;
+      double shift = 0.0;
+      if (n < 0) { n += count_[k]; shift = -box_[k]; }
+      else if (n >= count_[k]) { n -= count_[k]; shift = box_[k]; }
+      part[k][step + 1] = n * stride_[k];
+      image[k][step + 1] = shift;
+    }
+    o[k] = lo[k];
+  }
+  int m = 0;
+  while (true) {  // k = 0 runs fastest, as in for_each_neighbour_cell
+    std::int32_t index = 0;
+    for (int k = 0; k < D; ++k) {
+      index += part[k][o[k] + 1];
+      shifts[m][k] = image[k][o[k] + 1];
+    }
+    cells[m++] = index;
+    int k = 0;
+    while (k < D && o[k] == hi[k]) {
+      o[k] = lo[k];
+      ++k;
+    }
+    if (k == D) break;
+    ++o[k];
+  }
+  return m;
+}
 
 template <int D>
 template <class F>

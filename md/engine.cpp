@@ -113,23 +113,27 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, int& axis, int& dir
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::scan_cell(std::int32_t id, std::int32_t cell, const Vec<D>& shift) {
+void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* cells, const Vec<D>* shifts,
+                                          int count) {
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
   Prediction best = predictions_[id];
   const double* sigma_row = sigma_[species_[id]];
-  for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
-    if (j == id) continue;
-    const Particle<D>& q = particles_[j];
-    const Vec<D> dr = q.position + q.velocity * (time - q.time) + shift - position;
-    const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
-    const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
-    const double t = time + tau;
-    if (t < best.time) {
-      best.time = t;
-      best.partner = j;
-      best.partner_collisions = q.collisions;
+  for (int m = 0; m < count; ++m) {
+    const Vec<D> shift = shifts[m];
+    for (std::int32_t j = cells_.first(cells[m]); j >= 0; j = cells_.next(j)) {
+      if (j == id) continue;
+      const Particle<D>& q = particles_[j];
+      const Vec<D> dr = q.position + q.velocity * (time - q.time) + shift - position;
+      const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
+      const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
+      const double t = time + tau;
+      if (t < best.time) {
+        best.time = t;
+        best.partner = j;
+        best.partner_collisions = q.collisions;
+      }
     }
   }
   predictions_[id] = best;
@@ -174,7 +178,9 @@ void Engine<D, Queue>::full_scan(std::int32_t id) {
     scan_cells(id, cell, deltas.data(), deltas.data() + deltas.size());
     return;
   }
-  cells_.for_each_neighbour_cell(cell, [&](std::int32_t c, const Vec<D>& shift) { scan_cell(id, c, shift); });
+  std::int32_t cells[27];
+  Vec<D> shifts[27];
+  scan_wrapped_cells(id, cells, shifts, cells_.wrapped_cells(cell, cells, shifts));
 }
 
 template <int D, class Queue>
@@ -274,8 +280,9 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
     const auto& deltas = cells_.slab_deltas(axis, direction);
     scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size());
   } else {
-    cells_.for_each_new_neighbour_cell(p.cell, axis, direction,
-                                       [&](std::int32_t cell, const Vec<D>& shift) { scan_cell(id, cell, shift); });
+    std::int32_t cells[9];
+    Vec<D> shifts[9];
+    scan_wrapped_cells(id, cells, shifts, cells_.wrapped_cells(p.cell, cells, shifts, axis, direction));
   }
   schedule(id);
 }

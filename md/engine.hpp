@@ -86,9 +86,10 @@ class Engine {
   void process(std::int32_t id, double t);
   void collide(std::int32_t i, std::int32_t j, double t);
   void cross(std::int32_t id, double t);
-  void scan_cell(std::int32_t id, std::int32_t cell, const Vec<D>& shift);
   // Scans the unwrapped cells base + delta for delta in [first, last) (no periodic image shift).
   void scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first, const std::int32_t* last);
+  // Scans `count` cells, each with its periodic image shift.
+  void scan_wrapped_cells(std::int32_t id, const std::int32_t* cells, const Vec<D>* shifts, int count);
   void full_scan(std::int32_t id);
   void schedule(std::int32_t id);
   double crossing_time(const Particle<D>& p, int& axis, int& direction) const;
