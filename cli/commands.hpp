@@ -22,10 +22,12 @@ enum class Format { table, json };
 /// Adds `--format table|json` (default table) to a subcommand.
 inline CLI::Option* add_format_option(CLI::App& command, Format& format) {
   return command
-      .add_option("--format", format, "Output format of the stdout summary: table or json")
+      .add_option("--format", format, "Format of the stdout summary: table or json (default table)")
       ->transform(CLI::CheckedTransformer(
-          std::map<std::string, Format>{{"table", Format::table}, {"json", Format::json}},
-          CLI::ignore_case))
+                      std::map<std::string, Format>{{"table", Format::table}, {"json", Format::json}},
+                      CLI::ignore_case)
+                      .description(""))
+      ->type_name("table|json")
       ->default_str("table");
 }
 
