@@ -1,5 +1,5 @@
 // MD engine benchmarks (docs/benchmarks.md, "MD engine"): collisions per second and seconds per
-// realization of the paper's 2D blast, 3D equilibrium hard spheres at phi = 0.1, 0.3, 0.45 with
+// realization of the paper's 2D blast and its set-up share, 3D equilibrium hard spheres at phi = 0.1, 0.3, 0.45 with
 // N = 10^5 (the EDMD reference point), heap versus bucketed calendar, memory for N = 10^6, and the
 // growth of the cost with t_max over a decade.
 #include <sys/resource.h>
@@ -41,6 +41,29 @@ void blast(benchmark::State& state, const std::string& queue, double t_max, doub
   state.counters["collisions_per_second"] = benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
   state.counters["collisions_per_realization"] = static_cast<double>(collisions) / state.iterations();
   state.counters["seconds_per_realization"] = seconds / state.iterations();
+}
+
+// Set-up share of a paper-scene realization: RSA placement, impurity kick and engine construction
+// (cell list, calendar), without the event loop (same steps as md/ensemble.cpp's run_realization).
+void paper_2d_setup(benchmark::State& state) {
+  const ResolvedScene scene = resolve_scene(paper_2d(4000.0, "calendar", 1.6));
+  const BlastConfig& c = scene.config;
+  long long index = 0;
+  for (auto _ : state) {
+    auto rng = realization_rng(c.seed, static_cast<std::uint64_t>(++index));
+    InitialState<2> initial;
+    initial.host = {c.a, 1.0};
+    initial.impurity = {scene.impurity_radius, c.impurities.mass};
+    initial.position = random_sequential_addition<2>(rng, scene.particle_count, c.a, scene.region_radius);
+    initial.velocity.assign(scene.particle_count, Vec<2>::Zero());
+    initial.species.assign(scene.particle_count, host_species);
+    kick_impurities<2>(rng, initial, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+    EngineConfig<2> config;
+    config.region_radius = scene.region_radius;
+    config.guard_radius = scene.guard_radius;
+    Engine<2, CalendarEventQueue> engine(config, initial);
+    benchmark::DoNotOptimize(engine.size());
+  }
 }
 
 template <class Queue>
@@ -94,6 +117,7 @@ void memory_1e6(benchmark::State& state) {
 
 // The t_max scan uses box_margin = 3: below t ~ 1000 a few fast particles run well ahead of Eq. (1).
 BENCHMARK_CAPTURE(blast, paper_2d_calendar, std::string("calendar"), 4000.0, 1.6)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(paper_2d_setup)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK_CAPTURE(blast, paper_2d_heap, std::string("heap"), 4000.0, 1.6)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(blast, t_max_400, std::string("calendar"), 400.0, 3.0)->Unit(benchmark::kMillisecond)->Iterations(10);
 BENCHMARK_CAPTURE(blast, t_max_1265, std::string("calendar"), 1264.9110640673518, 3.0)->Unit(benchmark::kMillisecond)->Iterations(5);
