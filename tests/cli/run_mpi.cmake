@@ -39,4 +39,14 @@ execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set n=-1 --out ${WORK}/bad
 if(NOT code EQUAL 2 OR NOT err MATCHES "n = -1 is outside")
   message(FATAL_ERROR "bad n under mpirun: exit ${code}, expected 2 naming n\n${out}${err}")
 endif()
-message(STATUS "mpirun -np 2: outputs identical to --threads 2")
+# A runtime failure ends every rank with exit 1 (no hang) and no output files. With seed 2 the
+# guard trips in realization 1 (on rank 1, the path where a worker reports to rank 0) and not in
+# realization 0; the regex also accepts rank 0's message should the engine's trajectories change.
+execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set box_margin=1.25 --set A_d=0.1 --seed 2
+                        --realizations 2 --set block_size=1 --out ${WORK}/failed
+                TIMEOUT 120 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 1 OR NOT err MATCHES "coldblast: failed: (rank 1: )?a moving particle.*raise box_margin"
+   OR EXISTS ${WORK}/failed/observables.csv)
+  message(FATAL_ERROR "guard trip under mpirun: exit ${code}, expected 1 naming box_margin\n${out}${err}")
+endif()
+message(STATUS "mpirun -np 2: outputs identical to --threads 2; errors end every rank")
