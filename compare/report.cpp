@@ -116,7 +116,8 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
     const double t_last = s.t.back(), a_last = values.back();
     script << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << h << "\n"
            << "set logscale xy\nset format x '10^{%L}'\nset xlabel 't (MD time units: m = 1, lengths as in the scene)'\n"
-           << "set ylabel '" << label(v.name) << "'\nset key bottom right font ',9'\n"
+           << "set ylabel '" << label(v.name) << "'\nset key " << (v.alpha_theory > 0 ? "bottom right" : "bottom left")
+           << " font ',9'\n"
            << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name) << ": {/Symbol a}_T = "
            << v.alpha_theory_rational << ", {/Symbol a}_S = " << format_number(std::round(v.alpha_measured * 1000) / 1000)
            << " ± " << format_number(std::round(v.alpha_error * 1000) / 1000) << "'\n"
@@ -125,7 +126,8 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
            << v.alpha_theory_rational << "}'\n";
     // Inset: running exponent.
     const bool rising = v.alpha_theory > 0;
-    script << "reset\nset origin " << x0 + 0.14 * w << "," << y0 + (rising ? 0.52 : 0.16) * h << "\nset size "
+    // Rising curves leave the top left empty, falling ones the top right.
+    script << "reset\nset origin " << x0 + (rising ? 0.14 : 0.52) * w << "," << y0 + 0.52 * h << "\nset size "
            << 0.42 * w << "," << 0.34 * h << "\nset logscale x\nset format x '10^{%L}'\nset tics font ',8'\n"
            << "set ylabel '{/Symbol a}(t)' font ',9' offset 1.5,0\nunset key\n"
            << "plot '" << v.name << "_alpha.dat' u 1:2:3 w yerrorbars pt 7 ps 0.4 lc rgb '#d62728', "
