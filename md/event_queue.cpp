@@ -85,7 +85,8 @@ constexpr double target_per_bucket = 4.0;  // events popped per bucket visited
 }  // namespace
 
 CalendarEventQueue::CalendarEventQueue(std::size_t capacity)
-    : head_(bucket_count_for(capacity), -1),
+    : heap_(capacity),
+      head_(bucket_count_for(capacity), -1),
       next_(capacity, -1),
       prev_(capacity, -1),
       where_(capacity, absent),
@@ -93,13 +94,12 @@ CalendarEventQueue::CalendarEventQueue(std::size_t capacity)
       mask_(static_cast<std::int64_t>(head_.size()) - 1) {}
 
 std::size_t CalendarEventQueue::bytes() const {
-  return bucket_.capacity() * sizeof(Entry) + (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 +
+  return heap_.bytes() + (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 +
          time_.capacity() * 8;
 }
 
 void CalendarEventQueue::clear() {
-  bucket_.clear();
-  best_ = -1;
+  heap_.clear();
   std::fill(head_.begin(), head_.end(), -1);
   std::fill(where_.begin(), where_.end(), absent);
   overflow_ = -1;
@@ -121,7 +121,8 @@ void CalendarEventQueue::insert(std::int32_t id, double time) {
   time_[id] = time;
   const std::int64_t b = width_known_ ? bucket_of(time) : std::numeric_limits<std::int64_t>::max();
   if (width_known_ && b <= current_) {
-    add_to_bucket(id, time);
+    heap_.set(id, time);
+    where_[id] = in_heap;
     return;
   }
   std::int32_t* list = nullptr;
@@ -154,16 +155,13 @@ void CalendarEventQueue::unlink(std::int32_t id) {
 
 void CalendarEventQueue::set(std::int32_t id, double time) {
   const std::int32_t w = where_[id];
-  if (in_bucket(w)) {
-    const std::int32_t index = bucket_code(w);  // the code is its own inverse: -4 - (-4 - i) = i
+  if (w == in_heap) {
     if (bucket_of(time) <= current_) {
-      bucket_[index].time = time;
+      heap_.set(id, time);
       time_[id] = time;
-      if (index == best_) best_ = -1;
-      else if (best_ >= 0 && before(bucket_[index], bucket_[best_])) best_ = index;
       return;
     }
-    take_out(index);
+    heap_.remove(id);
     where_[id] = absent;
   } else if (w != absent) {
     unlink(id);
@@ -176,8 +174,8 @@ void CalendarEventQueue::set(std::int32_t id, double time) {
 void CalendarEventQueue::remove(std::int32_t id) {
   const std::int32_t w = where_[id];
   if (w == absent) return;
-  if (in_bucket(w)) {
-    take_out(bucket_code(w));
+  if (w == in_heap) {
+    heap_.remove(id);
     where_[id] = absent;
   } else {
     unlink(id);
@@ -197,8 +195,8 @@ void CalendarEventQueue::redistribute_overflow() {
 }
 
 void CalendarEventQueue::advance() {
-  assert(bucket_.empty());
-  while (bucket_.empty()) {
+  assert(heap_.empty());
+  while (heap_.empty()) {
     if (in_lists_ == 0) {
       if (overflow_size_ == 0) return;
       // Jump over the empty buckets to the earliest overflow event.
@@ -222,7 +220,8 @@ void CalendarEventQueue::advance() {
     }
     std::int32_t& list = head_[current_ & mask_];
     for (std::int32_t id = list; id >= 0; id = next_[id]) {
-      add_to_bucket(id, time_[id]);
+      heap_.set(id, time_[id]);
+      where_[id] = in_heap;
       --in_lists_;
     }
     list = -1;
@@ -238,8 +237,7 @@ void CalendarEventQueue::rebuild(double new_width) {
     ids.push_back(static_cast<std::int32_t>(id));
     earliest = std::min(earliest, time_[id]);
   }
-  bucket_.clear();
-  best_ = -1;
+  heap_.clear();
   std::fill(head_.begin(), head_.end(), -1);
   overflow_ = -1;
   in_lists_ = overflow_size_ = 0;
@@ -266,16 +264,8 @@ std::pair<double, std::int32_t> CalendarEventQueue::top_slow() {
     const double span = times[tenth] - lo;
     rebuild(span > 0.0 ? target_per_bucket * span / static_cast<double>(tenth + 1) : 1.0);
   }
-  if (bucket_.empty()) advance();
-  if (best_ < 0) find_best();
-  return {bucket_[best_].time, bucket_[best_].id};
-}
-
-void CalendarEventQueue::find_best() {
-  std::int32_t best = 0;
-  for (std::int32_t k = 1; k < static_cast<std::int32_t>(bucket_.size()); ++k)
-    if (before(bucket_[k], bucket_[best])) best = k;
-  best_ = bucket_.empty() ? -1 : best;
+  if (heap_.empty()) advance();
+  return heap_.top();
 }
 
 void CalendarEventQueue::adapt() {

@@ -1,7 +1,7 @@
 #pragma once
 // Event calendars holding at most one event per particle (Smallenburg's EDMD): an indexed binary
 // heap (the baseline) and a bucketed calendar (time buckets of adaptive width whose current bucket
-// is a small unordered array; far events wait in an overflow list). Both order events by (time, id), so the
+// is a small heap; far events wait in an overflow list). Both order events by (time, id), so the
 // earliest event is unique and both queues agree exactly (tests compare them with a brute force).
 #include <cstdint>
 #include <utility>
@@ -46,10 +46,9 @@ class HeapEventQueue {
 };
 
 /// Bucketed event calendar: bucket k holds events with floor(time/width) = k. The bucket being
-/// processed is a small unordered array (its earliest event found by a linear scan, cached until it
-/// changes); the next `bucket_count` buckets are doubly linked lists; later events sit in an
-/// overflow list that is redistributed once per sweep. The width adapts so that a bucket holds a
-/// few events (it is rebuilt when the pop-per-bucket ratio leaves [1/2, 16]).
+/// processed is a HeapEventQueue; the next `bucket_count` buckets are singly linked lists; later
+/// events sit in an overflow list that is redistributed once per sweep. The width adapts so that a
+/// bucket holds a few events (it is rebuilt when the pop-per-bucket ratio leaves [1/4, 8]).
 class CalendarEventQueue {
  public:
   explicit CalendarEventQueue(std::size_t capacity = 0);
@@ -60,12 +59,12 @@ class CalendarEventQueue {
   std::size_t size() const { return size_; }
   /// Earliest event (time, id); the queue must not be empty (not const: it may advance buckets).
   std::pair<double, std::int32_t> top() {
-    if (best_ >= 0) return {bucket_[best_].time, bucket_[best_].id};  // the fast path of every event
+    if (!heap_.empty()) return heap_.top();  // the fast path of every event
     return top_slow();
   }
   void pop() {
     const std::int32_t id = top().second;
-    take_out(best_);
+    heap_.pop();
     where_[id] = absent;
     --size_;
     if (++pops_ == adapt_interval) adapt();
@@ -77,32 +76,7 @@ class CalendarEventQueue {
   static constexpr std::uint64_t adapt_interval = 1 << 15;
   std::pair<double, std::int32_t> top_slow();
   void adapt();
-  static constexpr std::int32_t absent = -3, in_overflow = -2;
-  // where_ of an event in the current bucket: -4 - (its index in bucket_).
-  static constexpr std::int32_t bucket_code(std::int32_t index) { return -4 - index; }
-  static constexpr bool in_bucket(std::int32_t where) { return where <= -4; }
-  struct Entry {
-    double time;
-    std::int32_t id;
-  };
-  static bool before(const Entry& x, const Entry& y) {
-    return x.time < y.time || (x.time == y.time && x.id < y.id);
-  }
-  void add_to_bucket(std::int32_t id, double time) {
-    bucket_.push_back({time, id});
-    const std::int32_t index = static_cast<std::int32_t>(bucket_.size()) - 1;
-    where_[id] = bucket_code(index);
-    if (best_ >= 0 && before(bucket_[index], bucket_[best_])) best_ = index;
-    else if (index == 0) best_ = 0;
-  }
-  void take_out(std::int32_t index) {  // removes bucket_[index]; the minimum must be found again
-    const Entry last = bucket_.back();
-    bucket_[index] = last;
-    where_[last.id] = bucket_code(index);
-    bucket_.pop_back();
-    best_ = -1;
-  }
-  void find_best();
+  static constexpr std::int32_t absent = -3, in_heap = -1, in_overflow = -2;
   void insert(std::int32_t id, double time);
   void unlink(std::int32_t id);
   void advance();  // moves to the next non-empty bucket; heap_ must be empty
@@ -110,8 +84,7 @@ class CalendarEventQueue {
   void rebuild(double new_width);
   std::int64_t bucket_of(double time) const;
 
-  std::vector<Entry> bucket_;          // the current bucket, unordered (a few events: a linear scan finds the minimum)
-  std::int32_t best_ = -1;             // index of its earliest event in bucket_, -1 = unknown or empty
+  HeapEventQueue heap_;                // the current bucket
   std::vector<std::int32_t> head_;     // bucket lists, circular over bucket_count
   std::vector<std::int32_t> next_, prev_;  // doubly linked lists (buckets and overflow)
   std::vector<std::int32_t> where_;    // bucket slot, in_heap, in_overflow or absent
