@@ -249,33 +249,40 @@ BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* rea
   return s;
 }
 
+EnsemblePlan plan_ensemble(const BlastConfig& config, const RunOptions& options) {
+  EnsemblePlan plan;
+  BlastResult& result = plan.result;
+  result.scene = resolve_scene(config);
+  result.threads = options.threads;
+  result.shard_index = options.shard_index;
+  result.shard_count = options.shard_count;
+  const long long block_count = (config.realizations + config.block_size - 1) / config.block_size;
+  if (!options.checkpoint.empty()) {
+    if (options.resume) {
+      Checkpoint saved = load_checkpoint(options.checkpoint, result.scene);
+      for (auto& [b, s] : saved.blocks)
+        if (b % options.shard_count == options.shard_index) result.blocks[b] = std::move(s);
+      if (result.blocks.count(0)) result.realization0_files = std::move(saved.realization0_files);
+    } else {
+      start_checkpoint(options.checkpoint, result.scene);
+    }
+  }
+  for (long long b = options.shard_index; b < block_count; b += options.shard_count)
+    if (!result.blocks.count(b)) plan.pending.push_back(b);
+  for (const long long b : plan.pending) plan.pending_realizations += block_realizations(config, b);
+  return plan;
+}
+
 BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
   common::require_integer_in_range("threads", options.threads, 1, 1024);
   common::require_integer_in_range("shard_count", options.shard_count, 1, 1000000);
   common::require_integer_in_range("shard_index", options.shard_index, 0, options.shard_count - 1);
   const auto started = std::chrono::steady_clock::now();
-  BlastResult result;
-  result.scene = resolve_scene(config);
-  result.threads = options.threads;
-  result.shard_index = options.shard_index;
-  result.shard_count = options.shard_count;
+  EnsemblePlan plan = plan_ensemble(config, options);
+  BlastResult& result = plan.result;
   const ResolvedScene& scene = result.scene;
-  const long long block_count = (config.realizations + config.block_size - 1) / config.block_size;
-  if (!options.checkpoint.empty()) {
-    if (options.resume) {
-      Checkpoint saved = load_checkpoint(options.checkpoint, scene);
-      for (auto& [b, s] : saved.blocks)
-        if (b % options.shard_count == options.shard_index) result.blocks[b] = std::move(s);
-      if (result.blocks.count(0)) result.realization0_files = std::move(saved.realization0_files);
-    } else {
-      start_checkpoint(options.checkpoint, scene);
-    }
-  }
-  std::vector<long long> owned;  // blocks still to run
-  for (long long b = options.shard_index; b < block_count; b += options.shard_count)
-    if (!result.blocks.count(b)) owned.push_back(b);
-  long long total = 0;
-  for (const long long b : owned) total += block_realizations(config, b);
+  const std::vector<long long>& owned = plan.pending;  // blocks still to run
+  const long long total = plan.pending_realizations;
 
   std::vector<BlockSums> sums(owned.size());
   std::atomic<std::size_t> next{0};
@@ -316,7 +323,7 @@ BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
   if (error) std::rethrow_exception(error);
   for (std::size_t slot = 0; slot < owned.size(); ++slot) result.blocks[owned[slot]] = std::move(sums[slot]);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return result;
+  return std::move(plan.result);
 }
 
 std::vector<ObservableEstimate> estimate_observables(const BlastResult& result) {

@@ -70,6 +70,18 @@ struct ObservableEstimate {
 /// Runs the realizations of `config` owned by this shard. Throws std::invalid_argument for bad
 /// options/scene and std::runtime_error when a realization fails (e.g. the guard trips).
 BlastResult run_blast(const BlastConfig& config, const RunOptions& options = {});
+
+/// What is known before any realization of an ensemble runs (shared by the threaded and the MPI
+/// drivers): the resolved scene and options, the blocks loaded from a checkpoint when resuming,
+/// and the blocks of this shard still to run.
+struct EnsemblePlan {
+  BlastResult result;                 ///< scene, thread/shard settings, already finished blocks
+  std::vector<long long> pending;     ///< blocks still to run, ascending
+  long long pending_realizations = 0; ///< realizations in `pending`
+};
+/// Resolves the scene, loads (resume) or starts the checkpoint in options.checkpoint, and lists
+/// the pending blocks. Throws std::invalid_argument for a bad scene or checkpoint.
+EnsemblePlan plan_ensemble(const BlastConfig& config, const RunOptions& options);
 /// Realizations in block `block` (the last block may be short).
 long long block_realizations(const BlastConfig& config, long long block);
 /// Runs the realizations of one block in index order on the calling thread: the unit of work of

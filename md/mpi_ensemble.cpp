@@ -143,29 +143,12 @@ std::string error_text(const std::exception_ptr& error) {
 /// threads), collects every finished block, saves checkpoints and reports progress.
 BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options, int ranks) {
   const auto started = std::chrono::steady_clock::now();
-  BlastResult result;
-  result.scene = resolve_scene(config);
-  result.threads = options.threads;
+  EnsemblePlan plan = plan_ensemble(config, options);
+  BlastResult& result = plan.result;
   result.ranks = ranks;
-  result.shard_index = options.shard_index;
-  result.shard_count = options.shard_count;
   const ResolvedScene& scene = result.scene;
-  const long long block_count = (config.realizations + config.block_size - 1) / config.block_size;
-  if (!options.checkpoint.empty()) {
-    if (options.resume) {
-      Checkpoint saved = load_checkpoint(options.checkpoint, scene);
-      for (auto& [b, s] : saved.blocks)
-        if (b % options.shard_count == options.shard_index) result.blocks[b] = std::move(s);
-      if (result.blocks.count(0)) result.realization0_files = std::move(saved.realization0_files);
-    } else {
-      start_checkpoint(options.checkpoint, scene);
-    }
-  }
-  std::vector<long long> pending;
-  for (long long b = options.shard_index; b < block_count; b += options.shard_count)
-    if (!result.blocks.count(b)) pending.push_back(b);
-  long long total = 0;
-  for (const long long b : pending) total += block_realizations(config, b);
+  const std::vector<long long>& pending = plan.pending;
+  const long long total = plan.pending_realizations;
 
   std::mutex mutex;  // guards next, done, result.blocks, result.realization0_files, error
   std::size_t next = 0;
@@ -254,7 +237,7 @@ BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return result;
+  return std::move(plan.result);
 }
 
 /// Ranks > 0: `threads` compute threads; this (the only MPI-calling) thread forwards each thread's
