@@ -80,6 +80,7 @@ std::string label(const std::string& name) {
   if (name == "V_imp") return "V_{imp}";
   if (name == "C_imp") return "C_{imp}";
   if (name == "u_imp") return "u_{imp}";
+  if (name == "u_flow") return "u_{flow}";
   if (name == "n0") return "n_0";
   if (name == "T0") return "T_0";
   return name;

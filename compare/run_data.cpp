@@ -11,11 +11,11 @@
 namespace coldblast::compare {
 
 Transform transform_for(const std::string& observable) {
-  if (observable == "R_imp" || observable == "V_imp") return Transform::sqrt;
+  if (observable == "R_imp" || observable == "V_imp" || observable == "u_flow") return Transform::sqrt;
   static const std::set<std::string> identity = {"C_imp", "u_imp", "n0", "T0", "R", "H"};
   if (identity.count(observable)) return Transform::identity;
   throw std::invalid_argument("observable = " + observable +
-                              " is unknown; allowed: R_imp, V_imp, C_imp, u_imp, n0, T0, R, H");
+                              " is unknown; allowed: R_imp, V_imp, C_imp, u_imp, u_flow, n0, T0, R, H");
 }
 
 std::vector<double> BlockSeries::ensemble_values(long excluded) const {

@@ -346,8 +346,10 @@ std::vector<ObservableEstimate> estimate_observables(const BlastResult& result) 
       const double mean = S[e] / N;
       const double variance = N > 1 ? std::max(0.0, (Q[e] - S[e] * mean) / (N - 1)) : std::nan("");
       double value = mean, error = std::sqrt(variance / N);
-      if (name == "R_imp" || name == "V_imp") {  // Eq. (38): sqrt of the ensemble mean; delta method
-        value = std::sqrt(mean);
+      if (name == "R_imp" || name == "V_imp" || name == "u_flow") {
+        // Eq. (38) (and u_flow): sqrt of the ensemble mean; delta method. u_flow's mean of
+        // |ū|² − s²/N can be <= 0 when the flow is below the noise: reported as 0.
+        value = mean > 0.0 ? std::sqrt(mean) : 0.0;
         error = value > 0.0 ? error / (2.0 * value) : std::nan("");
       }
       rows.push_back({scene.times[k], name, value, error, N});

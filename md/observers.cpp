@@ -62,7 +62,7 @@ BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const Observa
       impurities_.push_back(static_cast<std::int32_t>(i));
   for (const std::int32_t id : impurities_) {
     initial_position_.push_back(engine.position(id));
-    if (scene.wants("u_imp")) local_radius_.push_back(radius_holding(engine.position(id), held_particles, id));
+    if (scene.wants("u_imp") || scene.wants("u_flow")) local_radius_.push_back(radius_holding(engine.position(id), held_particles, id));
   }
   if (scene.wants("n0") || scene.wants("T0")) core_radius_ = radius_holding(Vec<D>::Zero(), held_particles, -1);
 }
@@ -92,6 +92,13 @@ double BlastObserver<D, Queue>::shock_radius() const {
   return std::pow(moving / (scene_.config.n * theory::unit_ball_volume(D)), 1.0 / D);
 }
 
+double flow_speed_squared_estimate(double sum_norm_squared, double sum_squares, int count) {
+  const double N = count;
+  const double mean_squared = sum_norm_squared / (N * N);                 // |ū|²
+  const double variance = (sum_squares - N * mean_squared) / (N - 1.0);  // s², summed over components
+  return mean_squared - variance / N;
+}
+
 template <int D, class Queue>
 void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const {
   const double count = static_cast<double>(impurities_.size());
@@ -100,7 +107,7 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
     if (entry >= 0) record[entry] = value;
   };
   // Eq. (38) [eq:Rimp_comp]: inner values |r|²/2 and |v|²/2 averaged over the impurities.
-  double r2 = 0.0, v2 = 0.0, collisions = 0.0, flow = 0.0;
+  double r2 = 0.0, v2 = 0.0, collisions = 0.0, flow = 0.0, flow_squared = 0.0;
   for (std::size_t m = 0; m < impurities_.size(); ++m) {
     const std::int32_t id = impurities_[m];
     const Vec<D> x = engine_.position(id);
@@ -109,20 +116,27 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
     collisions += engine_.particle(id).collisions;
     if (!local_radius_.empty()) {
       // u_imp: |mean velocity| of the particles within the impurity's fixed radius (0 if none).
+      // u_flow: the same mean with its thermal noise removed, |ū|² − s²/N, s² the sample variance
+      // of the N velocities (summed over components): an unbiased estimate of the squared flow
+      // speed for independent velocities (docs/verification.md, "the u_imp deviation").
       Vec<D> sum = Vec<D>::Zero();
+      double sum_squares = 0.0;
       int inside = 0;
       engine_.for_each_in_ball(x, local_radius_[m], [&](std::int32_t j, const Vec<D>&) {
         if (j == id) return;
         sum += engine_.velocity(j);
+        sum_squares += engine_.velocity(j).squaredNorm();
         ++inside;
       });
       if (inside > 0) flow += (sum / inside).norm();
+      if (inside > 1) flow_squared += flow_speed_squared_estimate(sum.squaredNorm(), sum_squares, inside);
     }
   }
   put("R_imp", r2 / count);
   put("V_imp", v2 / count);
   put("C_imp", collisions / count);
   put("u_imp", flow / count);
+  put("u_flow", flow_squared / count);
   if (core_radius_ > 0.0) {
     int inside = 0;
     double kinetic = 0.0;

@@ -11,6 +11,12 @@
 
 namespace coldblast::md {
 
+/// Unbiased estimate of |u|², u the mean velocity, from N >= 2 independent velocities v_j:
+/// |ū|² − s²/N with ū = Σv_j/N and s² = Σ|v_j − ū|²/(N − 1). The plain |ū|² is biased up by the
+/// thermal noise d T/N (observable u_flow; docs/verification.md, "the u_imp deviation").
+/// Arguments: |Σ v_j|², Σ |v_j|², N.
+double flow_speed_squared_estimate(double sum_norm_squared, double sum_squares, int count);
+
 /// Index map of a realization record: which observable, time and bin each entry holds.
 class ObservableLayout {
  public:

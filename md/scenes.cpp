@@ -149,13 +149,13 @@ std::string quoted(const std::string& s) {
 }  // namespace
 
 const std::vector<std::string>& scalar_observable_names() {
-  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"};
+  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp", "u_imp", "u_flow", "n0", "T0", "R"};
   return names;
 }
 
 const std::vector<std::string>& known_observable_names() {
-  static const std::vector<std::string> names{"R_imp", "V_imp",    "C_imp", "u_imp",     "n0",          "T0",
-                                              "R",     "profiles", "p_imp", "snapshots", "trajectories"};
+  static const std::vector<std::string> names{"R_imp", "V_imp",    "C_imp", "u_imp",     "u_flow",      "n0",
+                                              "T0",    "R",        "profiles", "p_imp", "snapshots", "trajectories"};
   return names;
 }
 
@@ -216,7 +216,7 @@ void BlastConfig::validate() const {
   for (const std::string& o : observables)
     if (std::find(known.begin(), known.end(), o) == known.end())
       throw std::invalid_argument("observables: unknown observable " + o +
-                                  " (allowed: R_imp, V_imp, C_imp, u_imp, n0, T0, R, profiles, p_imp, snapshots, trajectories)");
+                                  " (allowed: R_imp, V_imp, C_imp, u_imp, u_flow, n0, T0, R, profiles, p_imp, snapshots, trajectories)");
   for (const double t : snapshot_times)
     require_in_range("snapshot_times", t, 0.0, t_max, Bound::open, Bound::closed, " (within (0, t_max])");
 }
