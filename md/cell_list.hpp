@@ -85,6 +85,19 @@ class CellList {
   std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + boundary_.capacity(); }
 
  private:
+  // Calls f(cell, image shift) for the neighbour at offset o (each -1, 0 or 1) of the cell at
+  // coordinates c, wrapped into the periodic box.
+  template <class F>
+  void visit_wrapped(const std::array<std::int32_t, D>& c, const std::array<std::int32_t, D>& o, F& f) const {
+    std::array<std::int32_t, D> n;
+    Vec<D> shift = Vec<D>::Zero();
+    for (int k = 0; k < D; ++k) {
+      n[k] = c[k] + o[k];
+      if (n[k] < 0) { n[k] += count_[k]; shift[k] = -box_[k]; }
+      else if (n[k] >= count_[k]) { n[k] -= count_[k]; shift[k] = box_[k]; }
+    }
+    f(index(n), shift);
+  }
   CellList() = default;
   void set_up(std::size_t particle_count);
   bool periodic_ = false;
@@ -147,14 +160,7 @@ void CellList<D>::for_each_neighbour_cell(std::int32_t cell, F&& f) const {
   std::array<std::int32_t, D> o;
   o.fill(-1);
   while (true) {
-    std::array<std::int32_t, D> n;
-    Vec<D> shift = Vec<D>::Zero();
-    for (int k = 0; k < D; ++k) {
-      n[k] = c[k] + o[k];
-      if (n[k] < 0) { n[k] += count_[k]; shift[k] = -box_[k]; }
-      else if (n[k] >= count_[k]) { n[k] -= count_[k]; shift[k] = box_[k]; }
-    }
-    f(index(n), shift);
+    visit_wrapped(c, o, f);
     int k = 0;
     while (k < D && o[k] == 1) o[k++] = -1;
     if (k == D) break;
@@ -175,14 +181,7 @@ void CellList<D>::for_each_new_neighbour_cell(std::int32_t cell, int axis, int d
   o.fill(-1);
   o[axis] = direction;
   while (true) {
-    std::array<std::int32_t, D> n;
-    Vec<D> shift = Vec<D>::Zero();
-    for (int k = 0; k < D; ++k) {
-      n[k] = c[k] + o[k];
-      if (n[k] < 0) { n[k] += count_[k]; shift[k] = -box_[k]; }
-      else if (n[k] >= count_[k]) { n[k] -= count_[k]; shift[k] = box_[k]; }
-    }
-    f(index(n), shift);
+    visit_wrapped(c, o, f);
     int k = 0;
     while (k < D && (k == axis || o[k] == 1)) {
       if (k != axis) o[k] = -1;

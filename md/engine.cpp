@@ -113,6 +113,28 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, int& axis, int& dir
 }
 
 template <int D, class Queue>
+template <bool Shifted>
+inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift,
+                                        const Vec<D>& position, const Vec<D>& velocity, double time,
+                                        const double* sigma_row, Prediction& best) const {
+  for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
+    if (j == id) continue;
+    const Particle<D>& q = particles_[j];
+    Vec<D> dr;
+    if constexpr (Shifted) dr = q.position + q.velocity * (time - q.time) + shift - position;
+    else dr = q.position + q.velocity * (time - q.time) - position;
+    const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
+    const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
+    const double t = time + tau;
+    if (t < best.time) {
+      best.time = t;
+      best.partner = j;
+      best.partner_collisions = q.collisions;
+    }
+  }
+}
+
+template <int D, class Queue>
 void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* cells, const Vec<D>* shifts,
                                           int count) {
   const Particle<D>& p = particles_[id];
@@ -120,22 +142,7 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* c
   const double time = p.time;
   Prediction best = predictions_[id];
   const double* sigma_row = sigma_[species_[id]];
-  for (int m = 0; m < count; ++m) {
-    const Vec<D> shift = shifts[m];
-    for (std::int32_t j = cells_.first(cells[m]); j >= 0; j = cells_.next(j)) {
-      if (j == id) continue;
-      const Particle<D>& q = particles_[j];
-      const Vec<D> dr = q.position + q.velocity * (time - q.time) + shift - position;
-      const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
-      const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
-      const double t = time + tau;
-      if (t < best.time) {
-        best.time = t;
-        best.partner = j;
-        best.partner_collisions = q.collisions;
-      }
-    }
-  }
+  for (int m = 0; m < count; ++m) scan_list<true>(id, cells[m], shifts[m], position, velocity, time, sigma_row, best);
   predictions_[id] = best;
 }
 
@@ -149,21 +156,9 @@ void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base, const std:
   const double time = p.time;
   Prediction best = predictions_[id];
   const double* sigma_row = sigma_[species_[id]];
-  for (; first != last; ++first) {
-    for (std::int32_t j = cells_.first(base + *first); j >= 0; j = cells_.next(j)) {
-      if (j == id) continue;
-      const Particle<D>& q = particles_[j];
-      const Vec<D> dr = q.position + q.velocity * (time - q.time) - position;
-      const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
-      const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
-      const double t = time + tau;
-      if (t < best.time) {
-        best.time = t;
-        best.partner = j;
-        best.partner_collisions = q.collisions;
-      }
-    }
-  }
+  const Vec<D> no_shift = Vec<D>::Zero();
+  for (; first != last; ++first)
+    scan_list<false>(id, base + *first, no_shift, position, velocity, time, sigma_row, best);
   predictions_[id] = best;
 }
 

@@ -90,6 +90,11 @@ class Engine {
   void scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first, const std::int32_t* last);
   // Scans `count` cells, each with its periodic image shift.
   void scan_wrapped_cells(std::int32_t id, const std::int32_t* cells, const Vec<D>* shifts, int count);
+  // The pair test both scans share: particle (position, velocity at `time`, sigma row) against
+  // every particle of `cell`, displaced by `shift` when Shifted, keeping the earliest contact.
+  template <bool Shifted>
+  void scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift, const Vec<D>& position,
+                 const Vec<D>& velocity, double time, const double* sigma_row, Prediction& best) const;
   void full_scan(std::int32_t id);
   void schedule(std::int32_t id);
   double crossing_time(const Particle<D>& p, int& axis, int& direction) const;
