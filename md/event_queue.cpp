@@ -94,12 +94,13 @@ CalendarEventQueue::CalendarEventQueue(std::size_t capacity)
       mask_(static_cast<std::int64_t>(head_.size()) - 1) {}
 
 std::size_t CalendarEventQueue::bytes() const {
-  return heap_.bytes() + (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 +
+  return heap_.bytes() + sorted_.capacity() * sizeof(Entry) + (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 +
          time_.capacity() * 8;
 }
 
 void CalendarEventQueue::clear() {
   heap_.clear();
+  sorted_.clear();
   std::fill(head_.begin(), head_.end(), -1);
   std::fill(where_.begin(), where_.end(), absent);
   overflow_ = -1;
@@ -108,10 +109,8 @@ void CalendarEventQueue::clear() {
   width_known_ = false;
 }
 
-std::int64_t CalendarEventQueue::bucket_of(double time) const {
-  const double scaled = time * inverse_width_;
+std::int64_t CalendarEventQueue::bucket_of_slow(double scaled) {
   if (scaled >= 1e18) return std::int64_t{1} << 60;
-  if (scaled >= 0.0) return static_cast<std::int64_t>(scaled);  // truncation = floor; avoids a libm call
   const double q = std::floor(scaled);
   if (q <= -1e18) return -(std::int64_t{1} << 60);
   return static_cast<std::int64_t>(q);
@@ -121,8 +120,7 @@ void CalendarEventQueue::insert(std::int32_t id, double time) {
   time_[id] = time;
   const std::int64_t b = width_known_ ? bucket_of(time) : std::numeric_limits<std::int64_t>::max();
   if (width_known_ && b <= current_) {
-    heap_.set(id, time);
-    where_[id] = in_heap;
+    add_to_current(id, time);
     return;
   }
   std::int32_t* list = nullptr;
@@ -153,9 +151,46 @@ void CalendarEventQueue::unlink(std::int32_t id) {
   where_[id] = absent;
 }
 
+void CalendarEventQueue::add_to_current(std::int32_t id, double time) {
+  if (heap_.empty() && sorted_.size() == sorted_limit) {  // too many for a sorted array: heap_ takes them
+    for (const Entry& e : sorted_) {
+      heap_.set(e.id, e.time);
+      where_[e.id] = in_heap;
+    }
+    sorted_.clear();
+  }
+  if (!heap_.empty()) {
+    heap_.set(id, time);
+    where_[id] = in_heap;
+    return;
+  }
+  // Insertion from the back (the earliest end): events arrive roughly in time order.
+  std::size_t k = sorted_.size();
+  sorted_.push_back({});
+  while (k > 0 && !before(time, id, sorted_[k - 1])) {
+    sorted_[k] = sorted_[k - 1];
+    where_[sorted_[k].id] = sorted_code(k);
+    --k;
+  }
+  sorted_[k] = {time, id};
+  where_[id] = sorted_code(k);
+}
+
+void CalendarEventQueue::remove_sorted(std::int32_t where) {
+  const std::size_t k = sorted_index(where);
+  where_[sorted_[k].id] = absent;
+  for (std::size_t m = k + 1; m < sorted_.size(); ++m) {
+    sorted_[m - 1] = sorted_[m];
+    where_[sorted_[m - 1].id] = sorted_code(m - 1);
+  }
+  sorted_.pop_back();
+}
+
 void CalendarEventQueue::set(std::int32_t id, double time) {
   const std::int32_t w = where_[id];
-  if (w == in_heap) {
+  if (w <= sorted_code(0)) {
+    remove_sorted(w);
+  } else if (w == in_heap) {
     if (bucket_of(time) <= current_) {
       heap_.set(id, time);
       time_[id] = time;
@@ -174,7 +209,9 @@ void CalendarEventQueue::set(std::int32_t id, double time) {
 void CalendarEventQueue::remove(std::int32_t id) {
   const std::int32_t w = where_[id];
   if (w == absent) return;
-  if (w == in_heap) {
+  if (w <= sorted_code(0)) {
+    remove_sorted(w);
+  } else if (w == in_heap) {
     heap_.remove(id);
     where_[id] = absent;
   } else {
@@ -195,8 +232,8 @@ void CalendarEventQueue::redistribute_overflow() {
 }
 
 void CalendarEventQueue::advance() {
-  assert(heap_.empty());
-  while (heap_.empty()) {
+  assert(heap_.empty() && sorted_.empty());
+  while (heap_.empty() && sorted_.empty()) {
     if (in_lists_ == 0) {
       if (overflow_size_ == 0) return;
       // Jump over the empty buckets to the earliest overflow event.
@@ -220,8 +257,7 @@ void CalendarEventQueue::advance() {
     }
     std::int32_t& list = head_[current_ & mask_];
     for (std::int32_t id = list; id >= 0; id = next_[id]) {
-      heap_.set(id, time_[id]);
-      where_[id] = in_heap;
+      add_to_current(id, time_[id]);
       --in_lists_;
     }
     list = -1;
@@ -238,6 +274,7 @@ void CalendarEventQueue::rebuild(double new_width) {
     earliest = std::min(earliest, time_[id]);
   }
   heap_.clear();
+  sorted_.clear();
   std::fill(head_.begin(), head_.end(), -1);
   overflow_ = -1;
   in_lists_ = overflow_size_ = 0;
@@ -264,8 +301,8 @@ std::pair<double, std::int32_t> CalendarEventQueue::top_slow() {
     const double span = times[tenth] - lo;
     rebuild(span > 0.0 ? target_per_bucket * span / static_cast<double>(tenth + 1) : 1.0);
   }
-  if (heap_.empty()) advance();
-  return heap_.top();
+  if (heap_.empty() && sorted_.empty()) advance();
+  return top();
 }
 
 void CalendarEventQueue::adapt() {

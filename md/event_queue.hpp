@@ -46,7 +46,7 @@ class HeapEventQueue {
 };
 
 /// Bucketed event calendar: bucket k holds events with floor(time/width) = k. The bucket being
-/// processed is a HeapEventQueue; the next `bucket_count` buckets are singly linked lists; later
+/// processed is a small sorted array (a HeapEventQueue if it holds more than a few dozen events); the next `bucket_count` buckets are singly linked lists; later
 /// events sit in an overflow list that is redistributed once per sweep. The width adapts so that a
 /// bucket holds a few events (it is rebuilt when the pop-per-bucket ratio leaves [1/4, 8]).
 class CalendarEventQueue {
@@ -59,12 +59,14 @@ class CalendarEventQueue {
   std::size_t size() const { return size_; }
   /// Earliest event (time, id); the queue must not be empty (not const: it may advance buckets).
   std::pair<double, std::int32_t> top() {
-    if (!heap_.empty()) return heap_.top();  // the fast path of every event
+    if (!sorted_.empty()) return {sorted_.back().time, sorted_.back().id};  // the fast path of every event
+    if (!heap_.empty()) return heap_.top();
     return top_slow();
   }
   void pop() {
     const std::int32_t id = top().second;
-    heap_.pop();
+    if (!sorted_.empty()) sorted_.pop_back();
+    else heap_.pop();
     where_[id] = absent;
     --size_;
     if (++pops_ == adapt_interval) adapt();
@@ -77,14 +79,35 @@ class CalendarEventQueue {
   std::pair<double, std::int32_t> top_slow();
   void adapt();
   static constexpr std::int32_t absent = -3, in_heap = -1, in_overflow = -2;
+  // where_ of an event in sorted_: -4 - (its index), so that where_ <= -4.
+  static constexpr std::int32_t sorted_code(std::size_t index) { return -4 - static_cast<std::int32_t>(index); }
+  static constexpr std::size_t sorted_index(std::int32_t where) { return static_cast<std::size_t>(-4 - where); }
+  // A current bucket of more events than this lives in heap_ instead of sorted_ (an insertion
+  // into a sorted array costs its length: a huge bucket, before the width adapts, must not).
+  static constexpr std::size_t sorted_limit = 32;
+  struct Entry {
+    double time;
+    std::int32_t id;
+  };
+  static bool before(double t, std::int32_t i, const Entry& y) { return t < y.time || (t == y.time && i < y.id); }
+  void add_to_current(std::int32_t id, double time);
+  void remove_sorted(std::int32_t where);
   void insert(std::int32_t id, double time);
   void unlink(std::int32_t id);
   void advance();  // moves to the next non-empty bucket; heap_ must be empty
   void redistribute_overflow();
   void rebuild(double new_width);
-  std::int64_t bucket_of(double time) const;
+  std::int64_t bucket_of(double time) const {
+    const double scaled = time * inverse_width_;
+    if (scaled >= 0.0 && scaled < 1e18) return static_cast<std::int64_t>(scaled);  // truncation = floor
+    return bucket_of_slow(scaled);
+  }
+  static std::int64_t bucket_of_slow(double scaled);
 
-  HeapEventQueue heap_;                // the current bucket
+  // The current bucket: sorted_ (latest first, so the earliest event is popped from the back)
+  // while it holds at most sorted_limit events, else heap_; the other one is empty.
+  std::vector<Entry> sorted_;
+  HeapEventQueue heap_;
   std::vector<std::int32_t> head_;     // bucket lists, circular over bucket_count
   std::vector<std::int32_t> next_, prev_;  // doubly linked lists (buckets and overflow)
   std::vector<std::int32_t> where_;    // bucket slot, in_heap, in_overflow or absent
