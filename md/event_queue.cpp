@@ -94,13 +94,13 @@ CalendarEventQueue::CalendarEventQueue(std::size_t capacity)
       mask_(static_cast<std::int64_t>(head_.size()) - 1) {}
 
 std::size_t CalendarEventQueue::bytes() const {
-  return heap_.bytes() + sorted_.capacity() * sizeof(Entry) + (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 +
+  return sizeof(sorted_) + heap_.bytes() + (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 +
          time_.capacity() * 8;
 }
 
 void CalendarEventQueue::clear() {
   heap_.clear();
-  sorted_.clear();
+  sorted_size_ = 0;
   std::fill(head_.begin(), head_.end(), -1);
   std::fill(where_.begin(), where_.end(), absent);
   overflow_ = -1;
@@ -151,39 +151,22 @@ void CalendarEventQueue::unlink(std::int32_t id) {
   where_[id] = absent;
 }
 
-void CalendarEventQueue::add_to_current(std::int32_t id, double time) {
-  if (heap_.empty() && sorted_.size() == sorted_limit) {  // too many for a sorted array: heap_ takes them
-    for (const Entry& e : sorted_) {
-      heap_.set(e.id, e.time);
-      where_[e.id] = in_heap;
-    }
-    sorted_.clear();
+void CalendarEventQueue::move_sorted_to_heap() {
+  for (std::size_t k = 0; k < sorted_size_; ++k) {
+    heap_.set(sorted_[k].id, sorted_[k].time);
+    where_[sorted_[k].id] = in_heap;
   }
-  if (!heap_.empty()) {
-    heap_.set(id, time);
-    where_[id] = in_heap;
-    return;
-  }
-  // Insertion from the back (the earliest end): events arrive roughly in time order.
-  std::size_t k = sorted_.size();
-  sorted_.push_back({});
-  while (k > 0 && !before(time, id, sorted_[k - 1])) {
-    sorted_[k] = sorted_[k - 1];
-    where_[sorted_[k].id] = sorted_code(k);
-    --k;
-  }
-  sorted_[k] = {time, id};
-  where_[id] = sorted_code(k);
+  sorted_size_ = 0;
 }
 
 void CalendarEventQueue::remove_sorted(std::int32_t where) {
   const std::size_t k = sorted_index(where);
   where_[sorted_[k].id] = absent;
-  for (std::size_t m = k + 1; m < sorted_.size(); ++m) {
+  for (std::size_t m = k + 1; m < sorted_size_; ++m) {
     sorted_[m - 1] = sorted_[m];
     where_[sorted_[m - 1].id] = sorted_code(m - 1);
   }
-  sorted_.pop_back();
+  --sorted_size_;
 }
 
 void CalendarEventQueue::set(std::int32_t id, double time) {
@@ -232,8 +215,8 @@ void CalendarEventQueue::redistribute_overflow() {
 }
 
 void CalendarEventQueue::advance() {
-  assert(heap_.empty() && sorted_.empty());
-  while (heap_.empty() && sorted_.empty()) {
+  assert(heap_.empty() && sorted_size_ == 0);
+  while (heap_.empty() && sorted_size_ == 0) {
     if (in_lists_ == 0) {
       if (overflow_size_ == 0) return;
       // Jump over the empty buckets to the earliest overflow event.
@@ -274,7 +257,7 @@ void CalendarEventQueue::rebuild(double new_width) {
     earliest = std::min(earliest, time_[id]);
   }
   heap_.clear();
-  sorted_.clear();
+  sorted_size_ = 0;
   std::fill(head_.begin(), head_.end(), -1);
   overflow_ = -1;
   in_lists_ = overflow_size_ = 0;
@@ -301,7 +284,7 @@ std::pair<double, std::int32_t> CalendarEventQueue::top_slow() {
     const double span = times[tenth] - lo;
     rebuild(span > 0.0 ? target_per_bucket * span / static_cast<double>(tenth + 1) : 1.0);
   }
-  if (heap_.empty() && sorted_.empty()) advance();
+  if (heap_.empty() && sorted_size_ == 0) advance();
   return top();
 }
 

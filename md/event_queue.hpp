@@ -3,6 +3,7 @@
 // heap (the baseline) and a bucketed calendar (time buckets of adaptive width whose current bucket
 // is a small heap; far events wait in an overflow list). Both order events by (time, id), so the
 // earliest event is unique and both queues agree exactly (tests compare them with a brute force).
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -59,13 +60,13 @@ class CalendarEventQueue {
   std::size_t size() const { return size_; }
   /// Earliest event (time, id); the queue must not be empty (not const: it may advance buckets).
   std::pair<double, std::int32_t> top() {
-    if (!sorted_.empty()) return {sorted_.back().time, sorted_.back().id};  // the fast path of every event
+    if (sorted_size_ > 0) return {sorted_[sorted_size_ - 1].time, sorted_[sorted_size_ - 1].id};  // every event's fast path
     if (!heap_.empty()) return heap_.top();
     return top_slow();
   }
   void pop() {
     const std::int32_t id = top().second;
-    if (!sorted_.empty()) sorted_.pop_back();
+    if (sorted_size_ > 0) --sorted_size_;
     else heap_.pop();
     where_[id] = absent;
     --size_;
@@ -90,7 +91,24 @@ class CalendarEventQueue {
     std::int32_t id;
   };
   static bool before(double t, std::int32_t i, const Entry& y) { return t < y.time || (t == y.time && i < y.id); }
-  void add_to_current(std::int32_t id, double time);
+  void add_to_current(std::int32_t id, double time) {
+    if (sorted_size_ == sorted_limit) move_sorted_to_heap();
+    if (!heap_.empty()) {
+      heap_.set(id, time);
+      where_[id] = in_heap;
+      return;
+    }
+    // Insertion from the back (the earliest end).
+    std::size_t k = sorted_size_++;
+    while (k > 0 && !before(time, id, sorted_[k - 1])) {
+      sorted_[k] = sorted_[k - 1];
+      where_[sorted_[k].id] = sorted_code(k);
+      --k;
+    }
+    sorted_[k] = {time, id};
+    where_[id] = sorted_code(k);
+  }
+  void move_sorted_to_heap();
   void remove_sorted(std::int32_t where);
   void insert(std::int32_t id, double time);
   void unlink(std::int32_t id);
@@ -106,7 +124,8 @@ class CalendarEventQueue {
 
   // The current bucket: sorted_ (latest first, so the earliest event is popped from the back)
   // while it holds at most sorted_limit events, else heap_; the other one is empty.
-  std::vector<Entry> sorted_;
+  std::array<Entry, sorted_limit> sorted_;
+  std::size_t sorted_size_ = 0;
   HeapEventQueue heap_;
   std::vector<std::int32_t> head_;     // bucket lists, circular over bucket_count
   std::vector<std::int32_t> next_, prev_;  // doubly linked lists (buckets and overflow)
