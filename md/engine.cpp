@@ -92,21 +92,21 @@ void Engine<D, Queue>::guard_tripped() const {
 }
 
 template <int D, class Queue>
-double Engine<D, Queue>::crossing_time(const Particle<D>& p, int& axis, int& direction) const {
+double Engine<D, Queue>::crossing_time(const Particle<D>& p, std::uint8_t& code) const {
+  // Every axis is evaluated without branches on the velocity's sign; an axis with v = 0 never
+  // crosses. The first axis reaching the smallest time wins (ties: the lower axis).
   const auto c = cells_.coordinates(p.cell);
   double best = never;
-  axis = -1;
-  direction = 0;
+  code = 0;
   for (int k = 0; k < D; ++k) {
     const double v = p.velocity[k];
-    if (v == 0.0) continue;
     const double lo = cells_.lower()[k] + c[k] * cells_.width(k);
     const double wall = v > 0.0 ? lo + cells_.width(k) : lo;
-    const double dt = std::max(0.0, (wall - p.position[k]) / v);
+    const double dt = v == 0.0 ? never : std::max(0.0, (wall - p.position[k]) / v);
+    const auto axis_code = static_cast<std::uint8_t>(2 * k + (v > 0.0 ? 1 : 0));
     if (dt < best) {
       best = dt;
-      axis = k;
-      direction = v > 0.0 ? 1 : -1;
+      code = axis_code;
     }
   }
   return p.time + best;
@@ -180,9 +180,9 @@ void Engine<D, Queue>::full_scan(std::int32_t id) {
 
 template <int D, class Queue>
 void Engine<D, Queue>::schedule(std::int32_t id) {
-  int axis, direction;
-  const double crossing = crossing_time(particles_[id], axis, direction);
-  crossing_[id] = static_cast<std::uint8_t>(axis < 0 ? 0 : 2 * axis + (direction > 0 ? 1 : 0));
+  std::uint8_t code;
+  const double crossing = crossing_time(particles_[id], code);
+  crossing_[id] = code;
   const Prediction& p = predictions_[id];
   const double t = std::min(crossing, p.time);
   if (t == never) queue_.remove(id);

@@ -97,7 +97,8 @@ class Engine {
                  const Vec<D>& velocity, double time, const double* sigma_row, Prediction& best) const;
   void full_scan(std::int32_t id);
   void schedule(std::int32_t id);
-  double crossing_time(const Particle<D>& p, int& axis, int& direction) const;
+  // Time of the particle's next cell crossing (`never` at rest), and its crossing_ code.
+  double crossing_time(const Particle<D>& p, std::uint8_t& code) const;
   void start_moving(std::int32_t id);
   void check_guard(std::int32_t id) const {
     if (!config_.periodic && particles_[id].position_at(now_).squaredNorm() > guard_trigger2_) guard_tripped();
