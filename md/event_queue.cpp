@@ -81,7 +81,7 @@ std::size_t bucket_count_for(std::size_t capacity) {
   while (count < capacity && count < (std::size_t{1} << 22)) count *= 2;
   return count;
 }
-constexpr double target_per_bucket = 4.0;  // events popped per bucket visited
+constexpr double target_per_bucket = 2.0;  // events popped per bucket visited (2: sorted buckets stay short)
 }  // namespace
 
 CalendarEventQueue::CalendarEventQueue(std::size_t capacity)
@@ -289,7 +289,7 @@ std::pair<double, std::int32_t> CalendarEventQueue::top_slow() {
 }
 
 void CalendarEventQueue::adapt() {
-  // Events per bucket visited; keep it within [1/2, 16] (target 4) by rescaling the width.
+  // Events per bucket visited; keep it within [1/4, 8] (target 2) by rescaling the width.
   const double ratio = static_cast<double>(pops_) / static_cast<double>(std::max<std::uint64_t>(advances_, 1));
   if (ratio > 4.0 * target_per_bucket || ratio < 0.125 * target_per_bucket)
     rebuild(width_ * std::clamp(target_per_bucket / ratio, 1.0 / 64.0, 64.0));

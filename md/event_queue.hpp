@@ -49,7 +49,7 @@ class HeapEventQueue {
 /// Bucketed event calendar: bucket k holds events with floor(time/width) = k. The bucket being
 /// processed is a small sorted array (a HeapEventQueue if it holds more than a few dozen events); the next `bucket_count` buckets are singly linked lists; later
 /// events sit in an overflow list that is redistributed once per sweep. The width adapts so that a
-/// bucket holds a few events (it is rebuilt when the pop-per-bucket ratio leaves [1/4, 8]).
+/// bucket holds a few events (it is rebuilt when the pop-per-bucket ratio leaves [1/4, 8] around 2).
 class CalendarEventQueue {
  public:
   explicit CalendarEventQueue(std::size_t capacity = 0);
