@@ -95,7 +95,7 @@ std::int32_t CellList<D>::cell_of(const Vec<D>& x) const {
 }
 
 template <int D>
-void CellList<D>::remove(std::int32_t id, std::int32_t cell) {
+void CellList<D>::remove_further(std::int32_t id, std::int32_t cell) {
   std::int32_t* link = &head_[cell];
   while (*link != id) {
     if (*link < 0) throw std::logic_error("cell list: particle " + std::to_string(id) + " not in its cell");

@@ -54,7 +54,10 @@ class CellList {
     next_[id] = head_[cell];
     head_[cell] = id;
   }
-  void remove(std::int32_t id, std::int32_t cell);
+  void remove(std::int32_t id, std::int32_t cell) {
+    if (head_[cell] == id) head_[cell] = next_[id];  // the usual case: a cell holds a particle or two
+    else remove_further(id, cell);
+  }
   std::int32_t first(std::int32_t cell) const { return head_[cell]; }
   std::int32_t next(std::int32_t id) const { return next_[id]; }
 
@@ -99,6 +102,7 @@ class CellList {
     f(index(n), shift);
   }
   CellList() = default;
+  void remove_further(std::int32_t id, std::int32_t cell);
   void set_up(std::size_t particle_count);
   bool periodic_ = false;
   Vec<D> lower_ = Vec<D>::Zero(), box_ = Vec<D>::Zero(), width_ = Vec<D>::Zero();

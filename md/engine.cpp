@@ -147,7 +147,7 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* c
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first,
+[[gnu::always_inline]] inline void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first,
                                   const std::int32_t* last) {
   // Same arithmetic and visiting order as scan_cell with a zero shift, with the particle's data
   // and its best prediction kept in registers across the cells.
