@@ -83,6 +83,9 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--window-decades", options->config.window_decades,
                       "Window fit over the last W decades of recorded time, (0, 6]")
       ->capture_default_str();
+  command->add_option("--until", options->config.until,
+                      "Measure as of time T: ignore recorded times after T (default: all); "
+                      "T in [second, last recorded time]");
   command->add_option("--observables", options->observables,
                       "Comma-separated subset of R_imp,C_imp,V_imp,u_imp,T0,n0 (default: all recorded)");
   command->add_option("--hydro-cells", options->config.hydro_cells,

@@ -43,6 +43,7 @@ common::Json verdict_json(const CompareResult& result) {
           {"against", to_string(result.against)},
           {"sigma", result.sigma},
           {"allowance", result.allowance},
+          {"until", result.until},
           {"run_dir", result.run.directory.string()},
           {"observables", observables},
           {"pass", result.pass}};
@@ -144,6 +145,7 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
   std::ostringstream md;
   md << "# coldblast comparison: MD against " << to_string(result.against) << "\n\n"
      << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
+     << ", recorded times up to t = " << format_number(result.until)
      << ". Verdict: **" << (result.pass ? "PASS" : "FAIL") << "** (tolerance: " << format_number(result.sigma)
      << " sigma";
   if (result.against != Reference::paper) md << " + allowance " << format_number(result.allowance);

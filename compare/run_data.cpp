@@ -162,6 +162,24 @@ CsvTable read_numeric_csv(const std::filesystem::path& path) {
   return table;
 }
 
+void truncate_run(RunData& run, double until) {
+  for (auto& [name, series] : run.series) {
+    const double limit = until * (1.0 + 1e-9);
+    const auto keep = static_cast<std::size_t>(std::upper_bound(series.t.begin(), series.t.end(), limit) - series.t.begin());
+    if (keep < 2 || until > series.t.back() * (1.0 + 1e-9)) {
+      std::ostringstream message;
+      message.precision(10);
+      message << "--until = " << until << " is outside the recorded times of " << name << " in "
+              << run.directory.string() << ": allowed [" << (series.t.size() > 1 ? series.t[1] : series.t.front())
+              << ", " << series.t.back() << "] (the second to the last recorded time)";
+      throw std::invalid_argument(message.str());
+    }
+    series.t.resize(keep);
+    for (auto& row : series.sums) row.resize(keep);
+    for (auto& row : series.counts) row.resize(keep);
+  }
+}
+
 RunData read_run(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory))
     throw std::invalid_argument("RUN_DIR = " + directory.string() + " is not a directory");

@@ -48,6 +48,11 @@ struct RunData {
 /// file (and line) when the directory, a file or a field is missing or malformed.
 RunData read_run(const std::filesystem::path& directory);
 
+/// Drops every recorded time later than `until` (relative tolerance 1e-9) from every series of
+/// the run, so that exponents are measured as of that time; throws std::invalid_argument naming
+/// --until and the allowed range [second recorded time, last recorded time] otherwise.
+void truncate_run(RunData& run, double until);
+
 /// A numeric CSV table: column names and rows (comment lines '#' skipped).
 struct CsvTable {
   std::vector<std::string> columns;

@@ -51,6 +51,8 @@ void CompareConfig::validate() const {
   require_in_range("--sigma", sigma, 0.0, 10.0, Bound::open, Bound::closed);
   if (allowance >= 0) require_in_range("--allowance", allowance, 0.0, 1.0, Bound::closed, Bound::closed);
   require_in_range("--window-decades", window_decades, 0.0, 6.0, Bound::open, Bound::closed);
+  if (until != 0.0 && !(until > 0.0 && std::isfinite(until)))
+    throw std::invalid_argument("--until = " + std::to_string(until) + " must be a positive finite time (0: all times)");
   common::require_integer_in_range("--hydro-cells", hydro_cells, 16, 100000);
   for (const auto& name : observables) {
     const auto& known = table1_observables();
@@ -110,6 +112,7 @@ CompareResult run_compare(const CompareConfig& config, const ReferenceExponents&
   config.validate();
   CompareResult result;
   result.run = read_run(config.run_dir);
+  if (config.until > 0) truncate_run(result.run, config.until);
   result.d = result.run.d;
   result.against = config.against;
   result.sigma = config.sigma;
@@ -148,6 +151,7 @@ CompareResult run_compare(const CompareConfig& config, const ReferenceExponents&
     v.alpha_error = v.running.back().error;
     v.t_measured = v.running.back().t;
     const double t_last = series.t.back();
+    result.until = std::max(result.until, t_last);
     v.window = fit_power_law(series, t_last * std::pow(10.0, -config.window_decades), t_last);
 
     double combined = v.alpha_error;

@@ -41,6 +41,9 @@ struct CompareConfig {
   /// the documented default of the reference (theory 0.10, hydro 0.05, paper 0: docs/compare.md).
   double allowance = -1.0;
   double window_decades = 0.5;           ///< window fit over [t_max 10^-w, t_max], w in (0, 6]
+  /// Compare as of this time: recorded times > until are ignored (0: use every recorded time). It
+  /// must lie in [second recorded time, last recorded time] of the run.
+  double until = 0.0;
   std::vector<std::string> observables;  ///< empty: every Table 1 observable present in the run
   int hydro_cells = 256;                 ///< Navier–Stokes cells for Reference::hydro, [16, 100000]
   void validate() const;
@@ -69,6 +72,7 @@ struct CompareResult {
   int d = 0;
   Reference against = Reference::theory;
   double sigma = 0, allowance = 0;
+  double until = 0;  ///< the last recorded time used (the run's last one unless --until was given)
   std::vector<ObservableVerdict> observables;
   bool pass = false;
   RunData run;

@@ -114,3 +114,42 @@ TEST_CASE("bad compare configs name the option", "[fast]") {
   CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--allowance"));
   CHECK_THROWS_WITH(parse_reference("md"), Catch::Contains("--against"));
 }
+
+TEST_CASE("--until measures the exponents as of an earlier time of the same run", "[fast]") {
+  // T0 follows the theory's t^{-4/5} up to t_K, then t^{-4/5 + 0.3}: the full run fails, the run
+  // seen up to t_K passes and uses exactly the times up to t_K.
+  const fs::path dir = make_run(2);
+  auto run = read_run(dir);
+  BlockSeries& T0 = run.series.at("T0");
+  const std::size_t K = 11;
+  const double t_K = T0.t[K];
+  for (auto& row : T0.sums)
+    for (std::size_t k = K + 1; k < T0.time_count(); ++k) row[k] *= std::pow(T0.t[k] / t_K, 0.3);
+  write_synthetic_run(dir, 2, run.series);
+
+  CompareConfig config;
+  config.run_dir = dir;
+  config.allowance = 0.0;
+  config.sigma = 4.0;
+  const CompareResult full = run_compare(config);
+  CHECK_FALSE(full.pass);
+  CHECK(full.until == Approx(T0.t.back()));
+
+  config.until = t_K;
+  const CompareResult early = run_compare(config);
+  CHECK(early.pass);
+  CHECK(early.until == Approx(t_K));
+  for (const auto& v : early.observables) {
+    CHECK(v.running.back().t_next == Approx(t_K));
+    CHECK(v.t_measured == Approx(T0.t[K - 1]));
+    CHECK(v.window.t_last == Approx(t_K));
+  }
+
+  config.until = T0.t[1] * 0.99;  // fewer than two times left
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--until") && Catch::Contains("allowed ["));
+  config.until = T0.t.back() * 1.01;  // beyond the run
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--until"));
+  config.until = -1.0;
+  CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--until"));
+  fs::remove_all(dir);
+}
