@@ -12,18 +12,24 @@ namespace coldblast::md {
 inline constexpr double never = std::numeric_limits<double>::infinity();
 
 /// Time until contact τ >= 0 of two particles separated by dr = r_j - r_i with relative velocity
-/// dv = v_j - v_i and contact distance sigma (sum of radii); `never` if they do not approach.
-/// Slightly overlapping approaching pairs (round-off) collide at once (τ = 0).
+/// dv = v_j - v_i and squared contact distance sigma2 (sum of radii, squared); `never` if they do
+/// not approach. Slightly overlapping approaching pairs (round-off) collide at once (τ = 0).
 template <int D>
-inline double contact_time(const Vec<D>& dr, const Vec<D>& dv, double sigma) {
+inline double contact_time_squared(const Vec<D>& dr, const Vec<D>& dv, double sigma2) {
   const double b = dr.dot(dv);
   if (b >= 0.0) return never;
   const double v2 = dv.squaredNorm();
-  const double c = dr.squaredNorm() - sigma * sigma;
+  const double c = dr.squaredNorm() - sigma2;
   const double disc = b * b - v2 * c;
   if (disc < 0.0) return never;
   const double tau = c / (-b + std::sqrt(disc));
   return tau > 0.0 ? tau : 0.0;
+}
+
+/// The same with the contact distance sigma (length).
+template <int D>
+inline double contact_time(const Vec<D>& dr, const Vec<D>& dv, double sigma) {
+  return contact_time_squared<D>(dr, dv, sigma * sigma);
 }
 
 /// Result of one elastic collision: the impulse on j is -impulse on i.

@@ -41,7 +41,10 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
     throw std::invalid_argument("initial state: position, velocity and species sizes differ");
   if (state.size() >= static_cast<std::size_t>(INT32_MAX)) throw std::invalid_argument("too many particles");
   for (int s = 0; s < 2; ++s)
-    for (int r = 0; r < 2; ++r) sigma_[s][r] = radius_[s] + radius_[r];
+    for (int r = 0; r < 2; ++r) {
+      sigma_[s][r] = radius_[s] + radius_[r];
+      sigma2_[s][r] = sigma_[s][r] * sigma_[s][r];
+    }
   same_radius_ = radius_[0] == radius_[1];
   if (!config.periodic) {
     // Positions are checked at every event of a moving particle, and a particle has an event at
@@ -116,15 +119,15 @@ template <int D, class Queue>
 template <bool Shifted>
 inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift,
                                         const Vec<D>& position, const Vec<D>& velocity, double time,
-                                        const double* sigma_row, Prediction& best) const {
+                                        const double* sigma2_row, bool same_radius, Prediction& best) const {
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
     if (j == id) continue;
     const Particle<D>& q = particles_[j];
     Vec<D> dr;
     if constexpr (Shifted) dr = q.position + q.velocity * (time - q.time) + shift - position;
     else dr = q.position + q.velocity * (time - q.time) - position;
-    const double sigma = same_radius_ ? sigma_row[0] : sigma_row[species_[j]];
-    const double tau = contact_time<D>(dr, q.velocity - velocity, sigma);
+    const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
+    const double tau = contact_time_squared<D>(dr, q.velocity - velocity, sigma2);
     const double t = time + tau;
     if (t < best.time) {
       best.time = t;
@@ -141,8 +144,10 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* c
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
   Prediction best = predictions_[id];
-  const double* sigma_row = sigma_[species_[id]];
-  for (int m = 0; m < count; ++m) scan_list<true>(id, cells[m], shifts[m], position, velocity, time, sigma_row, best);
+  const double* sigma2_row = sigma2_[species_[id]];
+  const bool same_radius = same_radius_;  // a local: stays in a register across the stores to best
+  for (int m = 0; m < count; ++m)
+    scan_list<true>(id, cells[m], shifts[m], position, velocity, time, sigma2_row, same_radius, best);
   predictions_[id] = best;
 }
 
@@ -155,10 +160,11 @@ template <int D, class Queue>
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
   Prediction best = predictions_[id];
-  const double* sigma_row = sigma_[species_[id]];
+  const double* sigma2_row = sigma2_[species_[id]];
+  const bool same_radius = same_radius_;
   const Vec<D> no_shift = Vec<D>::Zero();
   for (; first != last; ++first)
-    scan_list<false>(id, base + *first, no_shift, position, velocity, time, sigma_row, best);
+    scan_list<false>(id, base + *first, no_shift, position, velocity, time, sigma2_row, same_radius, best);
   predictions_[id] = best;
 }
 

@@ -94,7 +94,8 @@ class Engine {
   // every particle of `cell`, displaced by `shift` when Shifted, keeping the earliest contact.
   template <bool Shifted>
   void scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift, const Vec<D>& position,
-                 const Vec<D>& velocity, double time, const double* sigma_row, Prediction& best) const;
+                 const Vec<D>& velocity, double time, const double* sigma2_row, bool same_radius,
+                 Prediction& best) const;
   void full_scan(std::int32_t id);
   void schedule(std::int32_t id);
   // Time of the particle's next cell crossing (`never` at rest), and its crossing_ code.
@@ -113,7 +114,7 @@ class Engine {
   std::vector<std::uint8_t> species_, moving_flag_;
   std::vector<std::uint8_t> crossing_;  // scheduled cell crossing: 2 axis + (direction > 0)
   std::vector<std::int32_t> moving_;
-  double radius_[2], mass_[2], sigma_[2][2];
+  double radius_[2], mass_[2], sigma_[2][2], sigma2_[2][2];  // sigma2_ = sigma_²
   bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
   double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run
   CellList<D> cells_;
