@@ -107,6 +107,7 @@ void CalendarEventQueue::clear() {
   size_ = in_lists_ = overflow_size_ = 0;
   pops_ = advances_ = 0;
   width_known_ = false;
+  current_ = window_end_ = unknown_bucket;
 }
 
 std::int64_t CalendarEventQueue::bucket_of_slow(double scaled) {
@@ -118,13 +119,13 @@ std::int64_t CalendarEventQueue::bucket_of_slow(double scaled) {
 
 void CalendarEventQueue::insert(std::int32_t id, double time) {
   time_[id] = time;
-  const std::int64_t b = width_known_ ? bucket_of(time) : std::numeric_limits<std::int64_t>::max();
-  if (width_known_ && b <= current_) {
+  const std::int64_t b = bucket_of(time);  // > unknown_bucket: overflow until the width is known
+  if (b <= current_) {
     add_to_current(id, time);
     return;
   }
   std::int32_t* list = nullptr;
-  if (width_known_ && b < window_end_) {
+  if (b < window_end_) {
     const std::int32_t slot = static_cast<std::int32_t>(b & mask_);
     where_[id] = slot;
     list = &head_[slot];

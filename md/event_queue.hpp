@@ -80,6 +80,7 @@ class CalendarEventQueue {
   std::pair<double, std::int32_t> top_slow();
   void adapt();
   static constexpr std::int32_t absent = -3, in_heap = -1, in_overflow = -2;
+  static constexpr std::int64_t unknown_bucket = INT64_MIN;
   // where_ of an event in sorted_: -4 - (its index), so that where_ <= -4.
   static constexpr std::int32_t sorted_code(std::size_t index) { return -4 - static_cast<std::int32_t>(index); }
   static constexpr std::size_t sorted_index(std::int32_t where) { return static_cast<std::size_t>(-4 - where); }
@@ -133,8 +134,9 @@ class CalendarEventQueue {
   std::vector<double> time_;           // event time per id
   std::int32_t overflow_ = -1;         // overflow list head
   std::int64_t mask_ = 0;              // bucket_count - 1 (a power of two)
-  std::int64_t current_ = 0;           // absolute index of the bucket in heap_
-  std::int64_t window_end_ = 0;        // lists hold buckets < window_end_, overflow the rest
+  // Before the width is known both are at their minimum, so every event goes to the overflow list.
+  std::int64_t current_ = unknown_bucket;     // absolute index of the current bucket
+  std::int64_t window_end_ = unknown_bucket;  // lists hold buckets < window_end_, overflow the rest
   double width_ = 1.0;                 // bucket width (time)
   double inverse_width_ = 1.0;
   std::size_t size_ = 0, in_lists_ = 0, overflow_size_ = 0;
