@@ -1,7 +1,7 @@
 #pragma once
 // Event calendars holding at most one event per particle (Smallenburg's EDMD): an indexed binary
 // heap (the baseline) and a bucketed calendar (time buckets of adaptive width whose current bucket
-// is a small heap; far events wait in an overflow list). Both order events by (time, id), so the
+// is a small sorted array; far events wait in an overflow list). Both order events by (time, id), so the
 // earliest event is unique and both queues agree exactly (tests compare them with a brute force).
 #include <array>
 #include <cstdint>
@@ -47,9 +47,10 @@ class HeapEventQueue {
 };
 
 /// Bucketed event calendar: bucket k holds events with floor(time/width) = k. The bucket being
-/// processed is a small sorted array (a HeapEventQueue if it holds more than a few dozen events); the next `bucket_count` buckets are singly linked lists; later
-/// events sit in an overflow list that is redistributed once per sweep. The width adapts so that a
-/// bucket holds a few events (it is rebuilt when the pop-per-bucket ratio leaves [1/4, 8] around 2).
+/// processed is a sorted array of at most 32 events (an indexed heap beyond that); the next
+/// `bucket_count` buckets are doubly linked lists; later events sit in an overflow list that is
+/// redistributed once per sweep. The width adapts so that about 2 events are popped per bucket
+/// (it is rebuilt when the pop-per-bucket ratio leaves [1/4, 8]).
 class CalendarEventQueue {
  public:
   explicit CalendarEventQueue(std::size_t capacity = 0);
