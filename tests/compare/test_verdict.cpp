@@ -115,7 +115,7 @@ TEST_CASE("bad compare configs name the option", "[fast]") {
   CHECK_THROWS_WITH(parse_reference("md"), Catch::Contains("--against"));
 }
 
-TEST_CASE("--until measures the exponents as of an earlier time of the same run", "[fast]") {
+TEST_CASE("compare until T measures the exponents as of an earlier time of the same run", "[fast]") {
   // T0 follows the theory's t^{-4/5} up to t_K, then t^{-4/5 + 0.3}: the full run fails, the run
   // seen up to t_K passes and uses exactly the times up to t_K.
   const fs::path dir = make_run(2);
