@@ -123,12 +123,21 @@ inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, cons
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
     if (j == id) continue;
     const Particle<D>& q = particles_[j];
+    // The pair is evaluated at the later of the two stored times (the last time either changed
+    // course), not at the time of the scan: the predicted contact time is then a function of the
+    // two stored states alone, the same whichever of the two scans and whenever it scans, so
+    // the trajectory does not depend on the cell grid (docs/benchmarks.md, "Large impurities").
+    // One of the two extrapolations is by zero time, hence exact.
+    const double reference = std::max(time, q.time);
+    const Vec<D> own = position + velocity * (reference - time);
     Vec<D> dr;
-    if constexpr (Shifted) dr = q.position + q.velocity * (time - q.time) + shift - position;
-    else dr = q.position + q.velocity * (time - q.time) - position;
+    // The image shift is added last, so the pair seen from the other side (shift negated) gives
+    // exactly -dr and the same contact time.
+    if constexpr (Shifted) dr = (q.position + q.velocity * (reference - q.time) - own) + shift;
+    else dr = q.position + q.velocity * (reference - q.time) - own;
     const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
     const double tau = contact_time_squared<D>(dr, q.velocity - velocity, sigma2);
-    const double t = time + tau;
+    const double t = reference + tau;
     if (t < best.time) {
       best.time = t;
       best.partner = j;
@@ -190,7 +199,10 @@ void Engine<D, Queue>::schedule(std::int32_t id) {
   const double crossing = crossing_time(particles_[id], code);
   crossing_[id] = code;
   const Prediction& p = predictions_[id];
-  const double t = std::min(crossing, p.time);
+  // A contact predicted from the stored states lies after now_ in exact arithmetic (both
+  // particles flew straight since the reference time without touching); round-off of a grazing
+  // or touching pair could put it a hair earlier, and the calendar must not go back in time.
+  const double t = std::max(std::min(crossing, p.time), now_);
   if (t == never) queue_.remove(id);
   else queue_.set(id, t);
 }
@@ -206,9 +218,8 @@ void Engine<D, Queue>::process(std::int32_t id, double t) {
       collide(id, partner, t);
       return;
     }
-    ++stale_count_;
-    particles_[id].advance(t);  // stale: the partner changed course since the prediction
-    full_scan(id);
+    ++stale_count_;  // the partner changed course since the prediction: predict again
+    full_scan(id);   // from the stored state (bookkeeping events leave it untouched)
     schedule(id);
     return;
   }
@@ -255,11 +266,17 @@ template <int D, class Queue>
 void Engine<D, Queue>::cross(std::int32_t id, double t) {
   Particle<D>& p = particles_[id];
   const int axis = crossing_[id] >> 1, direction = (crossing_[id] & 1) ? 1 : -1;
-  p.advance(t);
+  (void)t;  // the stored (position, time) stays that of the last collision: a crossing is bookkeeping
   std::int32_t cell = p.cell + direction * cells_.stride(axis);  // open grid: never at its edge (guard)
   if (config_.periodic) {
     auto c = cells_.coordinates(p.cell);
     c[axis] += direction;
+    // Crossing a face of the box moves the stored position (at the particle's own time) by a
+    // box length to its periodic image, which rounds it: needed, since image shifts are only
+    // applied across the faces. Every grid of one box shares its faces, but a face's computed
+    // crossing time depends on the grid by round-off, and a pair predicted once in each image
+    // frame gets two slightly different contact times; so periodic trajectories, unlike open
+    // ones, differ by round-off between cell widths (statistically equivalent).
     if (c[axis] < 0) {
       c[axis] += cells_.count(axis);
       p.position[axis] += config_.box[axis];
