@@ -28,10 +28,10 @@ CellList<D> CellList<D>::periodic(const Vec<D>& box, double min_width, std::size
 
 template <int D>
 CellList<D> CellList<D>::open(double region_radius, double guard_radius, double min_width,
-                              std::size_t particle_count) {
+                              std::size_t particle_count, int margin_cells) {
   CellList list;
   list.periodic_ = false;
-  const double cells_per_axis = 2.0 * std::ceil(region_radius / min_width) + 4.0;
+  const double cells_per_axis = 2.0 * std::ceil(region_radius / min_width) + 2.0 * std::max(2, margin_cells);
   if (std::pow(cells_per_axis, D) > 2e9)
     throw std::invalid_argument("the blast region needs more than 2e9 cells: lower t_max or raise cell_width");
   for (int k = 0; k < D; ++k) {
@@ -82,6 +82,30 @@ void CellList<D>::set_up(std::size_t particle_count) {
     if (k == D) break;
     ++o[k];
   }
+}
+
+template <int D>
+std::vector<std::int32_t> CellList<D>::stencil_deltas(int reach, int axis, int offset) const {
+  std::vector<std::int32_t> deltas;
+  std::array<int, D> o, lo, hi;
+  for (int k = 0; k < D; ++k) {
+    lo[k] = k == axis ? offset : -reach;
+    hi[k] = k == axis ? offset : reach;
+    o[k] = lo[k];
+  }
+  while (true) {  // k = 0 runs fastest
+    std::int32_t delta = 0;
+    for (int k = 0; k < D; ++k) delta += o[k] * stride_[k];
+    deltas.push_back(delta);
+    int k = 0;
+    while (k < D && o[k] == hi[k]) {
+      o[k] = lo[k];
+      ++k;
+    }
+    if (k == D) break;
+    ++o[k];
+  }
+  return deltas;
 }
 
 template <int D>

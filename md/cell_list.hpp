@@ -16,9 +16,11 @@ class CellList {
  public:
   /// Periodic box [0, box_k) with cells of width >= min_width (at least 3 cells per axis).
   static CellList periodic(const Vec<D>& box, double min_width, std::size_t particle_count);
-  /// Open cube [-half, half)^D, half = region_radius + 2 cell widths (the engine keeps moving
-  /// particles inside guard_radius < region_radius, so their neighbour cells always exist).
-  static CellList open(double region_radius, double guard_radius, double min_width, std::size_t particle_count);
+  /// Open cube [-half, half)^D, half = region_radius + `margin_cells` (>= 2) cell widths (the engine
+  /// keeps moving particles inside guard_radius < region_radius, so their neighbour cells always
+  /// exist; a wider stencil of reach k needs k + 1 cells of margin).
+  static CellList open(double region_radius, double guard_radius, double min_width, std::size_t particle_count,
+                       int margin_cells = 2);
 
   bool is_periodic() const { return periodic_; }
   std::int32_t cell_count() const { return static_cast<std::int32_t>(head_.size()); }
@@ -70,6 +72,10 @@ class CellList {
   const std::vector<std::int32_t>& slab_deltas(int axis, int direction) const {
     return slab_delta_[axis][direction > 0 ? 1 : 0];
   }
+
+  /// Index offsets (no wrap) of the (2 reach + 1)^D cells within `reach` cells of a cell per axis,
+  /// or, with axis >= 0, of the (2 reach + 1)^(D-1) of them at offset `offset` along `axis`.
+  std::vector<std::int32_t> stencil_deltas(int reach, int axis = -1, int offset = 0) const;
 
   /// Writes the cells around a cell that wraps (as for_each_neighbour_cell, same order) to `cells`
   /// and their image shifts to `shifts` (room for 3^D each); returns their number. With axis >= 0,

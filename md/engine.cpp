@@ -8,20 +8,50 @@
 namespace coldblast::md {
 
 namespace {
+// Big particles. In open geometry (the blast), when the impurities are larger than the host,
+// cells as wide as the largest contact distance would make every host scan see (r_imp/r_host)^D
+// times the candidates. Instead the cells are sized for the host (2 r_host, or cell_width if
+// larger) and the impurities are "big": a host-big pair touches at distance rho = r_imp + r_host,
+// so within k = ceil(rho / w) cells per axis of the big particle's cell.
+//  - A big particle's full scan covers its (2k+1)^D stencil, and on a crossing it scans the
+//    newly covered slab at offset k; big-big pairs are tested through the short list of all big
+//    particles at every full scan of either (no locality needed: the list is short).
+//  - covered_[cell] counts the big particles whose stencil covers the cell (updated on a big
+//    particle's crossing: one slab added, one removed). A host doing a full scan, or crossing
+//    into a covered cell, also tests every big particle.
+// Why no host-big contact is missed: let the pair touch at T, both flying straight since t_ref
+// (the later of their last collisions; each changed course then and scanned in full). At T the
+// host's cell lies in the big particle's stencil. Take the last time s in [t_ref, T] at which
+// that became true. If s = t_ref, the one that collided at t_ref scanned in full then and saw
+// the other (the big particle through its stencil, the host through covered_ > 0); otherwise it
+// became true at s by a crossing, either of the big particle (its new slab holds the host's cell)
+// or of the host (into a covered cell: it tests every big particle). From s on the relation holds,
+// so any later full scan of either (a stale prediction) sees the pair again.
+// Periodic geometry (equilibrium) keeps cells as wide as the largest contact distance.
+constexpr std::size_t max_big_particles = 64;  // beyond that the short list is not short: wide cells
+
+struct CellPlan {
+  double width;
+  int big_reach;  // 0: no big particles
+};
+
 template <int D>
-CellList<D> make_cells(const EngineConfig<D>& config, double width, std::size_t count) {
-  if (config.periodic) return CellList<D>::periodic(config.box, width, count);
-  return CellList<D>::open(config.region_radius, config.guard_radius, width, count);
+CellPlan plan_cells(const EngineConfig<D>& config, const InitialState<D>& state) {
+  const double host = state.host.radius, impurity = state.impurity.radius;
+  const double largest_contact = 2.0 * std::max(host, impurity);
+  std::size_t impurities = 0;
+  for (const std::uint8_t s : state.species) impurities += s != host_species;
+  const bool big = !config.periodic && !config.wide_cells_for_big && impurity > host &&
+                   config.cell_width < largest_contact && impurities > 0 && impurities <= max_big_particles;
+  if (!big) return {std::max(config.cell_width, largest_contact), 0};
+  const double width = std::max(config.cell_width, 2.0 * host);
+  return {width, static_cast<int>(std::ceil((impurity + host) / width))};
 }
 
-double largest_contact(const InitialState<2>& s) { return 2.0 * std::max(s.host.radius, s.impurity.radius); }
-double largest_contact(const InitialState<3>& s) { return 2.0 * std::max(s.host.radius, s.impurity.radius); }
-
 template <int D>
-double choose_width(const EngineConfig<D>& config, const InitialState<D>& state) {
-  const double contact = largest_contact(state);
-  if (config.cell_width > 0.0) return std::max(config.cell_width, contact);
-  return contact;
+CellList<D> make_cells(const EngineConfig<D>& config, const CellPlan& plan, std::size_t count) {
+  if (config.periodic) return CellList<D>::periodic(config.box, plan.width, count);
+  return CellList<D>::open(config.region_radius, config.guard_radius, plan.width, count, plan.big_reach + 1);
 }
 }  // namespace
 
@@ -35,7 +65,7 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       crossing_(state.size(), 0),
       radius_{state.host.radius, state.impurity.radius},
       mass_{state.host.mass, state.impurity.mass},
-      cells_(make_cells(config, choose_width(config, state), state.size())),
+      cells_(make_cells(config, plan_cells(config, state), state.size())),
       queue_(state.size()) {
   if (state.velocity.size() != state.size() || state.species.size() != state.size())
     throw std::invalid_argument("initial state: position, velocity and species sizes differ");
@@ -65,6 +95,20 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
           throw std::invalid_argument("initial position outside the periodic box");
     p.cell = cells_.cell_of(p.position);
     cells_.insert(static_cast<std::int32_t>(i), p.cell);
+  }
+  big_reach_ = plan_cells(config, state).big_reach;
+  if (big_reach_ != 0) {
+    big_stencil_ = cells_.stencil_deltas(big_reach_);
+    for (int k = 0; k < D; ++k) {
+      big_slab_[k][0] = cells_.stencil_deltas(big_reach_, k, -big_reach_);
+      big_slab_[k][1] = cells_.stencil_deltas(big_reach_, k, big_reach_);
+    }
+    covered_.assign(cells_.cell_count(), 0);
+    for (std::size_t i = 0; i < state.size(); ++i)
+      if (species_[i] != host_species) {
+        big_.push_back(static_cast<std::int32_t>(i));
+        cover(particles_[i].cell, big_stencil_, 1);
+      }
   }
   std::size_t initially_moving = 0;
   for (const Vec<D>& v : state.velocity) initially_moving += v.squaredNorm() > 0.0;
@@ -122,28 +166,55 @@ inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, cons
                                         const double* sigma2_row, bool same_radius, Prediction& best) const {
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
     if (j == id) continue;
-    const Particle<D>& q = particles_[j];
-    // The pair is evaluated at the later of the two stored times (the last time either changed
-    // course), not at the time of the scan: the predicted contact time is then a function of the
-    // two stored states alone, the same whichever of the two scans and whenever it scans, so
-    // the trajectory does not depend on the cell grid (docs/benchmarks.md, "Large impurities").
-    // One of the two extrapolations is by zero time, hence exact.
-    const double reference = std::max(time, q.time);
-    const Vec<D> own = position + velocity * (reference - time);
-    Vec<D> dr;
-    // The image shift is added last, so the pair seen from the other side (shift negated) gives
-    // exactly -dr and the same contact time.
-    if constexpr (Shifted) dr = (q.position + q.velocity * (reference - q.time) - own) + shift;
-    else dr = q.position + q.velocity * (reference - q.time) - own;
-    const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
-    const double tau = contact_time_squared<D>(dr, q.velocity - velocity, sigma2);
-    const double t = reference + tau;
-    if (t < best.time) {
-      best.time = t;
-      best.partner = j;
-      best.partner_collisions = q.collisions;
-    }
+    test_pair<Shifted>(j, shift, position, velocity, time, sigma2_row, same_radius, best);
   }
+}
+
+template <int D, class Queue>
+template <bool Shifted>
+[[gnu::always_inline]] inline void Engine<D, Queue>::test_pair(std::int32_t j, const Vec<D>& shift,
+                                                               const Vec<D>& position, const Vec<D>& velocity,
+                                                               double time, const double* sigma2_row,
+                                                               bool same_radius, Prediction& best) const {
+  const Particle<D>& q = particles_[j];
+  // The pair is evaluated at the later of the two stored times (the last time either changed
+  // course), not at the time of the scan: the predicted contact time is then a function of the
+  // two stored states alone, the same whichever of the two scans and whenever it scans, so
+  // the trajectory does not depend on the cell grid (docs/benchmarks.md, "Large impurities").
+  // One of the two extrapolations is by zero time, hence exact.
+  const double reference = std::max(time, q.time);
+  const Vec<D> own = position + velocity * (reference - time);
+  Vec<D> dr;
+  // The image shift is added last, so the pair seen from the other side (shift negated) gives
+  // exactly -dr and the same contact time.
+  if constexpr (Shifted) dr = (q.position + q.velocity * (reference - q.time) - own) + shift;
+  else dr = q.position + q.velocity * (reference - q.time) - own;
+  const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
+  const double tau = contact_time_squared<D>(dr, q.velocity - velocity, sigma2);
+  const double t = reference + tau;
+  if (t < best.time) {
+    best.time = t;
+    best.partner = j;
+    best.partner_collisions = q.collisions;
+  }
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::scan_bigs(std::int32_t id) {
+  const Particle<D>& p = particles_[id];
+  const Vec<D> position = p.position, velocity = p.velocity;
+  const double time = p.time;
+  Prediction best = predictions_[id];
+  const double* sigma2_row = sigma2_[species_[id]];
+  const Vec<D> no_shift = Vec<D>::Zero();
+  for (const std::int32_t j : big_)
+    if (j != id) test_pair<false>(j, no_shift, position, velocity, time, sigma2_row, false, best);
+  predictions_[id] = best;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::cover(std::int32_t cell, const std::vector<std::int32_t>& deltas, int change) {
+  for (const std::int32_t delta : deltas) covered_[cell + delta] = static_cast<std::uint8_t>(covered_[cell + delta] + change);
 }
 
 template <int D, class Queue>
@@ -184,8 +255,14 @@ void Engine<D, Queue>::full_scan(std::int32_t id) {
   p.partner = -1;
   const std::int32_t cell = particles_[id].cell;
   if (!cells_.wraps(cell)) {
+    if (is_big(id)) {
+      scan_cells(id, cell, big_stencil_.data(), big_stencil_.data() + big_stencil_.size());
+      scan_bigs(id);
+      return;
+    }
     const auto& deltas = cells_.neighbour_deltas();
     scan_cells(id, cell, deltas.data(), deltas.data() + deltas.size());
+    if (big_reach_ != 0 && covered_[cell] != 0) scan_bigs(id);
     return;
   }
   std::int32_t cells[27];
@@ -292,11 +369,21 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
   check_guard(id);
   if (config_.overlap_check) check_overlaps_of(id);
   Prediction& prediction = predictions_[id];
-  if (prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions) {
+  const bool stale = prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions;
+  if (is_big(id)) {
+    // Its stencil moves by one cell: the slab at offset k in the direction of motion comes in,
+    // the one at k + 1 behind goes out.
+    const auto& incoming = big_slab_[axis][direction > 0 ? 1 : 0];
+    cover(p.cell, incoming, 1);
+    cover(p.cell - direction * cells_.stride(axis), big_slab_[axis][direction > 0 ? 0 : 1], -1);
+    if (stale) full_scan(id);
+    else scan_cells(id, p.cell, incoming.data(), incoming.data() + incoming.size());
+  } else if (stale) {
     full_scan(id);
   } else if (!cells_.wraps(p.cell)) {
     const auto& deltas = cells_.slab_deltas(axis, direction);
     scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size());
+    if (big_reach_ != 0 && covered_[p.cell] != 0) scan_bigs(id);
   } else {
     std::int32_t cells[9];
     Vec<D> shifts[9];
@@ -342,21 +429,28 @@ Vec<D> Engine<D, Queue>::momentum() const {
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::check_overlaps_of(std::int32_t id) const {
+void Engine<D, Queue>::check_overlaps_of(std::int32_t id, double tolerance) const {
   const Vec<D> x = particles_[id].position_at(now_);
-  cells_.for_each_neighbour_cell(particles_[id].cell, [&](std::int32_t cell, const Vec<D>& shift) {
-    for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
-      if (j == id) continue;
-      const double sigma = sigma_[species_[id]][species_[j]];
-      const double distance = (particles_[j].position_at(now_) + shift - x).norm();
-      if (distance < sigma * (1.0 - 1e-9)) {
-        std::ostringstream message;
-        message << "overlap: particles " << id << " and " << j << " at distance " << distance << " < " << sigma
-                << " at t = " << now_;
-        throw std::logic_error(message.str());
-      }
+  const auto check = [&](std::int32_t j, const Vec<D>& shift) {
+    if (j == id) return;
+    const double sigma = sigma_[species_[id]][species_[j]];
+    const double distance = (particles_[j].position_at(now_) + shift - x).norm();
+    if (distance < sigma * (1.0 - tolerance)) {
+      std::ostringstream message;
+      message << "overlap: particles " << id << " and " << j << " at distance " << distance << " < " << sigma
+              << " at t = " << now_;
+      throw std::logic_error(message.str());
     }
-  });
+  };
+  const auto check_cell = [&](std::int32_t cell, const Vec<D>& shift) {
+    for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) check(j, shift);
+  };
+  if (is_big(id)) {  // hosts within reach lie in its stencil (open grid: no wrap)
+    for (const std::int32_t delta : big_stencil_) check_cell(particles_[id].cell + delta, Vec<D>::Zero());
+  } else {
+    cells_.for_each_neighbour_cell(particles_[id].cell, check_cell);
+  }
+  for (const std::int32_t j : big_) check(j, Vec<D>::Zero());
 }
 
 template <int D, class Queue>
@@ -378,12 +472,15 @@ void Engine<D, Queue>::check_all_overlaps(double tolerance) const {
       }
     });
   }
+  // Host-big pairs may lie beyond the neighbour cells: each big particle checks its stencil.
+  for (const std::int32_t id : big_) check_overlaps_of(id, tolerance);
 }
 
 template <int D, class Queue>
 std::size_t Engine<D, Queue>::bytes() const {
   return particles_.capacity() * sizeof(Particle<D>) + predictions_.capacity() * sizeof(Prediction) +
-         species_.capacity() + moving_flag_.capacity() + crossing_.capacity() + moving_.capacity() * 4 + cells_.bytes() + queue_.bytes();
+         species_.capacity() + moving_flag_.capacity() + crossing_.capacity() + moving_.capacity() * 4 + cells_.bytes() + queue_.bytes() + covered_.capacity() +
+         big_.capacity() * 4;
 }
 
 template class Engine<2, HeapEventQueue>;

@@ -23,7 +23,14 @@ struct EngineConfig {
   double region_radius = 1.0;      ///< open: particles lie within this radius of the origin (length)
   double guard_radius = 1.0;       ///< open: a moving particle entering a cell reaching beyond it stops the run
   std::string guard_advice;        ///< open: what to raise when the guard trips (for the error message)
-  double cell_width = 0.0;         ///< cell side (length); 0 = automatic; never below the largest contact distance
+  /// Cell side (length); 0 = automatic. Never below the largest contact distance, except in open
+  /// geometry with impurities larger than the host: then cells are as narrow as the host contact
+  /// distance and the impurities are "big" (a wider stencil, see engine.cpp). Periodic geometry
+  /// always uses the largest contact distance.
+  double cell_width = 0.0;
+  /// Open geometry: keep cells as wide as the largest contact distance even for large impurities
+  /// (the plain scheme; same trajectories bit for bit, much slower for radius ratios >> 1).
+  bool wide_cells_for_big = false;
   bool overlap_check = false;      ///< verify after every event that the touched particles overlap nobody
   bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
 };
@@ -96,7 +103,14 @@ class Engine {
   void scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift, const Vec<D>& position,
                  const Vec<D>& velocity, double time, const double* sigma2_row, bool same_radius,
                  Prediction& best) const;
+  template <bool Shifted>
+  void test_pair(std::int32_t j, const Vec<D>& shift, const Vec<D>& position, const Vec<D>& velocity, double time,
+                 const double* sigma2_row, bool same_radius, Prediction& best) const;
   void full_scan(std::int32_t id);
+  // Big particles (open geometry, impurities larger than the host: see engine.cpp).
+  bool is_big(std::int32_t id) const { return big_reach_ != 0 && species_[id] != host_species; }
+  void scan_bigs(std::int32_t id);  // pair tests against every big particle
+  void cover(std::int32_t cell, const std::vector<std::int32_t>& deltas, int change);
   void schedule(std::int32_t id);
   // Time of the particle's next cell crossing (`never` at rest), and its crossing_ code.
   double crossing_time(const Particle<D>& p, std::uint8_t& code) const;
@@ -105,7 +119,7 @@ class Engine {
     if (!config_.periodic && particles_[id].position_at(now_).squaredNorm() > guard_trigger2_) guard_tripped();
   }
   [[noreturn]] void guard_tripped() const;
-  void check_overlaps_of(std::int32_t id) const;
+  void check_overlaps_of(std::int32_t id, double tolerance = 1e-9) const;
   Vec<D> separation(std::int32_t i, std::int32_t j) const;  // r_j - r_i at now_, minimum image
 
   EngineConfig<D> config_;
@@ -118,6 +132,11 @@ class Engine {
   bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
   double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run
   CellList<D> cells_;
+  int big_reach_ = 0;                      // k: cells per axis a big particle's stencil reaches; 0 = none
+  std::vector<std::int32_t> big_;          // the big particles (a short list)
+  std::vector<std::uint8_t> covered_;      // per cell: big particles whose stencil covers it
+  std::vector<std::int32_t> big_stencil_;  // (2k+1)^D index offsets
+  std::array<std::array<std::vector<std::int32_t>, 2>, D> big_slab_;  // per axis, direction: slab at offset ±k
   Queue queue_;
   double now_ = 0.0;
   std::uint64_t collision_count_ = 0, event_count_ = 0, crossing_count_ = 0, stale_count_ = 0;

@@ -1,6 +1,7 @@
 // Engine: hand-computable runs (a Newton's cradle, an unequal-mass hit), energy and momentum
 // conservation over 10^6 collisions, no overlaps with the overlap check on, the heap and the
-// bucketed calendar producing bit-identical trajectories, and so does any cell width in open geometry.
+// bucketed calendar producing bit-identical trajectories, and so does any cell width in open geometry,
+// and large impurities with host-sized cells and a wide stencil (bit-identical to wide cells).
 #include <cmath>
 
 #include <catch2/catch.hpp>
@@ -161,17 +162,19 @@ TEST_CASE("heap and bucketed calendar give bit-identical trajectories", "[fast]"
 }
 
 namespace {
-// A paper-like 2D blast (n = 0.15, host radius 1/2, E = 5.7 shared by 4 impurities of the given
-// radius and mass) in a disc of radius `radius`.
-InitialState<2> blast_state(std::uint64_t seed, double radius, Species impurity) {
+// A paper-like blast (n = 0.15, host radius 1/2, E = 5.7 shared by 4 impurities of the given
+// radius and mass) in a ball of radius `radius`.
+template <int D>
+InitialState<D> blast_state(std::uint64_t seed, double radius, Species impurity) {
   auto rng = realization_rng(seed, 0);
-  InitialState<2> s = empty_state<2>();
+  InitialState<D> s = empty_state<D>();
   s.impurity = impurity;
-  const std::size_t count = static_cast<std::size_t>(0.15 * M_PI * radius * radius);
-  s.position = random_sequential_addition<2>(rng, count, 0.5, radius);
-  s.velocity.assign(count, Vec<2>::Zero());
+  const double ball = D == 2 ? M_PI * radius * radius : (4.0 / 3.0) * M_PI * radius * radius * radius;
+  const auto count = static_cast<std::size_t>(0.15 * ball);
+  s.position = random_sequential_addition<D>(rng, count, 0.5, radius);
+  s.velocity.assign(count, Vec<D>::Zero());
   s.species.assign(count, host_species);
-  kick_impurities<2>(rng, s, 4, 5.7, radius);
+  kick_impurities<D>(rng, s, 4, 5.7, radius);
   return s;
 }
 
@@ -198,12 +201,62 @@ void require_identical_runs(const InitialState<D>& s, const EngineConfig<D>& a, 
 TEST_CASE("trajectories are bit-identical for any cell width (2D blast, open geometry)", "[fast]") {
   // Cell crossings never touch a particle's stored state, and pair predictions do not depend on
   // when they are made, so the cell grid only changes which events are bookkeeping.
-  const InitialState<2> s = blast_state(11, 110.0, {0.5, 1.0});
+  const InitialState<2> s = blast_state<2>(11, 110.0, {0.5, 1.0});
   EngineConfig<2> automatic = open_config<2>(140.0), wide = automatic, wider = automatic;
   wide.cell_width = 1.5;
   wider.cell_width = 2.5;
   require_identical_runs<2>(s, automatic, wide, 400.0, 10000);
   require_identical_runs<2>(s, automatic, wider, 400.0, 10000);
+}
+
+namespace {
+// Large impurities: the big-particle scheme (host-sized cells, a wide stencil for the impurities)
+// against the plain wide cells, with the overlap check after every event; then conservation.
+template <int D>
+void compare_big_with_wide_cells(const InitialState<D>& s, double region, double t_end, std::uint64_t min_collisions) {
+  INFO("impurity radius " << s.impurity.radius << ", mass " << s.impurity.mass << ", d = " << D);
+  EngineConfig<D> big = open_config<D>(region), wide = big;
+  wide.wide_cells_for_big = true;
+  {
+    Engine<D, CalendarEventQueue> narrow(big, s), plain(wide, s);
+    REQUIRE(narrow.cells().width(0) == 1.0);  // the host contact distance: the scheme is in use
+    REQUIRE(plain.cells().width(0) == 2.0 * s.impurity.radius);
+  }
+  require_identical_runs<D>(s, big, wide, t_end, min_collisions);
+  Engine<D, HeapEventQueue> engine(big, s);
+  double E0 = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    E0 += 0.5 * (s.species[i] == host_species ? s.host.mass : s.impurity.mass) * s.velocity[i].squaredNorm();
+  engine.run_until(t_end);
+  CHECK_THAT(engine.kinetic_energy(), WithinRel(E0, 1e-12));
+  CHECK(engine.momentum().norm() < 1e-12 * std::sqrt(2.0 * E0 * s.impurity.mass));
+  CHECK_NOTHROW(engine.check_all_overlaps());
+  std::uint64_t impurity_collisions = 0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s.species[i] != host_species) impurity_collisions += engine.particle(static_cast<std::int32_t>(i)).collisions;
+  CHECK(impurity_collisions > 20);
+}
+}  // namespace
+
+TEST_CASE("large impurities: host-sized cells and a wide stencil give the wide-cell trajectories bit for bit", "[fast]") {
+  compare_big_with_wide_cells<2>(blast_state<2>(12, 110.0, {2.5, 1.0}), 140.0, 400.0, 10000);
+  compare_big_with_wide_cells<2>(blast_state<2>(13, 110.0, {5.0, 1.0}), 140.0, 400.0, 10000);
+  compare_big_with_wide_cells<2>(blast_state<2>(14, 110.0, {2.5, 3.0}), 140.0, 400.0, 10000);
+  compare_big_with_wide_cells<3>(blast_state<3>(15, 22.0, {1.5, 1.0}), 40.0, 38.0, 800);
+}
+
+TEST_CASE("the overlap check sees a host overlapping a big particle two cells away", "[fast]") {
+  // Impurity of radius 2.5 at the origin, host cells of width 1: a host at distance 2.9 < 3
+  // lies two cells away, outside the host's 3 x 3 neighbourhood.
+  InitialState<2> s = empty_state<2>();
+  s.impurity = {2.5, 1.0};
+  add<2>(s, Vec<2>(0.2, 0.2), Vec<2>::Zero(), impurity_species);
+  add<2>(s, Vec<2>(0.2 + 2.9, 0.2), Vec<2>::Zero());
+  EngineConfig<2> config = open_config<2>(20.0);
+  config.overlap_check = false;
+  Engine<2, CalendarEventQueue> engine(config, s);
+  REQUIRE(engine.cells().width(0) == 1.0);
+  CHECK_THROWS_WITH(engine.check_all_overlaps(), Catch::Contains("overlap"));
 }
 
 namespace {
