@@ -161,7 +161,7 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, std::uint8_t& code)
 
 template <int D, class Queue>
 template <bool Shifted>
-inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift,
+[[gnu::always_inline]] inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift,
                                         const Vec<D>& position, const Vec<D>& velocity, double time,
                                         const double* sigma2_row, bool same_radius, Prediction& best) const {
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
@@ -200,7 +200,7 @@ template <bool Shifted>
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::scan_bigs(std::int32_t id) {
+[[gnu::noinline]] void Engine<D, Queue>::scan_bigs(std::int32_t id) {
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
@@ -255,7 +255,7 @@ void Engine<D, Queue>::full_scan(std::int32_t id) {
   p.partner = -1;
   const std::int32_t cell = particles_[id].cell;
   if (!cells_.wraps(cell)) {
-    if (is_big(id)) {
+    if (is_big(id)) [[unlikely]] {
       scan_cells(id, cell, big_stencil_.data(), big_stencil_.data() + big_stencil_.size());
       scan_bigs(id);
       return;
@@ -370,26 +370,32 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
   if (config_.overlap_check) check_overlaps_of(id);
   Prediction& prediction = predictions_[id];
   const bool stale = prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions;
-  if (is_big(id)) {
-    // Its stencil moves by one cell: the slab at offset k in the direction of motion comes in,
-    // the one at k + 1 behind goes out.
-    const auto& incoming = big_slab_[axis][direction > 0 ? 1 : 0];
-    cover(p.cell, incoming, 1);
-    cover(p.cell - direction * cells_.stride(axis), big_slab_[axis][direction > 0 ? 0 : 1], -1);
-    if (stale) full_scan(id);
-    else scan_cells(id, p.cell, incoming.data(), incoming.data() + incoming.size());
+  if (is_big(id)) [[unlikely]] {
+    cross_big(id, axis, direction, stale);
   } else if (stale) {
     full_scan(id);
   } else if (!cells_.wraps(p.cell)) {
     const auto& deltas = cells_.slab_deltas(axis, direction);
     scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size());
-    if (big_reach_ != 0 && covered_[p.cell] != 0) scan_bigs(id);
+    if (big_reach_ != 0 && covered_[p.cell] != 0) [[unlikely]] scan_bigs(id);
   } else {
     std::int32_t cells[9];
     Vec<D> shifts[9];
     scan_wrapped_cells(id, cells, shifts, cells_.wrapped_cells(p.cell, cells, shifts, axis, direction));
   }
   schedule(id);
+}
+
+template <int D, class Queue>
+[[gnu::noinline]] void Engine<D, Queue>::cross_big(std::int32_t id, int axis, int direction, bool stale) {
+  // Its stencil moves by one cell: the slab at offset k in the direction of motion comes in,
+  // the one at k + 1 behind goes out.
+  const std::int32_t cell = particles_[id].cell;
+  const auto& incoming = big_slab_[axis][direction > 0 ? 1 : 0];
+  cover(cell, incoming, 1);
+  cover(cell - direction * cells_.stride(axis), big_slab_[axis][direction > 0 ? 0 : 1], -1);
+  if (stale) full_scan(id);
+  else scan_cells(id, cell, incoming.data(), incoming.data() + incoming.size());
 }
 
 template <int D, class Queue>

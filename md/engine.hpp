@@ -110,6 +110,7 @@ class Engine {
   // Big particles (open geometry, impurities larger than the host: see engine.cpp).
   bool is_big(std::int32_t id) const { return big_reach_ != 0 && species_[id] != host_species; }
   void scan_bigs(std::int32_t id);  // pair tests against every big particle
+  void cross_big(std::int32_t id, int axis, int direction, bool stale);  // a big particle's crossing
   void cover(std::int32_t cell, const std::vector<std::int32_t>& deltas, int change);
   void schedule(std::int32_t id);
   // Time of the particle's next cell crossing (`never` at rest), and its crossing_ code.
