@@ -144,8 +144,13 @@ std::string profile_figure(const RunData& run, const fs::path& folder) {
   std::ostringstream md_data, exact_data;
   md_data.precision(10);
   exact_data.precision(10);
+  // Bins reaching beyond the simulated ball (region_radius, when the box margin is < 1.5 R) hold
+  // no particles by construction, not vacuum: they are left out of the figure.
+  const double region = run.summary.contains("region_radius") && run.summary["region_radius"].is_number()
+                            ? run.summary["region_radius"].get<double>() / R
+                            : INFINITY;
   for (const auto& row : table.rows)
-    if (row[ct] == t_last)
+    if (row[ct] == t_last && row[hi] <= region)
       md_data << 0.5 * (row[lo] + row[hi]) << ' ' << row[cn] << ' ' << row[cu] / Rdot << ' ' << row[cT] / (Rdot * Rdot) << '\n';
   const hydro::TvnsSolution exact = hydro::solve_tvns({run.d, 0.0, hydro::Eos::ideal, 0.0, 1e-10});
   for (int i = 1; i <= 400; ++i) {
