@@ -1,5 +1,7 @@
 // coldblast compare: MD running exponents against theory, the paper's Table 1 or hydro, with a
 // verdict (exit 0 pass, 3 fail), a Markdown report and figures.
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
 
@@ -43,10 +45,19 @@ void print_table(const compare::CompareResult& result) {
     char reference[64], measured[64], window[64];
     std::snprintf(reference, sizeof reference, v.alpha_reference_error > 0 ? "%.4f±%.3f" : "%.4f",
                   v.alpha_reference, v.alpha_reference_error);
-    std::snprintf(measured, sizeof measured, "%.4f±%.4f @%g", v.alpha_measured, v.alpha_error, v.t_measured);
-    std::snprintf(window, sizeof window, "%.4f±%.4f", v.window.exponent, v.window.exponent_error);
-    std::printf("%-7s %-10s %-17s %-24s %-19s %+8.2f  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(),
-                reference, measured, window, v.deviation_sigma, v.pass ? "pass" : "FAIL");
+    // An exponent is undefined when the observable's ensemble mean is <= 0 at one of its times
+    // (u_flow: the thermal-noise correction exceeds the signal); say so instead of printing nan.
+    if (std::isfinite(v.alpha_measured))
+      std::snprintf(measured, sizeof measured, "%.4f±%.4f @%g", v.alpha_measured, v.alpha_error, v.t_measured);
+    else std::snprintf(measured, sizeof measured, "undefined @%g", v.t_measured);
+    if (std::isfinite(v.window.exponent))
+      std::snprintf(window, sizeof window, "%.4f±%.4f", v.window.exponent, v.window.exponent_error);
+    else std::snprintf(window, sizeof window, "undefined");
+    char deviation[32];
+    if (std::isfinite(v.deviation_sigma)) std::snprintf(deviation, sizeof deviation, "%+8.2f", v.deviation_sigma);
+    else std::snprintf(deviation, sizeof deviation, "%8s", "-");
+    std::printf("%-7s %-10s %-17s %-24s %-19s %s  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(),
+                reference, measured, window, deviation, v.pass ? "pass" : "FAIL");
   }
   std::printf("\nverdict: %s\n", result.pass ? "PASS" : "FAIL");
 }

@@ -154,12 +154,22 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
      << "|---|---|---|---|---|---|---|\n";
   char buffer[512];
   for (const auto& v : result.observables) {
-    std::snprintf(buffer, sizeof buffer,
-                  "| %s | %s (%.4f) | %.4f%s | %.4f ± %.4f (t = %s) | %.4f ± %.4f (%d pts) | %+.2f | %s |\n",
+    // Undefined exponents (an ensemble mean <= 0 at some time, e.g. u_flow lost in noise) are named, not printed as nan.
+    const auto exponent = [](double alpha, double error) {
+      char text[64];
+      if (std::isfinite(alpha)) std::snprintf(text, sizeof text, "%.4f ± %.4f", alpha, error);
+      else std::snprintf(text, sizeof text, "undefined (a mean <= 0)");
+      return std::string(text);
+    };
+    char deviation[32];
+    if (std::isfinite(v.deviation_sigma)) std::snprintf(deviation, sizeof deviation, "%+.2f", v.deviation_sigma);
+    else std::snprintf(deviation, sizeof deviation, "-");
+    std::snprintf(buffer, sizeof buffer, "| %s | %s (%.4f) | %.4f%s | %s (t = %s) | %s (%d pts) | %s | %s |\n",
                   v.name.c_str(), v.alpha_theory_rational.c_str(), v.alpha_theory, v.alpha_reference,
                   v.alpha_reference_error > 0 ? (" ± " + format_number(v.alpha_reference_error)).c_str() : "",
-                  v.alpha_measured, v.alpha_error, format_number(v.t_measured).c_str(), v.window.exponent,
-                  v.window.exponent_error, v.window.points, v.deviation_sigma, v.pass ? "pass" : "**fail**");
+                  exponent(v.alpha_measured, v.alpha_error).c_str(), format_number(v.t_measured).c_str(),
+                  exponent(v.window.exponent, v.window.exponent_error).c_str(), v.window.points, deviation,
+                  v.pass ? "pass" : "**fail**");
     md << buffer;
   }
   if (figures) md << "\n![Observables with running exponents](figures/observables.png)\n";

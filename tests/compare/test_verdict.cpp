@@ -1,9 +1,12 @@
 // Verdicts on synthetic runs whose exponents are known: the exact rationals pass against theory,
 // a wrong exponent fails, the paper reference combines both errors, and bad configs are rejected.
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include <catch2/catch.hpp>
 
+#include "compare/report.hpp"
 #include "compare/verdict.hpp"
 #include "synthetic.hpp"
 #include "theory/exponents.hpp"
@@ -151,5 +154,37 @@ TEST_CASE("compare until T measures the exponents as of an earlier time of the s
   CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--until"));
   config.until = -1.0;
   CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--until"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an observable whose mean reaches zero has an undefined exponent, named as such in the report", "[fast]") {
+  // u_flow is |u|² minus its noise estimate: with few realizations its mean can be <= 0, and then
+  // no power law can be measured at that time. The verdict fails it, the report says "undefined".
+  const fs::path dir = make_run(2);
+  auto run = read_run(dir);
+  BlockSeries u_flow = run.series.at("u_imp");
+  u_flow.observable = "u_flow";
+  for (auto& row : u_flow.sums) row.back() = 0.0;
+  run.series["u_flow"] = u_flow;
+  write_synthetic_run(dir, 2, run.series);
+
+  CompareConfig config;
+  config.run_dir = dir;
+  config.sigma = 4.0;
+  const CompareResult result = run_compare(config);
+  REQUIRE(result.observables.back().name == "u_flow");
+  const ObservableVerdict& v = result.observables.back();
+  CHECK_FALSE(std::isfinite(v.alpha_measured));
+  CHECK_FALSE(v.pass);
+  CHECK_FALSE(result.pass);
+  for (std::size_t k = 0; k + 1 < result.observables.size(); ++k) CHECK(result.observables[k].pass);
+
+  const fs::path out = fs::temp_directory_path() / "coldblast_verdict_undefined_report";
+  write_report(result, {out, false});
+  std::ifstream in(out / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("| u_flow | -3/5 (-0.6000) | -0.6000 | undefined (a mean <= 0)") != std::string::npos);
+  CHECK(text.find("nan") == std::string::npos);
+  fs::remove_all(out);
   fs::remove_all(dir);
 }
