@@ -45,12 +45,13 @@ void print_table(const compare::CompareResult& result) {
     char reference[64], measured[64], window[64];
     std::snprintf(reference, sizeof reference, v.alpha_reference_error > 0 ? "%.4f±%.3f" : "%.4f",
                   v.alpha_reference, v.alpha_reference_error);
-    // An exponent is undefined when the observable's ensemble mean is <= 0 at one of its times
-    // (u_flow: the thermal-noise correction exceeds the signal); say so instead of printing nan.
-    if (std::isfinite(v.alpha_measured))
+    // An exponent (or its jackknife error) is undefined when the observable's ensemble mean, or a
+    // delete-one-block mean, is <= 0 at one of its times (u_flow: the thermal-noise correction
+    // exceeds the signal); say so instead of printing nan.
+    if (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error))
       std::snprintf(measured, sizeof measured, "%.4f±%.4f @%g", v.alpha_measured, v.alpha_error, v.t_measured);
     else std::snprintf(measured, sizeof measured, "undefined @%g", v.t_measured);
-    if (std::isfinite(v.window.exponent))
+    if (std::isfinite(v.window.exponent) && std::isfinite(v.window.exponent_error))
       std::snprintf(window, sizeof window, "%.4f±%.4f", v.window.exponent, v.window.exponent_error);
     else std::snprintf(window, sizeof window, "undefined");
     char deviation[32];

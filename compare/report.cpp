@@ -157,8 +157,8 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
     // Undefined exponents (an ensemble mean <= 0 at some time, e.g. u_flow lost in noise) are named, not printed as nan.
     const auto exponent = [](double alpha, double error) {
       char text[64];
-      if (std::isfinite(alpha)) std::snprintf(text, sizeof text, "%.4f ± %.4f", alpha, error);
-      else std::snprintf(text, sizeof text, "undefined (a mean <= 0)");
+      if (std::isfinite(alpha) && std::isfinite(error)) std::snprintf(text, sizeof text, "%.4f ± %.4f", alpha, error);
+      else std::snprintf(text, sizeof text, "undefined (a mean <= 0)");  // also when only a jackknife mean is
       return std::string(text);
     };
     char deviation[32];
