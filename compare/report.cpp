@@ -121,8 +121,12 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
            << "set ylabel '" << label(v.name) << "'\nset key " << (v.alpha_theory > 0 ? "bottom right" : "bottom left")
            << " font ',9'\n"
            << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name) << ": {/Symbol a}_T = "
-           << v.alpha_theory_rational << ", {/Symbol a}_S = " << format_number(std::round(v.alpha_measured * 1000) / 1000)
-           << " ± " << format_number(std::round(v.alpha_error * 1000) / 1000) << "'\n"
+           << v.alpha_theory_rational << ", {/Symbol a}_S = "
+           << (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
+                   ? format_number(std::round(v.alpha_measured * 1000) / 1000) + " ± " +
+                         format_number(std::round(v.alpha_error * 1000) / 1000)
+                   : std::string("undefined (a mean <= 0)"))
+           << "'\n"
            << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t 'MD', "
            << a_last << "*(x/" << t_last << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{"
            << v.alpha_theory_rational << "}'\n";
