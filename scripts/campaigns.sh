@@ -1,0 +1,37 @@
+#!/bin/bash
+# The issue-6 campaigns exactly as recorded in docs/verification.md ("Campaign 1" … "Campaign 4"),
+# one per argument: bash scripts/campaigns.sh 2 3 4   (outputs in ./campaigns/, reports beside them).
+# Wall times on the 2-core development machine: 1: ~1.5 h, 2: 42 min, 3: 61 min, 4: 5 + 12 + 15 min.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cb=./build/bin/coldblast
+[ -x "$cb" ] || { echo "campaigns.sh: $cb missing: run scripts/bootstrap.sh first" >&2; exit 2; }
+mkdir -p campaigns
+obs='observables=["R_imp","V_imp","C_imp","u_imp","u_flow","n0","T0","R","profiles","p_imp"]'
+for c in "$@"; do
+  case "$c" in
+    1) $cb reproduce --scale paper --out campaigns/c1-paper ;;
+    2) for s in 0 1; do
+         $cb md run scenes/paper-2d.toml --realizations 192 --set block_size=4 --threads 2 --seed 31 \
+           --set t_min=0.6103515625 --set t_max=40000 --set "$obs" --shard $s/2 --out campaigns/c2-long-shard$s
+       done
+       $cb md merge campaigns/c2-long-shard0 campaigns/c2-long-shard1 --out campaigns/c2-long
+       for T in 4204.482076 11892.07115 40000; do
+         $cb compare campaigns/c2-long --against hydro --allowance 0 --until $T --out campaigns/c2-long-hydro-until-$T || true
+       done
+       $cb compare campaigns/c2-long --against theory --allowance 0 --window-decades 1 --out campaigns/c2-long-theory || true ;;
+    3) $cb md run scenes/paper-3d.toml --realizations 48 --set block_size=2 --threads 2 --seed 33 \
+         --set t_min=0.7505950927734375 --set t_max=12297.75 --set "$obs" --out campaigns/c3-3d
+       for ref in theory hydro; do $cb compare campaigns/c3-3d --against $ref --allowance 0 --out campaigns/c3-3d-$ref || true; done ;;
+    4) $cb md run scenes/paper-2d.toml --realizations 1024 --set block_size=16 --threads 2 --seed 41 \
+         --set impurities.mass=10 --set "$obs" --out campaigns/c4-heavy
+       $cb md run scenes/paper-2d.toml --realizations 1024 --set block_size=16 --threads 2 --seed 42 \
+         --set impurities.radius=2.5 --set "$obs" --out campaigns/c4-large
+       $cb md run scenes/paper-2d.toml --realizations 64 --set block_size=2 --threads 2 --seed 43 \
+         --set impurities.mass=10 --set t_min=0.6103515625 --set t_max=40000 --set "$obs" --out campaigns/c4-heavy-long
+       for r in c4-heavy c4-large c4-heavy-long; do
+         $cb compare campaigns/$r --against theory --allowance 0 --out campaigns/$r-theory || true
+       done ;;
+    *) echo "campaigns.sh: campaign '$c' is not one of 1, 2, 3, 4" >&2; exit 2 ;;
+  esac
+done
