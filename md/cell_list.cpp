@@ -63,25 +63,11 @@ void CellList<D>::set_up(std::size_t particle_count) {
         if (c[k] == 0 || c[k] == count_[k] - 1) boundary_[cell] = 1;
     }
   }
-  neighbour_delta_.clear();
-  std::array<std::int32_t, D> o;
-  o.fill(-1);
-  while (true) {
-    std::int32_t delta = 0;
-    for (int k = 0; k < D; ++k) delta += o[k] * stride_[k];
-    neighbour_delta_.push_back(delta);
-    for (int axis = 0; axis < D; ++axis)
-      for (int side = 0; side < 2; ++side) {
-        const int direction = side == 0 ? -1 : 1;
-        if (o[axis] != 0) continue;
-        // Cell `delta + direction` along `axis` belongs to the new slab when o[axis] == 0.
-        slab_delta_[axis][side].push_back(delta + direction * stride_[axis]);
-      }
-    int k = 0;
-    while (k < D && o[k] == 1) o[k++] = -1;
-    if (k == D) break;
-    ++o[k];
-  }
+  // The 3^D neighbours, and per axis and direction the 3^(D-1) cells that become adjacent after a
+  // move: the cube's face at offset ±1, in the same odometer order.
+  neighbour_delta_ = stencil_deltas(1, -1, 0);
+  for (int axis = 0; axis < D; ++axis)
+    for (int side = 0; side < 2; ++side) slab_delta_[axis][side] = stencil_deltas(1, axis, side == 0 ? -1 : 1);
 }
 
 template <int D>
@@ -93,18 +79,11 @@ std::vector<std::int32_t> CellList<D>::stencil_deltas(int reach, int axis, int o
     hi[k] = k == axis ? offset : reach;
     o[k] = lo[k];
   }
-  while (true) {  // k = 0 runs fastest
+  do {  // k = 0 runs fastest
     std::int32_t delta = 0;
     for (int k = 0; k < D; ++k) delta += o[k] * stride_[k];
     deltas.push_back(delta);
-    int k = 0;
-    while (k < D && o[k] == hi[k]) {
-      o[k] = lo[k];
-      ++k;
-    }
-    if (k == D) break;
-    ++o[k];
-  }
+  } while (next_multi_index(o, lo, hi));
   return deltas;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "md/multi_index.hpp"
 #include "md/particles.hpp"
 
 namespace coldblast::md {
@@ -140,21 +141,14 @@ int CellList<D>::wrapped_cells(std::int32_t cell, std::int32_t* cells, Vec<D>* s
     o[k] = lo[k];
   }
   int m = 0;
-  while (true) {  // k = 0 runs fastest, as in for_each_neighbour_cell
+  do {  // k = 0 runs fastest, as in for_each_neighbour_cell
     std::int32_t index = 0;
     for (int k = 0; k < D; ++k) {
       index += part[k][o[k] + 1];
       shifts[m][k] = image[k][o[k] + 1];
     }
     cells[m++] = index;
-    int k = 0;
-    while (k < D && o[k] == hi[k]) {
-      o[k] = lo[k];
-      ++k;
-    }
-    if (k == D) break;
-    ++o[k];
-  }
+  } while (next_multi_index(o, lo, hi));
   return m;
 }
 
@@ -167,15 +161,10 @@ void CellList<D>::for_each_neighbour_cell(std::int32_t cell, F&& f) const {
     return;
   }
   const auto c = coordinates(cell);
-  std::array<std::int32_t, D> o;
-  o.fill(-1);
-  while (true) {
-    visit_wrapped(c, o, f);
-    int k = 0;
-    while (k < D && o[k] == 1) o[k++] = -1;
-    if (k == D) break;
-    ++o[k];
-  }
+  const auto lo = uniform_index<std::int32_t, D>(-1), hi = uniform_index<std::int32_t, D>(1);
+  std::array<std::int32_t, D> o = lo;
+  do visit_wrapped(c, o, f);
+  while (next_multi_index(o, lo, hi));
 }
 
 template <int D>
@@ -187,19 +176,11 @@ void CellList<D>::for_each_new_neighbour_cell(std::int32_t cell, int axis, int d
     return;
   }
   const auto c = coordinates(cell);
-  std::array<std::int32_t, D> o;
-  o.fill(-1);
-  o[axis] = direction;
-  while (true) {
-    visit_wrapped(c, o, f);
-    int k = 0;
-    while (k < D && (k == axis || o[k] == 1)) {
-      if (k != axis) o[k] = -1;
-      ++k;
-    }
-    if (k == D) break;
-    ++o[k];
-  }
+  auto lo = uniform_index<std::int32_t, D>(-1), hi = uniform_index<std::int32_t, D>(1);
+  lo[axis] = hi[axis] = direction;
+  std::array<std::int32_t, D> o = lo;
+  do visit_wrapped(c, o, f);
+  while (next_multi_index(o, lo, hi));
 }
 
 }  // namespace coldblast::md

@@ -435,18 +435,23 @@ Vec<D> Engine<D, Queue>::momentum() const {
 }
 
 template <int D, class Queue>
+void Engine<D, Queue>::check_pair(std::int32_t i, const Vec<D>& x_i, std::int32_t j, const Vec<D>& shift,
+                                  double tolerance) const {
+  const double sigma = sigma_[species_[i]][species_[j]];
+  const double distance = (particles_[j].position_at(now_) + shift - x_i).norm();
+  if (distance < sigma * (1.0 - tolerance)) {
+    std::ostringstream message;
+    message << "overlap: particles " << i << " and " << j << " at distance " << distance << " < " << sigma
+            << " at t = " << now_;
+    throw std::logic_error(message.str());
+  }
+}
+
+template <int D, class Queue>
 void Engine<D, Queue>::check_overlaps_of(std::int32_t id, double tolerance) const {
   const Vec<D> x = particles_[id].position_at(now_);
   const auto check = [&](std::int32_t j, const Vec<D>& shift) {
-    if (j == id) return;
-    const double sigma = sigma_[species_[id]][species_[j]];
-    const double distance = (particles_[j].position_at(now_) + shift - x).norm();
-    if (distance < sigma * (1.0 - tolerance)) {
-      std::ostringstream message;
-      message << "overlap: particles " << id << " and " << j << " at distance " << distance << " < " << sigma
-              << " at t = " << now_;
-      throw std::logic_error(message.str());
-    }
+    if (j != id) check_pair(id, x, j, shift, tolerance);
   };
   const auto check_cell = [&](std::int32_t cell, const Vec<D>& shift) {
     for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) check(j, shift);
@@ -465,17 +470,8 @@ void Engine<D, Queue>::check_all_overlaps(double tolerance) const {
     const std::int32_t id = static_cast<std::int32_t>(i);
     const Vec<D> x = particles_[i].position_at(now_);
     cells_.for_each_neighbour_cell(particles_[i].cell, [&](std::int32_t cell, const Vec<D>& shift) {
-      for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
-        if (j <= id) continue;
-        const double sigma = sigma_[species_[id]][species_[j]];
-        const double distance = (particles_[j].position_at(now_) + shift - x).norm();
-        if (distance < sigma * (1.0 - tolerance)) {
-          std::ostringstream message;
-          message << "overlap: particles " << id << " and " << j << " at distance " << distance << " < " << sigma
-                  << " at t = " << now_;
-          throw std::logic_error(message.str());
-        }
-      }
+      for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j))
+        if (j > id) check_pair(id, x, j, shift, tolerance);
     });
   }
   // Host-big pairs may lie beyond the neighbour cells: each big particle checks its stencil.

@@ -121,6 +121,8 @@ class Engine {
   }
   [[noreturn]] void guard_tripped() const;
   void check_overlaps_of(std::int32_t id, double tolerance = 1e-9) const;
+  // Throws std::logic_error if j (displaced by the periodic image `shift`) overlaps i, at x_i, now.
+  void check_pair(std::int32_t i, const Vec<D>& x_i, std::int32_t j, const Vec<D>& shift, double tolerance) const;
   Vec<D> separation(std::int32_t i, std::int32_t j) const;  // r_j - r_i at now_, minimum image
 
   EngineConfig<D> config_;
@@ -159,19 +161,12 @@ void Engine<D, Queue>::for_each_in_ball(const Vec<D>& centre, double radius, F&&
   }
   c = lo;
   const double r2 = radius * radius;
-  while (true) {
+  do {
     for (std::int32_t id = cells_.first(cells_.index(c)); id >= 0; id = cells_.next(id)) {
       const Vec<D> x = particles_[id].position_at(now_);
       if ((x - centre).squaredNorm() <= r2) f(id, x);
     }
-    int k = 0;
-    while (k < D && c[k] == hi[k]) {
-      c[k] = lo[k];
-      ++k;
-    }
-    if (k == D) break;
-    ++c[k];
-  }
+  } while (next_multi_index(c, lo, hi));
 }
 
 }  // namespace coldblast::md

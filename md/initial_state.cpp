@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "md/multi_index.hpp"
+
 namespace coldblast::md {
 
 std::uint64_t splitmix64(std::uint64_t x) {
@@ -76,10 +78,10 @@ struct PlacementGrid {
                 std::int32_t skip = -1) const {
     std::array<std::int64_t, D> c;
     for (int k = 0; k < D; ++k) c[k] = coordinate(x[k]);
-    std::array<std::int64_t, D> o;
     const std::int64_t reach = static_cast<std::int64_t>(std::ceil(reach_distance / width));
-    o.fill(-reach);
-    while (true) {
+    const auto lo = uniform_index<std::int64_t, D>(-reach), hi = uniform_index<std::int64_t, D>(reach);
+    std::array<std::int64_t, D> o = lo;
+    do {
       bool inside = true;
       std::int64_t index = 0;
       for (int k = D - 1; k >= 0; --k) {
@@ -93,11 +95,7 @@ struct PlacementGrid {
           const double sigma = my_radius + radius_of(j);
           if ((centres[j] - x).squaredNorm() < sigma * sigma) return true;
         }
-      int k = 0;
-      while (k < D && o[k] == reach) o[k++] = -reach;
-      if (k == D) break;
-      ++o[k];
-    }
+    } while (next_multi_index(o, lo, hi));
     return false;
   }
   double reach_distance = 0.0;  // largest contact distance

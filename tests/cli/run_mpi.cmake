@@ -23,15 +23,8 @@ file(READ ${WORK}/ranks/summary.json summary)
 if(NOT summary MATCHES "\"ranks\": 2")
   message(FATAL_ERROR "summary.json does not record 2 ranks:\n${summary}")
 endif()
-foreach(file observables.csv blocks.csv accumulators.csv block_totals.csv)
-  foreach(dir threads ranks)
-    file(STRINGS ${WORK}/${dir}/${file} lines_${dir})
-    list(FILTER lines_${dir} EXCLUDE REGEX "^# command: ")
-  endforeach()
-  if(NOT lines_threads STREQUAL lines_ranks)
-    message(FATAL_ERROR "${file} of mpirun -np 2 differs from the threaded run's")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/expect_same_outputs.cmake)
+coldblast_expect_same_outputs(${WORK}/threads ${WORK}/ranks "mpirun -np 2 differs from the threaded run's")
 
 # A bad scene value ends every rank with exit 2 naming the key.
 execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set n=-1 --out ${WORK}/bad
