@@ -1,4 +1,9 @@
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
+#include <random>
 #include <stdexcept>
 
 #include <catch2/catch.hpp>
@@ -36,4 +41,37 @@ TEST_CASE("format_number round-trips doubles with the fewest digits", "[fast]") 
   const double x = 0.35193590695;
   REQUIRE(std::stod(format_number(x)) == x);
   REQUIRE(format_number(1.0 / 3.0) == "0.3333333333333333");
+}
+
+TEST_CASE("format_number equals the %g round-trip search (at least 6 digits) on random doubles", "[fast]") {
+  // Independent method: "%.*g" for 6, 7, ... 17 digits until strtod reads the same double back.
+  const auto reference = [](double value) {
+    char buffer[40];
+    for (int digits = 6; digits <= 17; ++digits) {
+      std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+      if (std::strtod(buffer, nullptr) == value) break;
+    }
+    return std::string(buffer);
+  };
+  REQUIRE(format_number(100000.0) == "100000");
+  REQUIRE(format_number(1e6) == "1e+06");
+  REQUIRE(format_number(1e-5) == "1e-05");
+  REQUIRE(format_number(-0.0) == "-0");
+  REQUIRE(format_number(1234567.0) == "1234567");
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<std::uint64_t> bits;
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> decade(-12, 12);
+  for (int i = 0; i < 20000; ++i) {
+    double value;
+    if (i % 2 == 0) {  // any finite bit pattern, denormals included
+      const std::uint64_t b = bits(rng);
+      std::memcpy(&value, &b, sizeof value);
+      if (!std::isfinite(value)) continue;
+    } else {  // the magnitudes results have, with short and long decimal expansions
+      value = std::round(unit(rng) * 1e4) * std::pow(10.0, decade(rng)) / (i % 4 == 1 ? 1.0 : 3.0);
+    }
+    INFO("bits of the value: " << std::hexfloat << value);
+    REQUIRE(format_number(value) == reference(value));
+  }
 }
