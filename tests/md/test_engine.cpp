@@ -82,9 +82,10 @@ TEST_CASE("the guard stops a particle that approaches the region's edge", "[fast
   Engine<2, HeapEventQueue> engine(open_config<2>(20.0), s);
   CHECK_THROWS_WITH(engine.run_until(100.0), Catch::Contains("raise the test region"));
   // Disc 1 (x = -5 - t) reaches the guard radius 18 at t = 13; the check trips at most one
-  // cell diagonal (sqrt(2) for unit cells) earlier.
+  // cell diagonal (sqrt(2) w) earlier.
   CHECK(engine.now() <= 13.0);
-  CHECK(engine.now() >= 13.0 - std::sqrt(2.0));
+  CHECK(engine.now() >= 13.0 - std::sqrt(2.0) * engine.cells().width(0));
+  CHECK(engine.cells().width(0) <= std::sqrt(2.0) * (1.0 + 1e-15));  // the automatic width's cap
 }
 
 TEMPLATE_TEST_CASE("energy and momentum are conserved to 1e-12 over 10^6 collisions", "[slow]",
@@ -202,11 +203,44 @@ TEST_CASE("trajectories are bit-identical for any cell width (2D blast, open geo
   // Cell crossings never touch a particle's stored state, and pair predictions do not depend on
   // when they are made, so the cell grid only changes which events are bookkeeping.
   const InitialState<2> s = blast_state<2>(11, 110.0, {0.5, 1.0});
-  EngineConfig<2> automatic = open_config<2>(140.0), wide = automatic, wider = automatic;
+  EngineConfig<2> automatic = open_config<2>(140.0), narrow = automatic, wide = automatic, wider = automatic;
+  narrow.cell_width = 1.0;
   wide.cell_width = 1.5;
   wider.cell_width = 2.5;
+  require_identical_runs<2>(s, automatic, narrow, 400.0, 10000);
   require_identical_runs<2>(s, automatic, wide, 400.0, 10000);
   require_identical_runs<2>(s, automatic, wider, 400.0, 10000);
+}
+
+TEST_CASE("the automatic open-grid cell width puts 2.7 particles in a full scan's 3^D cells, never below sigma", "[fast]") {
+  // 2D at n = 0.2: 9 n w^2 = 2.7 gives w = sqrt(0.3 / n) = 1.22 (in units of sigma = 1); at the
+  // paper's n = 0.15 the rule gives 1.4144 and the cap below, sqrt(2), takes over.
+  std::mt19937_64 rng(22);
+  InitialState<2> s2 = empty_state<2>();
+  s2.position = random_sequential_addition<2>(rng, static_cast<std::size_t>(0.2 * M_PI * 60.0 * 60.0), 0.5, 60.0);
+  s2.velocity.assign(s2.position.size(), Vec<2>::Zero());
+  s2.species.assign(s2.position.size(), host_species);
+  const double n2 = static_cast<double>(s2.size()) / (M_PI * 60.0 * 60.0);
+  Engine<2, CalendarEventQueue> e2(open_config<2>(60.0), s2);
+  CHECK_THAT(e2.cells().width(0), WithinRel(std::sqrt(0.3 / n2), 1e-12));
+  CHECK_THAT(e2.cells().width(0), WithinRel(std::sqrt(1.5), 1e-3));
+  // 3D at the paper-3d density n = 0.225: 27 n sigma^3 = 6.1 > 2.7 already, so sigma.
+  InitialState<3> s3 = empty_state<3>();
+  const auto count = static_cast<std::size_t>(0.225 * 4.0 / 3.0 * M_PI * 12.0 * 12.0 * 12.0);
+  s3.position = random_sequential_addition<3>(rng, count, 0.5, 12.0);
+  s3.velocity.assign(count, Vec<3>::Zero());
+  s3.species.assign(count, host_species);
+  Engine<3, CalendarEventQueue> e3(open_config<3>(12.0), s3);
+  CHECK(e3.cells().width(0) == 1.0);
+  // A dilute gas: capped at 2 sigma / sqrt(D), so the guard never trips inside what a scene allows.
+  InitialState<2> dilute = empty_state<2>();
+  add<2>(dilute, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.0));
+  const Engine<2, CalendarEventQueue> sparse(open_config<2>(60.0), dilute);
+  CHECK_THAT(sparse.cells().width(0), WithinRel(std::sqrt(2.0), 1e-15));
+  // An explicit width wins.
+  EngineConfig<2> explicit_width = open_config<2>(60.0);
+  explicit_width.cell_width = 1.1;
+  CHECK(Engine<2, CalendarEventQueue>(explicit_width, s2).cells().width(0) == 1.1);
 }
 
 namespace {
@@ -216,6 +250,7 @@ template <int D>
 void compare_big_with_wide_cells(const InitialState<D>& s, double region, double t_end, std::uint64_t min_collisions) {
   INFO("impurity radius " << s.impurity.radius << ", mass " << s.impurity.mass << ", d = " << D);
   EngineConfig<D> big = open_config<D>(region), wide = big;
+  big.cell_width = 1.0;  // host-sized cells (the automatic width would be wider in this dilute gas)
   wide.wide_cells_for_big = true;
   {
     Engine<D, CalendarEventQueue> narrow(big, s), plain(wide, s);
@@ -253,6 +288,7 @@ TEST_CASE("the overlap check sees a host overlapping a big particle two cells aw
   add<2>(s, Vec<2>(0.2, 0.2), Vec<2>::Zero(), impurity_species);
   add<2>(s, Vec<2>(0.2 + 2.9, 0.2), Vec<2>::Zero());
   EngineConfig<2> config = open_config<2>(20.0);
+  config.cell_width = 1.0;
   config.overlap_check = false;
   Engine<2, CalendarEventQueue> engine(config, s);
   REQUIRE(engine.cells().width(0) == 1.0);
