@@ -5,6 +5,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace coldblast::md {
 
 namespace {
@@ -215,14 +219,40 @@ template <bool Shifted>
   // exactly -dr and the same contact time.
   if constexpr (Shifted) dr = (q.position + q.velocity * (reference - q.time) - own) + shift;
   else dr = q.position + q.velocity * (reference - q.time) - own;
+  const Vec<D> dv = q.velocity - velocity;
   const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
-  const double tau = contact_time_squared<D>(dr, q.velocity - velocity, sigma2);
-  const double t = reference + tau;
+#if defined(__SSE2__)
+  // contact_time_squared (collision.hpp) operation for operation, without its two early returns
+  // (a receding pair, a missing pair): each is a coin flip for the branch predictor, and a
+  // mispredicted branch costs more than the root computed for every candidate. g++ turns
+  // ternaries on doubles into jumps and std::sqrt into a jump around its errno path, so the
+  // selects are SSE2 masks (maxsd(x, 0) is x > 0 ? x : 0). A hit gets bitwise the same contact
+  // time; docs/benchmarks.md, "Branch-free pair test".
+  const double b = dr.dot(dv);
+  const double v2 = dv.squaredNorm();
+  const double c = dr.squaredNorm() - sigma2;
+  const double disc = b * b - v2 * c;
+  const __m128d zero = _mm_setzero_pd();
+  const __m128d root = _mm_sqrt_sd(zero, _mm_max_sd(_mm_set_sd(disc), zero));
+  const __m128d tau = _mm_div_sd(_mm_set_sd(c), _mm_add_sd(_mm_set_sd(-b), root));
+  const __m128d t = _mm_add_sd(_mm_set_sd(reference), _mm_max_sd(tau, zero));
+  const __m128d previous = _mm_set_sd(best.time);
+  // hit: approaching (b < 0), not missing (disc >= 0), and earlier than the best so far
+  const __m128d hit = _mm_and_pd(_mm_and_pd(_mm_cmplt_sd(_mm_set_sd(b), zero), _mm_cmpge_sd(_mm_set_sd(disc), zero)),
+                                 _mm_cmplt_sd(t, previous));
+  best.time = _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(hit, t), _mm_andnot_pd(hit, previous)));
+  const std::uint32_t keep = static_cast<std::uint32_t>(_mm_movemask_pd(hit) & 1) - 1u;  // 0 on a hit, else ~0
+  best.partner = static_cast<std::int32_t>((static_cast<std::uint32_t>(j) & ~keep) |
+                                           (static_cast<std::uint32_t>(best.partner) & keep));
+  best.partner_collisions = (q.collisions & ~keep) | (best.partner_collisions & keep);
+#else
+  const double t = reference + contact_time_squared<D>(dr, dv, sigma2);
   if (t < best.time) {
     best.time = t;
     best.partner = j;
     best.partner_collisions = q.collisions;
   }
+#endif
 }
 
 template <int D, class Queue>
@@ -260,8 +290,8 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* c
 template <int D, class Queue>
 [[gnu::always_inline]] inline void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first,
                                   const std::int32_t* last) {
-  // Same arithmetic and visiting order as scan_cell with a zero shift, with the particle's data
-  // and its best prediction kept in registers across the cells.
+  // Same arithmetic and visiting order as scan_wrapped_cells with zero shifts, with the particle's
+  // data and its best prediction kept in registers across the cells.
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
