@@ -110,13 +110,10 @@ void run_md(const MdRunOptions& o) {
   // in 2D, Carnahan-Starling in 3D) sizes the box and is written to the outputs.
   std::string A_d_source;
   if (config.A_d == 0.0) {
-    hydro::TvnsConfig tvns;
-    tvns.d = config.d;
-    tvns.eos = config.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
-    tvns.phi = md::resolve_scene(config).phi;
-    tvns.tolerance = 1e-8;
-    config.A_d = hydro::solve_tvns(tvns).A();
-    A_d_source = "hydro TvNS, " + hydro::to_string(tvns.eos) + " EOS at phi = " + common::format_number(tvns.phi);
+    const double phi = md::resolve_scene(config).phi;
+    const hydro::TvnsSolution tvns = hydro::solve_tvns_for_md(config.d, phi);
+    config.A_d = tvns.A();
+    A_d_source = "hydro TvNS, " + hydro::to_string(tvns.config().eos) + " EOS at phi = " + common::format_number(phi);
   }
   md::RunOptions options;
   options.threads = o.threads;

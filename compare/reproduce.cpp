@@ -124,7 +124,8 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   const hydro::TvnsSolution a3 = hydro::solve_tvns({3, 0.0, hydro::Eos::ideal, 0.0, 1e-13});
   md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
   r.phi_md = theory::packing_fraction(scene.d, scene.n, scene.a);
-  const hydro::TvnsSolution a2_md = hydro::solve_tvns({2, 0.0, hydro::Eos::henderson, r.phi_md, 1e-10});
+  // the amplitude `md run` uses, so that step 3 equals `coldblast md run` of the scene bit for bit
+  const hydro::TvnsSolution a2_md = hydro::solve_tvns_for_md(2, r.phi_md);
   r.A2 = a2.A();
   r.A2_error = a2.A_error();
   r.A3 = a3.A();

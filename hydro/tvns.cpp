@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 #include <stdexcept>
 
 #include <gsl/gsl_errno.h>
@@ -234,5 +235,10 @@ TvnsSolution::ProfileEnergy TvnsSolution::energy_from_profile(double tolerance) 
 }
 
 TvnsSolution solve_tvns(const TvnsConfig& config) { return TvnsSolution(config); }
+
+TvnsSolution solve_tvns_for_md(int d, double phi) {
+  if (d != 2 && d != 3) throw std::invalid_argument("d = " + std::to_string(d) + " is outside {2, 3} for hard-particle MD");
+  return solve_tvns({d, 0.0, d == 2 ? Eos::henderson : Eos::carnahan_starling, phi, 1e-8});
+}
 
 }  // namespace coldblast::hydro

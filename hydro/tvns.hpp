@@ -121,6 +121,13 @@ class TvnsSolution {
 /// Solves the blast for a validated config; throws std::invalid_argument on bad config.
 TvnsSolution solve_tvns(const TvnsConfig& config);
 
+/// The hard-particle amplitude A_d(phi) that sizes an MD blast box: Henderson EOS in 2D,
+/// Carnahan-Starling in 3D, solved to relative accuracy 1e-8. `coldblast md run` and
+/// `coldblast reproduce` both call this, so a scene run either way gets the same box to the last
+/// bit and hence the same trajectories. Throws std::invalid_argument for d outside {2, 3} or phi
+/// out of range.
+TvnsSolution solve_tvns_for_md(int d, double phi);
+
 /// Which branch applies for an ideal gas with this d and gamma.
 TvnsCase tvns_case(int d, double gamma);
 
