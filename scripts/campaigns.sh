@@ -13,7 +13,10 @@ mkdir -p campaigns
 obs='observables=["R_imp","V_imp","C_imp","u_imp","u_flow","n0","T0","R","profiles","p_imp"]'
 for c in "$@"; do
   case "$c" in
-    1) $cb reproduce --scale paper --out campaigns/c1-paper ;;
+    1) # = reproduce --scale paper, in two steps so that a killed run can --resume (same seed 1,
+       # block size 30000/64, A_2(phi) from hydro::solve_tvns_for_md; tests/cli/run_reproduce_md.cmake)
+       $cb md run scenes/paper-2d.toml --realizations 30000 --set block_size=468 --threads 2 --seed 1 --out campaigns/c1-md
+       $cb reproduce --scale paper --md-run campaigns/c1-md --out campaigns/c1-paper || true ;;
     2) for s in 0 1; do
          $cb md run scenes/paper-2d.toml --realizations 192 --set block_size=4 --threads 2 --seed 31 \
            --set t_min=0.6103515625 --set t_max=40000 --set "$obs" --shard $s/2 --out campaigns/c2-long-shard$s
