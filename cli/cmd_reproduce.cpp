@@ -67,7 +67,9 @@ void add_reproduce_command(CLI::App& app) {
                       "Navier–Stokes run up to this R/lambda, [20, 1e8]; 0 = the scale's default (1e4, 1e6)")
       ->capture_default_str();
   command->add_option("--md-run", options->config.md_run,
-                      "Use this existing `md run` directory of the paper scene instead of running the MD step");
+                      "Use this existing `md run` directory of the paper scene instead of running the MD step. "
+                      "`md run scenes/paper-2d.toml --realizations 30000 --set block_size=468 --seed 1` is the "
+                      "--scale paper ensemble bit for bit, and can --resume if killed");
   command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
   add_format_option(*command, options->format);
   command->callback([options] { run(*options); });
