@@ -261,7 +261,11 @@ EnsemblePlan plan_ensemble(const BlastConfig& config, const RunOptions& options)
     if (options.resume) {
       Checkpoint saved = load_checkpoint(options.checkpoint, result.scene);
       for (auto& [b, s] : saved.blocks)
-        if (b % options.shard_count == options.shard_index) result.blocks[b] = std::move(s);
+        if (b % options.shard_count == options.shard_index) {
+          result.resumed_realizations += s.count;
+          result.resumed_collisions += s.collisions;
+          result.blocks[b] = std::move(s);
+        }
       if (result.blocks.count(0)) result.realization0_files = std::move(saved.realization0_files);
     } else {
       start_checkpoint(options.checkpoint, result.scene);
@@ -366,7 +370,9 @@ common::Json blast_summary(const BlastResult& result) {
     json << toml::json_formatter{toml::parse(std::string_view(c.to_toml()))};
     scene_json = common::Json::parse(json.str());
   }
-  const double collisions = static_cast<double>(result.collisions());
+  // Cost figures count the work done in wall_seconds: without the blocks a resumed run loaded.
+  const double collisions = static_cast<double>(result.collisions() - result.resumed_collisions);
+  const long long realizations_run = result.realizations() - result.resumed_realizations;
   common::Json j;
   j["scene"] = scene_json;
   j["seed"] = c.seed;
@@ -391,7 +397,9 @@ common::Json blast_summary(const BlastResult& result) {
   j["block_size"] = c.block_size;
   j["blocks"] = result.blocks.size();
   j["seconds_per_realization"] =
-      result.realizations() > 0 ? result.wall_seconds * result.threads * result.ranks / result.realizations() : 0.0;
+      realizations_run > 0 ? result.wall_seconds * result.threads * result.ranks / realizations_run : 0.0;
+  j["resumed_realizations"] = result.resumed_realizations;
+  j["resumed_collisions"] = result.resumed_collisions;
   j["threads"] = result.threads;
   j["ranks"] = result.ranks;
   j["shard"] = std::to_string(result.shard_index) + "/" + std::to_string(result.shard_count);
@@ -497,6 +505,8 @@ BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& direct
                                   directories.front().string());
     }
     merged.wall_seconds += summary.at("wall_seconds").get<double>();
+    merged.resumed_realizations += summary.value("resumed_realizations", 0LL);
+    merged.resumed_collisions += summary.value("resumed_collisions", std::uint64_t{0});
     merged.threads = std::max(merged.threads, summary.at("threads").get<int>());
     const ObservableLayout layout(merged.scene);
     std::map<long long, BlockSums> blocks;

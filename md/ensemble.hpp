@@ -49,6 +49,10 @@ struct BlastResult {
   ResolvedScene scene;
   std::map<long long, BlockSums> blocks;  ///< by block index
   double wall_seconds = 0.0;
+  /// Realizations and collisions of blocks loaded from a checkpoint (`--resume`), not run in
+  /// wall_seconds: the cost figures of the summary leave them out.
+  long long resumed_realizations = 0;
+  std::uint64_t resumed_collisions = 0;
   int threads = 1, shard_index = 0, shard_count = 1;
   int ranks = 1;  ///< MPI ranks that ran the ensemble (md/mpi_ensemble.hpp), each with `threads` threads
   /// Extra files of realization 0 (snapshot_<t>.csv, trajectories.csv): name → content.
