@@ -3,6 +3,10 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <system_error>
+#include <vector>
+
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
@@ -19,6 +23,16 @@ namespace fs = std::filesystem;
 namespace {
 // A run whose observables follow the theory's exponents exactly (up to noise), with one
 // observable's exponent shifted by `shift`.
+// The run folders of this test process, removed when it exits.
+struct RunFolders {
+  std::vector<fs::path> paths;
+  ~RunFolders() {
+    std::error_code ignored;
+    for (const auto& path : paths) fs::remove_all(path, ignored);
+  }
+};
+RunFolders run_folders;
+
 fs::path make_run(int d, const std::string& shifted = "", double shift = 0.0, double sigma = 0.05) {
   const auto exact = coldblast::theory::scaling_exponents(d);
   std::map<std::string, BlockSeries> series;
@@ -31,8 +45,11 @@ fs::path make_run(int d, const std::string& shifted = "", double shift = 0.0, do
     s.observable = name;
     series[name] = s;
   }
-  const fs::path dir = fs::temp_directory_path() / ("coldblast_verdict_" + std::to_string(d) + shifted);
+  // one folder per test process: ctest -j runs the test cases that share a (d, shifted) run at once
+  const fs::path dir = fs::temp_directory_path() /
+                       ("coldblast_verdict_" + std::to_string(d) + shifted + "_" + std::to_string(::getpid()));
   write_synthetic_run(dir, d, series);
+  run_folders.paths.push_back(dir);
   return dir;
 }
 }  // namespace
