@@ -21,14 +21,14 @@ namespace fs = std::filesystem;
 namespace {
 
 struct Bin {
-  double r, p, error;
+  double r, p, error, width;
 };
 
 std::map<double, std::vector<Bin>> distribution_by_time(const CsvTable& table) {
   const std::size_t t = table.column("t"), r = table.column("r"), p = table.column("p"),
-                    e = table.column("p_stderr");
+                    e = table.column("p_stderr"), lo = table.column("r_lo"), hi = table.column("r_hi");
   std::map<double, std::vector<Bin>> by_time;
-  for (const auto& row : table.rows) by_time[row[t]].push_back({row[r], row[p], row[e]});
+  for (const auto& row : table.rows) by_time[row[t]].push_back({row[r], row[p], row[e], row[hi] - row[lo]});
   return by_time;
 }
 
@@ -36,6 +36,39 @@ double residual_sum(const std::vector<Bin>& bins, int d, double R_imp) {
   double sum = 0;
   for (const auto& bin : bins) sum += std::pow(bin.p - theory::radial_position_density(d, bin.r, R_imp), 2);
   return sum;
+}
+
+// chi^2 of the Gaussian of width R_imp against the per-bin errors, and <r^4>/<r^2>^2 of the
+// histogram (moments as sums of r^k p dr over the bins) with its linearly propagated error.
+void shape_statistics(const std::vector<Bin>& bins, int d, double R_imp, DistributionFit& fit) {
+  double chi2 = 0.0;
+  int weighted = 0;
+  double m0 = 0.0, m2 = 0.0, m4 = 0.0;
+  for (const auto& bin : bins) {
+    if (bin.error > 0.0) {
+      chi2 += std::pow((bin.p - theory::radial_position_density(d, bin.r, R_imp)) / bin.error, 2);
+      ++weighted;
+    }
+    const double r2 = bin.r * bin.r;
+    m0 += bin.p * bin.width;
+    m2 += r2 * bin.p * bin.width;
+    m4 += r2 * r2 * bin.p * bin.width;
+  }
+  fit.weighted_bins = weighted;
+  fit.chi2_per_dof = weighted > 1 ? chi2 / (weighted - 1) : NAN;
+  fit.moment_ratio_gaussian = (d + 2.0) / d;
+  if (m0 <= 0.0 || m2 <= 0.0) {
+    fit.moment_ratio = fit.moment_ratio_error = NAN;
+    return;
+  }
+  fit.moment_ratio = m4 * m0 / (m2 * m2);
+  double variance = 0.0;
+  for (const auto& bin : bins) {
+    const double r2 = bin.r * bin.r;
+    const double derivative = fit.moment_ratio * (r2 * r2 / m4 + 1.0 / m0 - 2.0 * r2 / m2) * bin.width;
+    variance += std::pow(derivative * bin.error, 2);
+  }
+  fit.moment_ratio_error = std::sqrt(variance);
 }
 
 }  // namespace
@@ -87,6 +120,7 @@ std::optional<DistributionFit> fit_impurity_distribution(const RunData& run) {
   }
   fit.b_fit_error = jacobian_sq > 0 ? std::sqrt(rss / std::max(fit.bins - 1, 1) / jacobian_sq) : INFINITY;
   fit.residual_rms = std::sqrt(rss / std::max(fit.bins, 1));
+  shape_statistics(bins, run.d, fit.b_fit * scale, fit);
   return fit;
 }
 

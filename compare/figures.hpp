@@ -19,6 +19,14 @@ struct DistributionFit {
   double b_direct = 0;         ///< R_imp(t)/t^spread from the R_imp observable (paper: 1.71)
   double residual_rms = 0;     ///< root-mean-square residual of p (1/length)
   int bins = 0;
+  /// Shape tests of the Gaussian (docs/verification.md, Campaign 1): chi^2 per degree of freedom
+  /// of the fitted Gaussian against the per-bin standard errors (bins with an error > 0; NaN if
+  /// fewer than two), and the moment ratio <r^4>/<r^2>^2 of the histogram with its error
+  /// (linear propagation of the per-bin errors, bins taken as independent), which is (d+2)/d for
+  /// any isotropic Gaussian (Eq. (35)) whatever its width.
+  double chi2_per_dof = 0;
+  int weighted_bins = 0;
+  double moment_ratio = 0, moment_ratio_error = 0, moment_ratio_gaussian = 0;
 };
 
 /// Fits p_imp.csv at its last time; nullopt when the run has no p_imp.csv.
