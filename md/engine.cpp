@@ -49,6 +49,8 @@ struct CellPlan {
 // (1.05 sigma +4 %, 1.1 sigma +8 %), so the rule keeps sigma there. Trajectories do not depend on
 // the width in open geometry (crossings never touch the stored state): this only changes the cost.
 constexpr double auto_scan_candidates = 2.7;
+// Candidates gathered before the SIMD pair kernel runs (a multiple of 4; more are tested in batches).
+constexpr int gather_capacity = 64;
 
 template <int D>
 double automatic_width(const EngineConfig<D>& config, const InitialState<D>& state) {
@@ -106,6 +108,7 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       sigma2_[s][r] = sigma_[s][r] * sigma_[s][r];
     }
   same_radius_ = radius_[0] == radius_[1];
+  use_kernel_ = D == 3 && config.simd && same_radius_ && pair_kernel_available();
   if (!config.periodic) {
     // Positions are checked at every event of a moving particle, and a particle has an event at
     // least once per cell it crosses, so checking |x| against guard_radius minus one cell diagonal
@@ -273,6 +276,30 @@ template <bool Shifted>
 }
 
 template <int D, class Queue>
+void Engine<D, Queue>::kernel_scan(std::int32_t id, std::int32_t* ids, int count, double* sx, double* sy, double* sz,
+                                   const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2,
+                                   Prediction& best) const {
+  if constexpr (D == 3) {
+    if (count == 0) return;
+    // Pad to a multiple of 4 with the particle itself (zero separation: never a hit).
+    while (count % 4 != 0) {
+      ids[count] = id;
+      if (sx != nullptr) sx[count] = sy[count] = sz[count] = 0.0;
+      ++count;
+    }
+    const EarliestContact hit =
+        earliest_contact(particles_.data(), ids, count, {sx, sy, sz}, position, velocity, time, sigma2, best.time);
+    if (hit.index >= 0) {
+      best.time = hit.time;
+      best.partner = ids[hit.index];
+      best.partner_collisions = particles_[best.partner].collisions;
+    }
+  } else {
+    (void)id, (void)ids, (void)count, (void)sx, (void)sy, (void)sz, (void)position, (void)velocity, (void)time, (void)sigma2, (void)best;
+  }
+}
+
+template <int D, class Queue>
 [[gnu::noinline]] void Engine<D, Queue>::scan_bigs(std::int32_t id) {
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
@@ -299,6 +326,30 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* c
   Prediction best = predictions_[id];
   const double* sigma2_row = sigma2_[species_[id]];
   const bool same_radius = same_radius_;  // a local: stays in a register across the stores to best
+  if constexpr (D == 3) {
+    if (use_kernel_) {
+      // Gather the candidates and their image shifts, then test them four at a time.
+      alignas(32) std::int32_t ids[gather_capacity];
+      alignas(32) double sx[gather_capacity], sy[gather_capacity], sz[gather_capacity];
+      int n = 0;
+      for (int m = 0; m < count; ++m)
+        for (std::int32_t j = cells_.first(cells[m]); j >= 0; j = cells_.next(j)) {
+          if (j == id) continue;
+          __builtin_prefetch(&particles_[j]);
+          ids[n] = j;
+          sx[n] = shifts[m][0];
+          sy[n] = shifts[m][1];
+          sz[n] = shifts[m][2];
+          if (++n == gather_capacity) {
+            kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
+            n = 0;
+          }
+        }
+      kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
+      predictions_[id] = best;
+      return;
+    }
+  }
   for (int m = 0; m < count; ++m)
     scan_list<true>(id, cells[m], shifts[m], position, velocity, time, sigma2_row, same_radius, best);
   predictions_[id] = best;
@@ -316,6 +367,25 @@ template <int D, class Queue>
   const double* sigma2_row = sigma2_[species_[id]];
   const bool same_radius = same_radius_;
   const Vec<D> no_shift = Vec<D>::Zero();
+  if constexpr (D == 3) {
+    if (use_kernel_) {
+      alignas(32) std::int32_t ids[gather_capacity];
+      int n = 0;
+      for (; first != last; ++first)
+        for (std::int32_t j = cells_.first(base + *first); j >= 0; j = cells_.next(j)) {
+          if (j == id) continue;
+          __builtin_prefetch(&particles_[j]);  // the kernel's loads, started while the lists are walked
+          ids[n] = j;
+          if (++n == gather_capacity) {
+            kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
+            n = 0;
+          }
+        }
+      kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
+      predictions_[id] = best;
+      return;
+    }
+  }
   for (; first != last; ++first)
     scan_list<false>(id, base + *first, no_shift, position, velocity, time, sigma2_row, same_radius, best);
   predictions_[id] = best;
@@ -477,6 +547,7 @@ void Engine<D, Queue>::run_until(double t) {
   while (!queue_.empty()) {
     const auto [time, id] = queue_.top();
     if (time > t) break;
+    prefetch_next();
     queue_.pop();
     process(id, time);
   }
@@ -488,6 +559,7 @@ void Engine<D, Queue>::run_collisions(std::uint64_t count) {
   const std::uint64_t target = collision_count_ + count;
   while (collision_count_ < target && !queue_.empty()) {
     const auto [time, id] = queue_.top();
+    prefetch_next();
     queue_.pop();
     process(id, time);
   }

@@ -11,6 +11,7 @@
 #include "md/cell_list.hpp"
 #include "md/collision.hpp"
 #include "md/event_queue.hpp"
+#include "md/pair_kernel.hpp"
 #include "md/particles.hpp"
 
 namespace coldblast::md {
@@ -31,6 +32,9 @@ struct EngineConfig {
   /// Open geometry: keep cells as wide as the largest contact distance even for large impurities
   /// (the plain scheme; same trajectories bit for bit, much slower for radius ratios >> 1).
   bool wide_cells_for_big = false;
+  /// 3D with equal radii: test candidates four at a time with the AVX2 pair kernel where the CPU
+  /// has AVX2 (md/pair_kernel.hpp). Trajectories are bitwise the same either way (tested).
+  bool simd = true;
   bool overlap_check = false;      ///< verify after every event that the touched particles overlap nobody
   bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
 };
@@ -91,6 +95,13 @@ class Engine {
     std::uint32_t partner_collisions = 0;  // partner's counter when predicted
   };
   void process(std::int32_t id, double t);
+  // Starts loading the data of the event after the current one while the current one is processed.
+  void prefetch_next() const {
+    const std::int32_t next = queue_.second_hint();
+    if (next < 0) return;
+    __builtin_prefetch(&particles_[next]);
+    __builtin_prefetch(&predictions_[next]);
+  }
   void collide(std::int32_t i, std::int32_t j, double t);
   void cross(std::int32_t id, double t);
   // Scans the unwrapped cells base + delta for delta in [first, last) (no periodic image shift).
@@ -106,6 +117,10 @@ class Engine {
   template <bool Shifted>
   void test_pair(std::int32_t j, const Vec<D>& shift, const Vec<D>& position, const Vec<D>& velocity, double time,
                  const double* sigma2_row, bool same_radius, Prediction& best) const;
+  // The gathered candidates ids[0, count) through the SIMD kernel (D = 3; ids has room to pad
+  // count to a multiple of 4, and so have the shift arrays when present).
+  void kernel_scan(std::int32_t id, std::int32_t* ids, int count, double* sx, double* sy, double* sz,
+                   const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2, Prediction& best) const;
   void full_scan(std::int32_t id);
   // Big particles (open geometry, impurities larger than the host: see engine.cpp).
   bool is_big(std::int32_t id) const { return big_reach_ != 0 && species_[id] != host_species; }
@@ -133,6 +148,7 @@ class Engine {
   std::vector<std::int32_t> moving_;
   double radius_[2], mass_[2], sigma_[2][2], sigma2_[2][2];  // sigma2_ = sigma_²
   bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
+  bool use_kernel_ = false;  // the SIMD pair kernel (config.simd, D = 3, equal radii, CPU with AVX2)
   double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run
   CellList<D> cells_;
   int big_reach_ = 0;                      // k: cells per axis a big particle's stencil reaches; 0 = none

@@ -24,6 +24,11 @@ class HeapEventQueue {
   /// Earliest event (time, id); the queue must not be empty.
   std::pair<double, std::int32_t> top() const { return {heap_[0].time, heap_[0].id}; }
   void pop() { remove(heap_[0].id); }
+  /// The id of the event after the earliest one, or -1 (a prefetch hint, as CalendarEventQueue's).
+  std::int32_t second_hint() const {
+    if (heap_.size() < 3) return heap_.size() == 2 ? heap_[1].id : -1;
+    return before(heap_[1], heap_[2]) ? heap_[1].id : heap_[2].id;
+  }
   void clear();
   /// Bytes held per particle of capacity (for the memory budget).
   std::size_t bytes() const;
@@ -73,6 +78,9 @@ class CalendarEventQueue {
     --size_;
     if (++pops_ == adapt_interval) adapt();
   }
+  /// The id of the event after the earliest one if it is known without work (it is in the current
+  /// bucket), else -1: a hint for prefetching, not an order guarantee.
+  std::int32_t second_hint() const { return sorted_size_ >= 2 ? sorted_[sorted_size_ - 2].id : -1; }
   void clear();
   std::size_t bytes() const;
 

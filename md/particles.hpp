@@ -15,7 +15,7 @@ using Vec = Eigen::Matrix<double, D, 1>;
 
 /// Hot per-particle data, one cache line in 3D (64 bytes) and 48 bytes in 2D.
 template <int D>
-struct Particle {
+struct alignas(D == 3 ? 64 : 16) Particle {
   Vec<D> position = Vec<D>::Zero();  ///< position at `time`
   Vec<D> velocity = Vec<D>::Zero();  ///< constant between collisions
   double time = 0.0;                 ///< time at which `position` is valid (lazy update)

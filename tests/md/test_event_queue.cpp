@@ -1,6 +1,7 @@
 // Event calendars against a brute-force next-event search on random operation sequences
 // (DynamO's sorter-versus-sort test): the heap and the bucketed calendar must pop exactly the
-// (time, id) minimum at every step, through inserts, moves earlier and later, removals and pops.
+// (time, id) minimum at every step, through inserts, moves earlier and later, removals and pops;
+// their prefetch hint, when given, must be the second event.
 #include <cmath>
 #include <map>
 #include <random>
@@ -19,8 +20,9 @@ std::pair<double, std::int32_t> brute_force_min(const std::map<std::int32_t, dou
   return best;
 }
 
+// Returns how many times the queue gave a prefetch hint (each was checked).
 template <class Queue>
-void compare_with_brute_force(std::uint64_t seed, double spread, int ties) {
+int compare_with_brute_force(std::uint64_t seed, double spread, int ties) {
   INFO("seed " << seed << ", spread " << spread);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -28,6 +30,7 @@ void compare_with_brute_force(std::uint64_t seed, double spread, int ties) {
   Queue queue(capacity);
   std::map<std::int32_t, double> events;
   double now = 0.0;
+  int hints = 0;
   for (int step = 0; step < 60000; ++step) {
     const double r = uniform(rng);
     const std::int32_t id = static_cast<std::int32_t>(rng() % capacity);
@@ -46,6 +49,13 @@ void compare_with_brute_force(std::uint64_t seed, double spread, int ties) {
       const auto got = queue.top();
       REQUIRE(got.first == expected.first);
       REQUIRE(got.second == expected.second);
+      // The prefetch hint, when the queue gives one, is the second event in (time, id) order.
+      if (const std::int32_t hint = queue.second_hint(); hint >= 0) {
+        std::map<std::int32_t, double> rest = events;
+        rest.erase(expected.second);
+        REQUIRE(hint == brute_force_min(rest).second);
+        ++hints;
+      }
       queue.pop();
       events.erase(expected.second);
       now = expected.first;
@@ -59,17 +69,23 @@ void compare_with_brute_force(std::uint64_t seed, double spread, int ties) {
     events.erase(expected.second);
   }
   REQUIRE(queue.empty());
+  return hints;
 }
 }  // namespace
 
 TEST_CASE("HeapEventQueue matches a brute-force minimum search", "[fast]") {
-  for (std::uint64_t seed : {1u, 2u, 3u}) compare_with_brute_force<HeapEventQueue>(seed, 1.0, 0);
-  compare_with_brute_force<HeapEventQueue>(4, 10.0, 1);
+  int hints = 0;
+  for (std::uint64_t seed : {1u, 2u, 3u}) hints += compare_with_brute_force<HeapEventQueue>(seed, 1.0, 0);
+  hints += compare_with_brute_force<HeapEventQueue>(4, 10.0, 1);
+  REQUIRE(hints > 10000);  // the heap always knows its second event
 }
 
 TEST_CASE("CalendarEventQueue matches a brute-force minimum search", "[fast]") {
-  for (std::uint64_t seed : {1u, 2u, 3u}) compare_with_brute_force<CalendarEventQueue>(seed, 1.0, 0);
-  compare_with_brute_force<CalendarEventQueue>(5, 1e-6, 0);  // tiny spread: width must shrink
-  compare_with_brute_force<CalendarEventQueue>(6, 1e6, 0);   // huge spread: width must grow
-  compare_with_brute_force<CalendarEventQueue>(4, 10.0, 1);
+  int hints = 0;
+  for (std::uint64_t seed : {1u, 2u, 3u}) hints += compare_with_brute_force<CalendarEventQueue>(seed, 1.0, 0);
+  hints += compare_with_brute_force<CalendarEventQueue>(5, 1e-6, 0);  // tiny spread: width must shrink
+  hints += compare_with_brute_force<CalendarEventQueue>(6, 1e6, 0);   // huge spread: width must grow
+  hints += compare_with_brute_force<CalendarEventQueue>(4, 10.0, 1);
+  INFO("calendar hints checked: " << hints);
+  REQUIRE(hints > 20);  // only when the current bucket holds two events or more
 }

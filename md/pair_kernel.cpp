@@ -1,0 +1,126 @@
+#include "md/pair_kernel.hpp"
+
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define COLDBLAST_PAIR_KERNEL_X86 1
+#endif
+
+namespace coldblast::md {
+
+static_assert(sizeof(Particle<3>) == 64 && alignof(Particle<3>) == 64,
+              "the kernel loads a 3D particle as two 32-byte halves: x y z vx | vy vz time (collisions, cell)");
+static_assert(offsetof(Particle<3>, velocity) == 24 && offsetof(Particle<3>, time) == 48,
+              "the kernel's transposes assume this layout");
+
+#if defined(COLDBLAST_PAIR_KERNEL_X86)
+
+bool pair_kernel_available() {
+  static const bool available = __builtin_cpu_supports("avx2");
+  return available;
+}
+
+namespace {
+// 4x4 transpose of rows r0..r3 (each one candidate's four doubles) into columns.
+__attribute__((target("avx2"))) inline void transpose4(__m256d r0, __m256d r1, __m256d r2, __m256d r3, __m256d& c0,
+                                                      __m256d& c1, __m256d& c2, __m256d& c3) {
+  const __m256d t0 = _mm256_unpacklo_pd(r0, r1);  // r0[0] r1[0] r0[2] r1[2]
+  const __m256d t1 = _mm256_unpackhi_pd(r0, r1);  // r0[1] r1[1] r0[3] r1[3]
+  const __m256d t2 = _mm256_unpacklo_pd(r2, r3);
+  const __m256d t3 = _mm256_unpackhi_pd(r2, r3);
+  c0 = _mm256_permute2f128_pd(t0, t2, 0x20);
+  c1 = _mm256_permute2f128_pd(t1, t3, 0x20);
+  c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+  c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+}  // namespace
+
+__attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<3>* particles,
+                                                                 const std::int32_t* ids, int count,
+                                                                 const CandidateShifts& shifts,
+                                                                 const Vec<3>& position, const Vec<3>& velocity,
+                                                                 double time, double sigma2, double before) {
+  if (count % 4 != 0) throw std::invalid_argument("earliest_contact: count is not a multiple of 4");
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d sign = _mm256_set1_pd(-0.0);
+  const __m256d own_time = _mm256_set1_pd(time);
+  const __m256d px = _mm256_set1_pd(position[0]), py = _mm256_set1_pd(position[1]), pz = _mm256_set1_pd(position[2]);
+  const __m256d vx = _mm256_set1_pd(velocity[0]), vy = _mm256_set1_pd(velocity[1]), vz = _mm256_set1_pd(velocity[2]);
+  const __m256d s2 = _mm256_set1_pd(sigma2);
+  // Per lane: the earliest time so far (strictly earlier replaces: the first candidate wins ties)
+  // and the candidate index that gave it.
+  __m256d lane_best = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+  __m256d lane_index = _mm256_set1_pd(-1.0);
+  __m256d index = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+  const __m256d four = _mm256_set1_pd(4.0);
+  for (int k = 0; k < count; k += 4) {
+    const double* a = reinterpret_cast<const double*>(particles + ids[k]);
+    const double* b = reinterpret_cast<const double*>(particles + ids[k + 1]);
+    const double* c = reinterpret_cast<const double*>(particles + ids[k + 2]);
+    const double* d = reinterpret_cast<const double*>(particles + ids[k + 3]);
+    __m256d qx, qy, qz, qvx, qvy, qvz, qt, unused;
+    transpose4(_mm256_load_pd(a), _mm256_load_pd(b), _mm256_load_pd(c), _mm256_load_pd(d), qx, qy, qz, qvx);
+    transpose4(_mm256_load_pd(a + 4), _mm256_load_pd(b + 4), _mm256_load_pd(c + 4), _mm256_load_pd(d + 4), qvy, qvz,
+               qt, unused);
+    (void)unused;
+    // reference = max(time, q.time); own = position + velocity (reference - time)
+    const __m256d reference = _mm256_max_pd(own_time, qt);
+    const __m256d own_dt = _mm256_sub_pd(reference, own_time);
+    const __m256d q_dt = _mm256_sub_pd(reference, qt);
+    // dr = (q.position + q.velocity (reference - q.time) - own) [+ shift]
+    __m256d dx = _mm256_sub_pd(_mm256_add_pd(qx, _mm256_mul_pd(qvx, q_dt)), _mm256_add_pd(px, _mm256_mul_pd(vx, own_dt)));
+    __m256d dy = _mm256_sub_pd(_mm256_add_pd(qy, _mm256_mul_pd(qvy, q_dt)), _mm256_add_pd(py, _mm256_mul_pd(vy, own_dt)));
+    __m256d dz = _mm256_sub_pd(_mm256_add_pd(qz, _mm256_mul_pd(qvz, q_dt)), _mm256_add_pd(pz, _mm256_mul_pd(vz, own_dt)));
+    if (shifts.x != nullptr) {
+      dx = _mm256_add_pd(dx, _mm256_loadu_pd(shifts.x + k));
+      dy = _mm256_add_pd(dy, _mm256_loadu_pd(shifts.y + k));
+      dz = _mm256_add_pd(dz, _mm256_loadu_pd(shifts.z + k));
+    }
+    const __m256d ux = _mm256_sub_pd(qvx, vx), uy = _mm256_sub_pd(qvy, vy), uz = _mm256_sub_pd(qvz, vz);
+    // b = dr.dv, v2 = |dv|^2, c = |dr|^2 - sigma2, summed as Eigen sums a 3-vector: (0 + 1) + 2
+    const __m256d bb = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, ux), _mm256_mul_pd(dy, uy)), _mm256_mul_pd(dz, uz));
+    const __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ux, ux), _mm256_mul_pd(uy, uy)), _mm256_mul_pd(uz, uz));
+    const __m256d cc = _mm256_sub_pd(
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)), s2);
+    const __m256d disc = _mm256_sub_pd(_mm256_mul_pd(bb, bb), _mm256_mul_pd(v2, cc));
+    // max(x, 0) as maxsd(x, 0): NaN and -0 give 0, as in the scalar kernel
+    const __m256d root = _mm256_sqrt_pd(_mm256_max_pd(disc, zero));
+    const __m256d tau = _mm256_div_pd(cc, _mm256_add_pd(_mm256_xor_pd(bb, sign), root));
+    const __m256d t = _mm256_add_pd(reference, _mm256_max_pd(tau, zero));
+    const __m256d hit = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(bb, zero, _CMP_LT_OQ), _mm256_cmp_pd(disc, zero, _CMP_GE_OQ)),
+                                      _mm256_cmp_pd(t, lane_best, _CMP_LT_OQ));
+    lane_best = _mm256_blendv_pd(lane_best, t, hit);
+    lane_index = _mm256_blendv_pd(lane_index, index, hit);
+    index = _mm256_add_pd(index, four);
+  }
+  alignas(32) double times[4], indices[4];
+  _mm256_store_pd(times, lane_best);
+  _mm256_store_pd(indices, lane_index);
+  EarliestContact result{before, -1};
+  for (int lane = 0; lane < 4; ++lane) {
+    if (indices[lane] < 0.0) continue;
+    const int candidate = static_cast<int>(indices[lane]);
+    // earliest time; among equal times the first candidate, as the scalar loop in order
+    if (times[lane] < result.time || (result.index >= 0 && times[lane] == result.time && candidate < result.index)) {
+      result.time = times[lane];
+      result.index = candidate;
+    }
+  }
+  return result;
+}
+
+#else
+
+bool pair_kernel_available() { return false; }
+
+EarliestContact earliest_contact(const Particle<3>*, const std::int32_t*, int, const CandidateShifts&, const Vec<3>&,
+                                 const Vec<3>&, double, double, double) {
+  throw std::logic_error("earliest_contact: the AVX2 pair kernel is not built for this CPU");
+}
+
+#endif
+
+}  // namespace coldblast::md
