@@ -54,20 +54,62 @@ void CellList<D>::set_up(std::size_t particle_count) {
     total *= static_cast<std::size_t>(count_[k]);
   }
   head_.assign(total, -1);
-  next_.assign(particle_count, -1);
+  next_.assign(particle_count + 1, -1);
   if (periodic_) {
-    boundary_.assign(total, 0);
+    face_.assign(total, 0);
     for (std::size_t cell = 0; cell < total; ++cell) {
       const auto c = coordinates(static_cast<std::int32_t>(cell));
-      for (int k = 0; k < D; ++k)
-        if (c[k] == 0 || c[k] == count_[k] - 1) boundary_[cell] = 1;
+      int face_class = 0, power = 1;
+      for (int k = 0; k < D; ++k, power *= 3) face_class += power * (c[k] == 0 ? 0 : c[k] == count_[k] - 1 ? 2 : 1);
+      face_[cell] = static_cast<std::uint8_t>(face_class);
     }
+    set_up_wrapped();
   }
   // The 3^D neighbours, and per axis and direction the 3^(D-1) cells that become adjacent after a
   // move: the cube's face at offset ±1, in the same odometer order.
   neighbour_delta_ = stencil_deltas(1, -1, 0);
   for (int axis = 0; axis < D; ++axis)
     for (int side = 0; side < 2; ++side) slab_delta_[axis][side] = stencil_deltas(1, axis, side == 0 ? -1 : 1);
+}
+
+template <int D>
+void CellList<D>::set_up_wrapped() {
+  // For a cell of face class f and a neighbour offset o (each -1, 0, 1; axis 0 fastest, as the
+  // stencils above), the neighbour wraps along axis k when the cell is on the low face and
+  // o_k = -1 (index + (count - 1) stride, image shift -box) or on the high face and o_k = +1
+  // (index - (count - 1) stride, shift +box). Needs at least 3 cells per axis (periodic()).
+  const auto add = [&](int face_class, int axis, int direction, std::vector<std::int32_t>& deltas,
+                       std::vector<Vec<D>>& shifts) {
+    std::array<int, D> side, lo, hi, o;
+    for (int k = 0, rest = face_class; k < D; ++k, rest /= 3) {
+      side[k] = rest % 3;
+      lo[k] = k == axis ? direction : -1;
+      hi[k] = k == axis ? direction : 1;
+      o[k] = lo[k];
+    }
+    do {
+      std::int32_t delta = 0;
+      Vec<D> shift = Vec<D>::Zero();
+      for (int k = 0; k < D; ++k) {
+        if (side[k] == 0 && o[k] == -1) {
+          delta += (count_[k] - 1) * stride_[k];
+          shift[k] = -box_[k];
+        } else if (side[k] == 2 && o[k] == 1) {
+          delta -= (count_[k] - 1) * stride_[k];
+          shift[k] = box_[k];
+        } else {
+          delta += o[k] * stride_[k];
+        }
+      }
+      deltas.push_back(delta);
+      shifts.push_back(shift);
+    } while (next_multi_index(o, lo, hi));
+  };
+  for (int face_class = 0; face_class < neighbours; ++face_class) {
+    add(face_class, -1, 0, wrapped_delta_, wrapped_shift_);
+    for (int axis = 0; axis < D; ++axis)
+      for (int side = 0; side < 2; ++side) add(face_class, axis, side == 0 ? -1 : 1, slab_wrapped_delta_, slab_wrapped_shift_);
+  }
 }
 
 template <int D>
@@ -102,9 +144,9 @@ void CellList<D>::remove_further(std::int32_t id, std::int32_t cell) {
   std::int32_t* link = &head_[cell];
   while (*link != id) {
     if (*link < 0) throw std::logic_error("cell list: particle " + std::to_string(id) + " not in its cell");
-    link = &next_[*link];
+    link = &next_[*link + 1];
   }
-  *link = next_[id];
+  *link = next_[id + 1];
 }
 
 template class CellList<2>;

@@ -54,18 +54,21 @@ class CellList {
   std::int32_t stride(int k) const { return stride_[k]; }
 
   void insert(std::int32_t id, std::int32_t cell) {
-    next_[id] = head_[cell];
+    next_[id + 1] = head_[cell];
     head_[cell] = id;
   }
   void remove(std::int32_t id, std::int32_t cell) {
-    if (head_[cell] == id) head_[cell] = next_[id];  // the usual case: a cell holds a particle or two
+    if (head_[cell] == id) head_[cell] = next_[id + 1];  // the usual case: a cell holds a particle or two
     else remove_further(id, cell);
   }
+  /// First particle of a cell, -1 if empty.
   std::int32_t first(std::int32_t cell) const { return head_[cell]; }
-  std::int32_t next(std::int32_t id) const { return next_[id]; }
+  /// Next particle in the same cell, -1 at the end; next(-1) = -1, so that a walk can step past
+  /// the end without a branch.
+  std::int32_t next(std::int32_t id) const { return next_[id + 1]; }
 
   /// True if a neighbour of `cell` lies across a periodic face (needs an image shift).
-  bool wraps(std::int32_t cell) const { return periodic_ && boundary_[cell]; }
+  bool wraps(std::int32_t cell) const { return periodic_ && face_[cell] != interior_class; }
   /// Index offsets of the 3^D cells around a cell that does not wrap (itself included), in the
   /// order for_each_neighbour_cell visits them.
   const std::vector<std::int32_t>& neighbour_deltas() const { return neighbour_delta_; }
@@ -78,10 +81,23 @@ class CellList {
   /// or, with axis >= 0, of the (2 reach + 1)^(D-1) of them at offset `offset` along `axis`.
   std::vector<std::int32_t> stencil_deltas(int reach, int axis = -1, int offset = 0) const;
 
-  /// Writes the cells around a cell that wraps (as for_each_neighbour_cell, same order) to `cells`
-  /// and their image shifts to `shifts` (room for 3^D each); returns their number. With axis >= 0,
-  /// only the slab newly adjacent after a move along `axis` in `direction` (3^(D-1) cells).
-  int wrapped_cells(std::int32_t cell, std::int32_t* cells, Vec<D>* shifts, int axis = -1, int direction = 0) const;
+  /// The cells around a cell that wraps, as index offsets from it and periodic image shifts, in
+  /// for_each_neighbour_cell's order: 3^D of them, or with axis >= 0 the 3^(D-1) newly adjacent
+  /// after a move along `axis` in `direction`. A cell's "face class" (low face, inside, high face
+  /// per axis) fixes both, so they are tabulated once per class.
+  struct WrappedStencil {
+    const std::int32_t* delta;
+    const Vec<D>* shift;
+    int count;
+  };
+  WrappedStencil wrapped_neighbours(std::int32_t cell) const {
+    const std::size_t base = static_cast<std::size_t>(face_[cell]) * neighbours;
+    return {wrapped_delta_.data() + base, wrapped_shift_.data() + base, neighbours};
+  }
+  WrappedStencil wrapped_slab(std::int32_t cell, int axis, int direction) const {
+    const std::size_t base = ((static_cast<std::size_t>(face_[cell]) * D + axis) * 2 + (direction > 0 ? 1 : 0)) * slab;
+    return {slab_wrapped_delta_.data() + base, slab_wrapped_shift_.data() + base, slab};
+  }
 
   /// Calls f(cell, shift) for the 3^D cells around `cell` (itself included); `shift` is the
   /// periodic image offset to add to a neighbour's position (zero in an open grid).
@@ -92,22 +108,13 @@ class CellList {
   template <class F>
   void for_each_new_neighbour_cell(std::int32_t cell, int axis, int direction, F&& f) const;
 
-  std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + boundary_.capacity(); }
+  std::size_t bytes() const { return head_.capacity() * 4 + next_.capacity() * 4 + face_.capacity(); }
 
  private:
-  // Calls f(cell, image shift) for the neighbour at offset o (each -1, 0 or 1) of the cell at
-  // coordinates c, wrapped into the periodic box.
-  template <class F>
-  void visit_wrapped(const std::array<std::int32_t, D>& c, const std::array<std::int32_t, D>& o, F& f) const {
-    std::array<std::int32_t, D> n;
-    Vec<D> shift = Vec<D>::Zero();
-    for (int k = 0; k < D; ++k) {
-      n[k] = c[k] + o[k];
-      if (n[k] < 0) { n[k] += count_[k]; shift[k] = -box_[k]; }
-      else if (n[k] >= count_[k]) { n[k] -= count_[k]; shift[k] = box_[k]; }
-    }
-    f(index(n), shift);
-  }
+  static constexpr int neighbours = D == 2 ? 9 : 27, slab = D == 2 ? 3 : 9;
+  static constexpr std::uint8_t interior_class = (neighbours - 1) / 2;  // 1 + 3 (+ 9): inside on every axis
+  // Tabulates the wrapped stencils of every face class.
+  void set_up_wrapped();
   CellList() = default;
   void remove_further(std::int32_t id, std::int32_t cell);
   void set_up(std::size_t particle_count);
@@ -115,72 +122,39 @@ class CellList {
   Vec<D> lower_ = Vec<D>::Zero(), box_ = Vec<D>::Zero(), width_ = Vec<D>::Zero();
   std::array<std::int32_t, D> count_{}, stride_{};
   std::array<double, D> inverse_stride_{};
-  std::vector<std::int32_t> head_, next_;
-  std::vector<std::uint8_t> boundary_;  // periodic: cell on a face of the box (its neighbours wrap)
+  std::vector<std::int32_t> head_;
+  std::vector<std::int32_t> next_;  // next_[id + 1]: the particle after id in its cell; next_[0] = -1
+  // Periodic: per cell its face class, sum over axes of 3^k (0 on the low face, 1 inside, 2 on the
+  // high face); interior_class means no neighbour wraps. Open grids keep it empty.
+  std::vector<std::uint8_t> face_;
+  std::vector<std::int32_t> wrapped_delta_, slab_wrapped_delta_;  // per class (and axis, direction)
+  std::vector<Vec<D>> wrapped_shift_, slab_wrapped_shift_;
   std::vector<std::int32_t> neighbour_delta_;                       // 3^D index offsets (no wrap)
   std::array<std::array<std::vector<std::int32_t>, 2>, D> slab_delta_;  // per axis, direction (no wrap)
 };
 
 template <int D>
-int CellList<D>::wrapped_cells(std::int32_t cell, std::int32_t* cells, Vec<D>* shifts, int axis, int direction) const {
-  const auto c = coordinates(cell);
-  std::array<std::array<std::int32_t, 3>, D> part;
-  std::array<std::array<double, 3>, D> image;
-  std::array<int, D> lo, hi, o;
-  for (int k = 0; k < D; ++k) {
-    lo[k] = k == axis ? direction : -1;
-    hi[k] = k == axis ? direction : 1;
-    for (int step = lo[k]; step <= hi[k]; ++step) {
-      std::int32_t n = c[k] + step;
-      double shift = 0.0;
-      if (n < 0) { n += count_[k]; shift = -box_[k]; }
-      else if (n >= count_[k]) { n -= count_[k]; shift = box_[k]; }
-      part[k][step + 1] = n * stride_[k];
-      image[k][step + 1] = shift;
-    }
-    o[k] = lo[k];
-  }
-  int m = 0;
-  do {  // k = 0 runs fastest, as in for_each_neighbour_cell
-    std::int32_t index = 0;
-    for (int k = 0; k < D; ++k) {
-      index += part[k][o[k] + 1];
-      shifts[m][k] = image[k][o[k] + 1];
-    }
-    cells[m++] = index;
-  } while (next_multi_index(o, lo, hi));
-  return m;
-}
-
-template <int D>
 template <class F>
 void CellList<D>::for_each_neighbour_cell(std::int32_t cell, F&& f) const {
-  if (!periodic_ || !boundary_[cell]) {  // open grid, or a periodic cell away from the faces
+  if (!wraps(cell)) {  // open grid, or a periodic cell away from the faces
     const Vec<D> zero = Vec<D>::Zero();
     for (const std::int32_t delta : neighbour_delta_) f(cell + delta, zero);
     return;
   }
-  const auto c = coordinates(cell);
-  const auto lo = uniform_index<std::int32_t, D>(-1), hi = uniform_index<std::int32_t, D>(1);
-  std::array<std::int32_t, D> o = lo;
-  do visit_wrapped(c, o, f);
-  while (next_multi_index(o, lo, hi));
+  const WrappedStencil s = wrapped_neighbours(cell);
+  for (int m = 0; m < s.count; ++m) f(cell + s.delta[m], s.shift[m]);
 }
 
 template <int D>
 template <class F>
 void CellList<D>::for_each_new_neighbour_cell(std::int32_t cell, int axis, int direction, F&& f) const {
-  if (!periodic_ || !boundary_[cell]) {
+  if (!wraps(cell)) {
     const Vec<D> zero = Vec<D>::Zero();
     for (const std::int32_t delta : slab_delta_[axis][direction > 0 ? 1 : 0]) f(cell + delta, zero);
     return;
   }
-  const auto c = coordinates(cell);
-  auto lo = uniform_index<std::int32_t, D>(-1), hi = uniform_index<std::int32_t, D>(1);
-  lo[axis] = hi[axis] = direction;
-  std::array<std::int32_t, D> o = lo;
-  do visit_wrapped(c, o, f);
-  while (next_multi_index(o, lo, hi));
+  const WrappedStencil s = wrapped_slab(cell, axis, direction);
+  for (int m = 0; m < s.count; ++m) f(cell + s.delta[m], s.shift[m]);
 }
 
 }  // namespace coldblast::md

@@ -108,7 +108,8 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       sigma2_[s][r] = sigma_[s][r] * sigma_[s][r];
     }
   same_radius_ = radius_[0] == radius_[1];
-  use_kernel_ = D == 3 && config.simd && same_radius_ && pair_kernel_available();
+  simd_crossing_ = D == 3 && config.simd && pair_kernel_available();
+  use_kernel_ = simd_crossing_ && same_radius_;
   if (!config.periodic) {
     // Positions are checked at every event of a moving particle, and a particle has an event at
     // least once per cell it crosses, so checking |x| against guard_radius minus one cell diagonal
@@ -178,6 +179,16 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, std::uint8_t& code)
   // with SSE2 every select is a mask (g++ compiles the ternaries below into jumps); the
   // arithmetic is the same either way, so the two versions give the same times bit for bit.
   const auto c = cells_.coordinates(p.cell);
+  if constexpr (D == 3) {
+    if (simd_crossing_) {  // the same arithmetic, the three axes at once (md/pair_kernel.hpp)
+      double lower[3], width[3];
+      for (int k = 0; k < 3; ++k) {
+        lower[k] = cells_.lower()[k] + c[k] * cells_.width(k);
+        width[k] = cells_.width(k);
+      }
+      return p.time + earliest_crossing(p.position, p.velocity, lower, width, code);
+    }
+  }
   double best = never;
   code = 0;
   for (int k = 0; k < D; ++k) {
@@ -318,8 +329,8 @@ void Engine<D, Queue>::cover(std::int32_t cell, const std::vector<std::int32_t>&
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* cells, const Vec<D>* shifts,
-                                          int count) {
+void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas,
+                                          const Vec<D>* shifts, int count) {
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
@@ -329,29 +340,42 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, const std::int32_t* c
   if constexpr (D == 3) {
     if (use_kernel_) {
       // Gather the candidates and their image shifts, then test them four at a time.
-      alignas(32) std::int32_t ids[gather_capacity];
-      alignas(32) double sx[gather_capacity], sy[gather_capacity], sz[gather_capacity];
+      alignas(32) std::int32_t ids[gather_capacity + 4];
+      alignas(32) double sx[gather_capacity + 4], sy[gather_capacity + 4], sz[gather_capacity + 4];
       int n = 0;
-      for (int m = 0; m < count; ++m)
-        for (std::int32_t j = cells_.first(cells[m]); j >= 0; j = cells_.next(j)) {
-          if (j == id) continue;
-          __builtin_prefetch(&particles_[j]);
-          ids[n] = j;
-          sx[n] = shifts[m][0];
-          sy[n] = shifts[m][1];
-          sz[n] = shifts[m][2];
-          if (++n == gather_capacity) {
+      const auto take = [&](std::int32_t j, int m) {
+        ids[n] = j;
+        sx[n] = shifts[m][0];
+        sy[n] = shifts[m][1];
+        sz[n] = shifts[m][2];
+        __builtin_prefetch(&particles_[j & ~(j >> 31)]);  // j = -1 prefetches particle 0: harmless
+        n += j >= 0;
+      };
+      for (int m = 0; m < count; ++m) {
+        if (n > gather_capacity - 2) {
+          kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
+          n = 0;
+        }
+        // The first two particles of a cell without a branch (most cells hold fewer); see scan_cells.
+        std::int32_t j = cells_.first(base + deltas[m]);
+        take(j, m);
+        j = cells_.next(j);
+        take(j, m);
+        for (j = cells_.next(j); j >= 0; j = cells_.next(j)) {
+          take(j, m);
+          if (n == gather_capacity) {
             kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
             n = 0;
           }
         }
+      }
       kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
       predictions_[id] = best;
       return;
     }
   }
   for (int m = 0; m < count; ++m)
-    scan_list<true>(id, cells[m], shifts[m], position, velocity, time, sigma2_row, same_radius, best);
+    scan_list<true>(id, base + deltas[m], shifts[m], position, velocity, time, sigma2_row, same_radius, best);
   predictions_[id] = best;
 }
 
@@ -369,18 +393,36 @@ template <int D, class Queue>
   const Vec<D> no_shift = Vec<D>::Zero();
   if constexpr (D == 3) {
     if (use_kernel_) {
-      alignas(32) std::int32_t ids[gather_capacity];
+      // The walk over the cell lists is a chain of short lists (about 0.6 particles per cell at
+      // phi = 0.3), and a loop's exit at each list end is a coin flip for the branch predictor.
+      // So the first two places of each list are taken without a branch (a missing particle, -1,
+      // is written but not counted; next(-1) = -1), and only a third particle enters the loop.
+      // The particle itself is gathered too: its separation from itself is exactly zero, never a
+      // hit. Each candidate's line is prefetched as it is found, so the kernel's loads overlap.
+      alignas(32) std::int32_t ids[gather_capacity + 4];
       int n = 0;
-      for (; first != last; ++first)
-        for (std::int32_t j = cells_.first(base + *first); j >= 0; j = cells_.next(j)) {
-          if (j == id) continue;
-          __builtin_prefetch(&particles_[j]);  // the kernel's loads, started while the lists are walked
-          ids[n] = j;
-          if (++n == gather_capacity) {
+      const auto take = [&](std::int32_t j) {
+        ids[n] = j;
+        __builtin_prefetch(&particles_[j & ~(j >> 31)]);  // j = -1 prefetches particle 0: harmless
+        n += j >= 0;
+      };
+      for (; first != last; ++first) {
+        if (n > gather_capacity - 2) {
+          kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
+          n = 0;
+        }
+        std::int32_t j = cells_.first(base + *first);
+        take(j);
+        j = cells_.next(j);
+        take(j);
+        for (j = cells_.next(j); j >= 0; j = cells_.next(j)) {
+          take(j);
+          if (n == gather_capacity) {
             kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
             n = 0;
           }
         }
+      }
       kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
       predictions_[id] = best;
       return;
@@ -408,9 +450,8 @@ void Engine<D, Queue>::full_scan(std::int32_t id) {
     if (big_reach_ != 0 && covered_[cell] != 0) scan_bigs(id);
     return;
   }
-  std::int32_t cells[27];
-  Vec<D> shifts[27];
-  scan_wrapped_cells(id, cells, shifts, cells_.wrapped_cells(cell, cells, shifts));
+  const auto stencil = cells_.wrapped_neighbours(cell);
+  scan_wrapped_cells(id, cell, stencil.delta, stencil.shift, stencil.count);
 }
 
 template <int D, class Queue>
@@ -522,9 +563,8 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
     scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size());
     if (big_reach_ != 0 && covered_[p.cell] != 0) [[unlikely]] scan_bigs(id);
   } else {
-    std::int32_t cells[9];
-    Vec<D> shifts[9];
-    scan_wrapped_cells(id, cells, shifts, cells_.wrapped_cells(p.cell, cells, shifts, axis, direction));
+    const auto stencil = cells_.wrapped_slab(p.cell, axis, direction);
+    scan_wrapped_cells(id, p.cell, stencil.delta, stencil.shift, stencil.count);
   }
   schedule(id);
 }

@@ -32,8 +32,9 @@ struct EngineConfig {
   /// Open geometry: keep cells as wide as the largest contact distance even for large impurities
   /// (the plain scheme; same trajectories bit for bit, much slower for radius ratios >> 1).
   bool wide_cells_for_big = false;
-  /// 3D with equal radii: test candidates four at a time with the AVX2 pair kernel where the CPU
-  /// has AVX2 (md/pair_kernel.hpp). Trajectories are bitwise the same either way (tested).
+  /// 3D: where the CPU has AVX2, the cell-crossing time takes the three axes at once and, with
+  /// equal radii, candidates are tested four at a time (md/pair_kernel.hpp). Trajectories are
+  /// bitwise the same either way (tested).
   bool simd = true;
   bool overlap_check = false;      ///< verify after every event that the touched particles overlap nobody
   bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
@@ -106,8 +107,9 @@ class Engine {
   void cross(std::int32_t id, double t);
   // Scans the unwrapped cells base + delta for delta in [first, last) (no periodic image shift).
   void scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first, const std::int32_t* last);
-  // Scans `count` cells, each with its periodic image shift.
-  void scan_wrapped_cells(std::int32_t id, const std::int32_t* cells, const Vec<D>* shifts, int count);
+  // Scans the cells base + deltas[m], m < count, each with its periodic image shift.
+  void scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts,
+                          int count);
   // The pair test both scans share: particle (position, velocity at `time`, sigma row) against
   // every particle of `cell`, displaced by `shift` when Shifted, keeping the earliest contact.
   template <bool Shifted>
@@ -148,7 +150,8 @@ class Engine {
   std::vector<std::int32_t> moving_;
   double radius_[2], mass_[2], sigma_[2][2], sigma2_[2][2];  // sigma2_ = sigma_²
   bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
-  bool use_kernel_ = false;  // the SIMD pair kernel (config.simd, D = 3, equal radii, CPU with AVX2)
+  bool use_kernel_ = false;     // the SIMD pair kernel (config.simd, D = 3, equal radii, CPU with AVX2)
+  bool simd_crossing_ = false;  // the SIMD crossing time (config.simd, D = 3, CPU with AVX2)
   double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run
   CellList<D> cells_;
   int big_reach_ = 0;                      // k: cells per axis a big particle's stencil reaches; 0 = none

@@ -112,9 +112,35 @@ __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<
   return result;
 }
 
+__attribute__((target("avx2"))) double earliest_crossing(const Vec<3>& position, const Vec<3>& velocity,
+                                                         const double* lower, const double* width, std::uint8_t& code) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d never4 = _mm256_set1_pd(inf);
+  const __m256d x = _mm256_setr_pd(position[0], position[1], position[2], 0.0);
+  const __m256d v = _mm256_setr_pd(velocity[0], velocity[1], velocity[2], 0.0);  // lane 3: v = 0, never
+  const __m256d lo = _mm256_setr_pd(lower[0], lower[1], lower[2], 0.0);
+  const __m256d w = _mm256_setr_pd(width[0], width[1], width[2], 0.0);
+  const __m256d up = _mm256_cmp_pd(v, zero, _CMP_GT_OQ);
+  const __m256d wall = _mm256_blendv_pd(lo, _mm256_add_pd(lo, w), up);
+  const __m256d raw = _mm256_max_pd(_mm256_div_pd(_mm256_sub_pd(wall, x), v), zero);
+  const __m256d dt = _mm256_blendv_pd(raw, never4, _mm256_cmp_pd(v, zero, _CMP_EQ_OQ));
+  // the minimum over the lanes, then the lowest lane holding it
+  __m256d m = _mm256_min_pd(dt, _mm256_permute_pd(dt, 0x5));
+  m = _mm256_min_pd(m, _mm256_permute2f128_pd(m, m, 0x01));
+  const int axis = __builtin_ctz(static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(dt, m, _CMP_EQ_OQ))));
+  const int positive = (_mm256_movemask_pd(up) >> axis) & 1;
+  code = static_cast<std::uint8_t>(2 * axis + positive);
+  return _mm256_cvtsd_f64(m);
+}
+
 #else
 
 bool pair_kernel_available() { return false; }
+
+double earliest_crossing(const Vec<3>&, const Vec<3>&, const double*, const double*, std::uint8_t&) {
+  throw std::logic_error("earliest_crossing: the AVX2 kernel is not built for this CPU");
+}
 
 EarliestContact earliest_contact(const Particle<3>*, const std::int32_t*, int, const CandidateShifts&, const Vec<3>&,
                                  const Vec<3>&, double, double, double) {

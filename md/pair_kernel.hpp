@@ -36,4 +36,12 @@ EarliestContact earliest_contact(const Particle<3>* particles, const std::int32_
                                  const CandidateShifts& shifts, const Vec<3>& position, const Vec<3>& velocity,
                                  double time, double sigma2, double before);
 
+/// Time from a particle's stored position until it leaves its cell, and which face it leaves by
+/// (code 2 axis + (v_axis > 0)): the cell spans [lower_k, lower_k + width_k) per axis, the
+/// particle is at `position` with `velocity`. An axis with v = 0 never crosses (`never` when the
+/// particle rests, with code 0); the first axis among equal times wins. Bitwise the engine's
+/// scalar crossing time (engine.cpp). Requires pair_kernel_available().
+double earliest_crossing(const Vec<3>& position, const Vec<3>& velocity, const double* lower, const double* width,
+                         std::uint8_t& code);
+
 }  // namespace coldblast::md
