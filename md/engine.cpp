@@ -330,7 +330,7 @@ void Engine<D, Queue>::cover(std::int32_t cell, const std::vector<std::int32_t>&
 
 template <int D, class Queue>
 void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas,
-                                          const Vec<D>* shifts, int count) {
+                                          const Vec<D>* shifts, int count, bool gather) {
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
@@ -338,7 +338,7 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, co
   const double* sigma2_row = sigma2_[species_[id]];
   const bool same_radius = same_radius_;  // a local: stays in a register across the stores to best
   if constexpr (D == 3) {
-    if (use_kernel_) {
+    if (gather) {
       // Gather the candidates and their image shifts, then test them four at a time.
       alignas(32) std::int32_t ids[gather_capacity + 4];
       alignas(32) double sx[gather_capacity + 4], sy[gather_capacity + 4], sz[gather_capacity + 4];
@@ -381,7 +381,7 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, co
 
 template <int D, class Queue>
 [[gnu::always_inline]] inline void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first,
-                                  const std::int32_t* last) {
+                                  const std::int32_t* last, bool gather) {
   // Same arithmetic and visiting order as scan_wrapped_cells with zero shifts, with the particle's
   // data and its best prediction kept in registers across the cells.
   const Particle<D>& p = particles_[id];
@@ -392,7 +392,7 @@ template <int D, class Queue>
   const bool same_radius = same_radius_;
   const Vec<D> no_shift = Vec<D>::Zero();
   if constexpr (D == 3) {
-    if (use_kernel_) {
+    if (gather) {
       // The walk over the cell lists is a chain of short lists (about 0.6 particles per cell at
       // phi = 0.3), and a loop's exit at each list end is a coin flip for the branch predictor.
       // So the first two places of each list are taken without a branch (a missing particle, -1,
@@ -441,17 +441,17 @@ void Engine<D, Queue>::full_scan(std::int32_t id) {
   const std::int32_t cell = particles_[id].cell;
   if (!cells_.wraps(cell)) {
     if (is_big(id)) [[unlikely]] {
-      scan_cells(id, cell, big_stencil_.data(), big_stencil_.data() + big_stencil_.size());
+      scan_cells(id, cell, big_stencil_.data(), big_stencil_.data() + big_stencil_.size(), use_kernel_);
       scan_bigs(id);
       return;
     }
     const auto& deltas = cells_.neighbour_deltas();
-    scan_cells(id, cell, deltas.data(), deltas.data() + deltas.size());
+    scan_cells(id, cell, deltas.data(), deltas.data() + deltas.size(), use_kernel_);
     if (big_reach_ != 0 && covered_[cell] != 0) scan_bigs(id);
     return;
   }
   const auto stencil = cells_.wrapped_neighbours(cell);
-  scan_wrapped_cells(id, cell, stencil.delta, stencil.shift, stencil.count);
+  scan_wrapped_cells(id, cell, stencil.delta, stencil.shift, stencil.count, use_kernel_);
 }
 
 template <int D, class Queue>
@@ -560,11 +560,13 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
     full_scan(id);
   } else if (!cells_.wraps(p.cell)) {
     const auto& deltas = cells_.slab_deltas(axis, direction);
-    scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size());
+    // A slab (3^(D-1) cells) holds too few candidates for the gathered kernel to pay: 8 % slower
+    // at phi = 0.1, no faster at 0.3 (docs/benchmarks.md, "Fourth pass").
+    scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size(), false);
     if (big_reach_ != 0 && covered_[p.cell] != 0) [[unlikely]] scan_bigs(id);
   } else {
     const auto stencil = cells_.wrapped_slab(p.cell, axis, direction);
-    scan_wrapped_cells(id, p.cell, stencil.delta, stencil.shift, stencil.count);
+    scan_wrapped_cells(id, p.cell, stencil.delta, stencil.shift, stencil.count, false);
   }
   schedule(id);
 }
@@ -578,7 +580,7 @@ template <int D, class Queue>
   cover(cell, incoming, 1);
   cover(cell - direction * cells_.stride(axis), big_slab_[axis][direction > 0 ? 0 : 1], -1);
   if (stale) full_scan(id);
-  else scan_cells(id, cell, incoming.data(), incoming.data() + incoming.size());
+  else scan_cells(id, cell, incoming.data(), incoming.data() + incoming.size(), use_kernel_);
 }
 
 template <int D, class Queue>

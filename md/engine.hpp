@@ -105,11 +105,12 @@ class Engine {
   }
   void collide(std::int32_t i, std::int32_t j, double t);
   void cross(std::int32_t id, double t);
-  // Scans the unwrapped cells base + delta for delta in [first, last) (no periodic image shift).
-  void scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first, const std::int32_t* last);
+  // Scans the unwrapped cells base + delta for delta in [first, last) (no periodic image shift);
+  // `gather`: through the SIMD kernel (requires use_kernel_).
+  void scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first, const std::int32_t* last, bool gather);
   // Scans the cells base + deltas[m], m < count, each with its periodic image shift.
   void scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts,
-                          int count);
+                          int count, bool gather);
   // The pair test both scans share: particle (position, velocity at `time`, sigma row) against
   // every particle of `cell`, displaced by `shift` when Shifted, keeping the earliest contact.
   template <bool Shifted>
