@@ -66,6 +66,9 @@ class CellList {
   /// Next particle in the same cell, -1 at the end; next(-1) = -1, so that a walk can step past
   /// the end without a branch.
   std::int32_t next(std::int32_t id) const { return next_[id + 1]; }
+  /// Raw arrays for hot loops: heads()[cell] = first(cell), links()[id] = next(id) (id >= -1).
+  const std::int32_t* heads() const { return head_.data(); }
+  const std::int32_t* links() const { return next_.data() + 1; }
 
   /// True if a neighbour of `cell` lies across a periodic face (needs an image shift).
   bool wraps(std::int32_t cell) const { return periodic_ && face_[cell] != interior_class; }

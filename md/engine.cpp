@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 
@@ -343,13 +344,16 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, co
       alignas(32) std::int32_t ids[gather_capacity + 4];
       alignas(32) double sx[gather_capacity + 4], sy[gather_capacity + 4], sz[gather_capacity + 4];
       int n = 0;
+      const std::int32_t* heads = cells_.heads();
+      const std::int32_t* links = cells_.links();
+      const std::uintptr_t lines = reinterpret_cast<std::uintptr_t>(particles_.data());  // as in scan_cells
       const auto take = [&](std::int32_t j, int m) {
         ids[n] = j;
         sx[n] = shifts[m][0];
         sy[n] = shifts[m][1];
         sz[n] = shifts[m][2];
-        __builtin_prefetch(&particles_[j & ~(j >> 31)]);  // j = -1 prefetches particle 0: harmless
-        n += j >= 0;
+        __builtin_prefetch(reinterpret_cast<const void*>(lines + static_cast<std::intptr_t>(j) * sizeof(Particle<D>)));
+        n += 1 + (j >> 31);
       };
       for (int m = 0; m < count; ++m) {
         if (n > gather_capacity - 2) {
@@ -357,11 +361,11 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, co
           n = 0;
         }
         // The first two particles of a cell without a branch (most cells hold fewer); see scan_cells.
-        std::int32_t j = cells_.first(base + deltas[m]);
+        std::int32_t j = heads[base + deltas[m]];
         take(j, m);
-        j = cells_.next(j);
+        j = links[j];
         take(j, m);
-        for (j = cells_.next(j); j >= 0; j = cells_.next(j)) {
+        for (j = links[j]; j >= 0; j = links[j]) {
           take(j, m);
           if (n == gather_capacity) {
             kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
@@ -401,21 +405,26 @@ template <int D, class Queue>
       // hit. Each candidate's line is prefetched as it is found, so the kernel's loads overlap.
       alignas(32) std::int32_t ids[gather_capacity + 4];
       int n = 0;
+      const std::int32_t* heads = cells_.heads();
+      const std::int32_t* links = cells_.links();
+      // Addresses as integers: a missing particle (-1) prefetches the line before the array, which
+      // a prefetch may do (it never faults), without out-of-range pointer arithmetic.
+      const std::uintptr_t lines = reinterpret_cast<std::uintptr_t>(particles_.data());
       const auto take = [&](std::int32_t j) {
         ids[n] = j;
-        __builtin_prefetch(&particles_[j & ~(j >> 31)]);  // j = -1 prefetches particle 0: harmless
-        n += j >= 0;
+        __builtin_prefetch(reinterpret_cast<const void*>(lines + static_cast<std::intptr_t>(j) * sizeof(Particle<D>)));
+        n += 1 + (j >> 31);  // +1 for a particle, +0 for -1
       };
       for (; first != last; ++first) {
         if (n > gather_capacity - 2) {
           kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
           n = 0;
         }
-        std::int32_t j = cells_.first(base + *first);
+        std::int32_t j = heads[base + *first];
         take(j);
-        j = cells_.next(j);
+        j = links[j];
         take(j);
-        for (j = cells_.next(j); j >= 0; j = cells_.next(j)) {
+        for (j = links[j]; j >= 0; j = links[j]) {
           take(j);
           if (n == gather_capacity) {
             kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
