@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "md/huge_pages.hpp"
 #include "md/multi_index.hpp"
 #include "md/particles.hpp"
 
@@ -125,8 +126,8 @@ class CellList {
   Vec<D> lower_ = Vec<D>::Zero(), box_ = Vec<D>::Zero(), width_ = Vec<D>::Zero();
   std::array<std::int32_t, D> count_{}, stride_{};
   std::array<double, D> inverse_stride_{};
-  std::vector<std::int32_t> head_;
-  std::vector<std::int32_t> next_;  // next_[id + 1]: the particle after id in its cell; next_[0] = -1
+  HugeVector<std::int32_t> head_;
+  HugeVector<std::int32_t> next_;  // next_[id + 1]: the particle after id in its cell; next_[0] = -1
   // Periodic: per cell its face class, sum over axes of 3^k (0 on the low face, 1 inside, 2 on the
   // high face); interior_class means no neighbour wraps. Open grids keep it empty.
   std::vector<std::uint8_t> face_;

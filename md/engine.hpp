@@ -11,6 +11,7 @@
 #include "md/cell_list.hpp"
 #include "md/collision.hpp"
 #include "md/event_queue.hpp"
+#include "md/huge_pages.hpp"
 #include "md/pair_kernel.hpp"
 #include "md/particles.hpp"
 
@@ -144,8 +145,8 @@ class Engine {
   Vec<D> separation(std::int32_t i, std::int32_t j) const;  // r_j - r_i at now_, minimum image
 
   EngineConfig<D> config_;
-  std::vector<Particle<D>> particles_;
-  std::vector<Prediction> predictions_;
+  HugeVector<Particle<D>> particles_;
+  HugeVector<Prediction> predictions_;
   std::vector<std::uint8_t> species_, moving_flag_;
   std::vector<std::uint8_t> crossing_;  // scheduled cell crossing: 2 axis + (direction > 0)
   std::vector<std::int32_t> moving_;

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "md/huge_pages.hpp"
+
 namespace coldblast::md {
 
 /// Indexed binary min-heap of (time, id); ids in [0, capacity).
@@ -47,8 +49,8 @@ class HeapEventQueue {
     heap_[k] = e;
     position_[e.id] = static_cast<std::int32_t>(k);
   }
-  std::vector<Entry> heap_;
-  std::vector<std::int32_t> position_;  // index in heap_, -1 when absent
+  HugeVector<Entry> heap_;
+  HugeVector<std::int32_t> position_;  // index in heap_, -1 when absent
 };
 
 /// Bucketed event calendar: bucket k holds events with floor(time/width) = k. The bucket being
@@ -137,10 +139,10 @@ class CalendarEventQueue {
   std::array<Entry, sorted_limit> sorted_;
   std::size_t sorted_size_ = 0;
   HeapEventQueue heap_;
-  std::vector<std::int32_t> head_;     // bucket lists, circular over bucket_count
-  std::vector<std::int32_t> next_, prev_;  // doubly linked lists (buckets and overflow)
-  std::vector<std::int32_t> where_;    // bucket slot, in_heap, in_overflow or absent
-  std::vector<double> time_;           // event time per id
+  HugeVector<std::int32_t> head_;     // bucket lists, circular over bucket_count
+  HugeVector<std::int32_t> next_, prev_;  // doubly linked lists (buckets and overflow)
+  HugeVector<std::int32_t> where_;    // bucket slot, in_heap, in_overflow or absent
+  HugeVector<double> time_;           // event time per id
   std::int32_t overflow_ = -1;         // overflow list head
   std::int64_t mask_ = 0;              // bucket_count - 1 (a power of two)
   // Before the width is known both are at their minimum, so every event goes to the overflow list.
