@@ -330,6 +330,63 @@ void Engine<D, Queue>::cover(std::int32_t cell, const std::vector<std::int32_t>&
 }
 
 template <int D, class Queue>
+template <bool Shifted>
+[[gnu::always_inline]] inline void Engine<D, Queue>::gather_scan(std::int32_t id, std::int32_t base,
+                                                                 const std::int32_t* deltas, const Vec<D>* shifts,
+                                                                 int count, const Vec<D>& position,
+                                                                 const Vec<D>& velocity, double time, double sigma2,
+                                                                 Prediction& best) const {
+  // The walk over the cell lists is a chain of short lists (about 0.6 particles per cell at
+  // phi = 0.3), and a loop's exit at each list end is a coin flip for the branch predictor.
+  // So the first two places of each list are taken without a branch (a missing particle, -1,
+  // is written but not counted; next(-1) = -1), and only a third particle enters the loop.
+  // The particle itself is gathered too: its separation from itself is exactly zero, never a
+  // hit. Each candidate's line is prefetched as it is found, so the kernel's loads overlap.
+  // The head and link arrays are held in locals: g++ reloaded the vectors' data pointers for
+  // every cell otherwise.
+  alignas(32) std::int32_t ids[gather_capacity + 4];
+  alignas(32) double sx[Shifted ? gather_capacity + 4 : 1], sy[Shifted ? gather_capacity + 4 : 1],
+      sz[Shifted ? gather_capacity + 4 : 1];
+  double* const shift_x = Shifted ? sx : nullptr;
+  double* const shift_y = Shifted ? sy : nullptr;
+  double* const shift_z = Shifted ? sz : nullptr;
+  int n = 0;
+  const std::int32_t* heads = cells_.heads();
+  const std::int32_t* links = cells_.links();
+  // Addresses as integers: a missing particle (-1) prefetches the line before the array, which
+  // a prefetch may do (it never faults), without out-of-range pointer arithmetic.
+  const std::uintptr_t lines = reinterpret_cast<std::uintptr_t>(particles_.data());
+  const auto take = [&](std::int32_t j, int m) {
+    ids[n] = j;
+    if constexpr (Shifted) {
+      sx[n] = shifts[m][0];
+      sy[n] = shifts[m][1];
+      sz[n] = shifts[m][2];
+    } else {
+      (void)m;
+    }
+    __builtin_prefetch(reinterpret_cast<const void*>(lines + static_cast<std::intptr_t>(j) * sizeof(Particle<D>)));
+    n += 1 + (j >> 31);  // +1 for a particle, +0 for -1
+  };
+  const auto flush = [&] {
+    kernel_scan(id, ids, n, shift_x, shift_y, shift_z, position, velocity, time, sigma2, best);
+    n = 0;
+  };
+  for (int m = 0; m < count; ++m) {
+    if (n > gather_capacity - 2) flush();
+    std::int32_t j = heads[base + deltas[m]];
+    take(j, m);
+    j = links[j];
+    take(j, m);
+    for (j = links[j]; j >= 0; j = links[j]) {
+      take(j, m);
+      if (n == gather_capacity) flush();
+    }
+  }
+  flush();
+}
+
+template <int D, class Queue>
 void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas,
                                           const Vec<D>* shifts, int count, bool gather) {
   const Particle<D>& p = particles_[id];
@@ -340,40 +397,7 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, co
   const bool same_radius = same_radius_;  // a local: stays in a register across the stores to best
   if constexpr (D == 3) {
     if (gather) {
-      // Gather the candidates and their image shifts, then test them four at a time.
-      alignas(32) std::int32_t ids[gather_capacity + 4];
-      alignas(32) double sx[gather_capacity + 4], sy[gather_capacity + 4], sz[gather_capacity + 4];
-      int n = 0;
-      const std::int32_t* heads = cells_.heads();
-      const std::int32_t* links = cells_.links();
-      const std::uintptr_t lines = reinterpret_cast<std::uintptr_t>(particles_.data());  // as in scan_cells
-      const auto take = [&](std::int32_t j, int m) {
-        ids[n] = j;
-        sx[n] = shifts[m][0];
-        sy[n] = shifts[m][1];
-        sz[n] = shifts[m][2];
-        __builtin_prefetch(reinterpret_cast<const void*>(lines + static_cast<std::intptr_t>(j) * sizeof(Particle<D>)));
-        n += 1 + (j >> 31);
-      };
-      for (int m = 0; m < count; ++m) {
-        if (n > gather_capacity - 2) {
-          kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
-          n = 0;
-        }
-        // The first two particles of a cell without a branch (most cells hold fewer); see scan_cells.
-        std::int32_t j = heads[base + deltas[m]];
-        take(j, m);
-        j = links[j];
-        take(j, m);
-        for (j = links[j]; j >= 0; j = links[j]) {
-          take(j, m);
-          if (n == gather_capacity) {
-            kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
-            n = 0;
-          }
-        }
-      }
-      kernel_scan(id, ids, n, sx, sy, sz, position, velocity, time, sigma2_row[0], best);
+      gather_scan<true>(id, base, deltas, shifts, count, position, velocity, time, sigma2_row[0], best);
       predictions_[id] = best;
       return;
     }
@@ -397,42 +421,8 @@ template <int D, class Queue>
   const Vec<D> no_shift = Vec<D>::Zero();
   if constexpr (D == 3) {
     if (gather) {
-      // The walk over the cell lists is a chain of short lists (about 0.6 particles per cell at
-      // phi = 0.3), and a loop's exit at each list end is a coin flip for the branch predictor.
-      // So the first two places of each list are taken without a branch (a missing particle, -1,
-      // is written but not counted; next(-1) = -1), and only a third particle enters the loop.
-      // The particle itself is gathered too: its separation from itself is exactly zero, never a
-      // hit. Each candidate's line is prefetched as it is found, so the kernel's loads overlap.
-      alignas(32) std::int32_t ids[gather_capacity + 4];
-      int n = 0;
-      const std::int32_t* heads = cells_.heads();
-      const std::int32_t* links = cells_.links();
-      // Addresses as integers: a missing particle (-1) prefetches the line before the array, which
-      // a prefetch may do (it never faults), without out-of-range pointer arithmetic.
-      const std::uintptr_t lines = reinterpret_cast<std::uintptr_t>(particles_.data());
-      const auto take = [&](std::int32_t j) {
-        ids[n] = j;
-        __builtin_prefetch(reinterpret_cast<const void*>(lines + static_cast<std::intptr_t>(j) * sizeof(Particle<D>)));
-        n += 1 + (j >> 31);  // +1 for a particle, +0 for -1
-      };
-      for (; first != last; ++first) {
-        if (n > gather_capacity - 2) {
-          kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
-          n = 0;
-        }
-        std::int32_t j = heads[base + *first];
-        take(j);
-        j = links[j];
-        take(j);
-        for (j = links[j]; j >= 0; j = links[j]) {
-          take(j);
-          if (n == gather_capacity) {
-            kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
-            n = 0;
-          }
-        }
-      }
-      kernel_scan(id, ids, n, nullptr, nullptr, nullptr, position, velocity, time, sigma2_row[0], best);
+      gather_scan<false>(id, base, first, nullptr, static_cast<int>(last - first), position, velocity, time,
+                         sigma2_row[0], best);
       predictions_[id] = best;
       return;
     }

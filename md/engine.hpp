@@ -125,6 +125,11 @@ class Engine {
   // count to a multiple of 4, and so have the shift arrays when present).
   void kernel_scan(std::int32_t id, std::int32_t* ids, int count, double* sx, double* sy, double* sz,
                    const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2, Prediction& best) const;
+  // The D = 3 kernel path of both scans: gathers the cells base + deltas[m] (m < count; with their
+  // image shifts when Shifted) and tests the candidates through kernel_scan into `best`.
+  template <bool Shifted>
+  void gather_scan(std::int32_t id, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts, int count,
+                   const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2, Prediction& best) const;
   void full_scan(std::int32_t id);
   // Big particles (open geometry, impurities larger than the host: see engine.cpp).
   bool is_big(std::int32_t id) const { return big_reach_ != 0 && species_[id] != host_species; }
