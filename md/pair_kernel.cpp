@@ -19,7 +19,10 @@ static_assert(offsetof(Particle<3>, velocity) == 24 && offsetof(Particle<3>, tim
 #if defined(COLDBLAST_PAIR_KERNEL_X86)
 
 bool pair_kernel_available() {
-  static const bool available = __builtin_cpu_supports("avx2");
+  static const bool available = [] {
+    __builtin_cpu_init();  // needed if the first call comes from a static initializer
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
   return available;
 }
 
