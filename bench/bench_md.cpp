@@ -47,17 +47,9 @@ void blast(benchmark::State& state, const std::string& queue, double t_max, doub
 // (cell list, calendar), without the event loop (same steps as md/ensemble.cpp's run_realization).
 void paper_2d_setup(benchmark::State& state) {
   const ResolvedScene scene = resolve_scene(paper_2d(4000.0, "calendar", 1.6));
-  const BlastConfig& c = scene.config;
   long long index = 0;
   for (auto _ : state) {
-    auto rng = realization_rng(c.seed, static_cast<std::uint64_t>(++index));
-    InitialState<2> initial;
-    initial.host = {c.a, 1.0};
-    initial.impurity = {scene.impurity_radius, c.impurities.mass};
-    initial.position = random_sequential_addition<2>(rng, scene.particle_count, c.a, scene.region_radius);
-    initial.velocity.assign(scene.particle_count, Vec<2>::Zero());
-    initial.species.assign(scene.particle_count, host_species);
-    kick_impurities<2>(rng, initial, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+    const InitialState<2> initial = blast_initial_state<2>(scene, ++index);
     EngineConfig<2> config;
     config.region_radius = scene.region_radius;
     config.guard_radius = scene.guard_radius;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "md/engine.hpp"
+#include "md/ensemble.hpp"
 #include "md/initial_state.hpp"
 #include "md/scenes.hpp"
 
@@ -68,14 +69,7 @@ int blast(int realization, double t_max, double width) {
   const BlastConfig c = parse_scene(default_scene_toml(), set);
   const ResolvedScene scene = resolve_scene(c);
   const double t0 = cpu_seconds();
-  auto rng = realization_rng(c.seed, static_cast<std::uint64_t>(realization));
-  InitialState<D> state;
-  state.host = {c.a, 1.0};
-  state.impurity = {scene.impurity_radius, c.impurities.mass};
-  state.position = random_sequential_addition<D>(rng, scene.particle_count, c.a, scene.region_radius);
-  state.velocity.assign(scene.particle_count, Vec<D>::Zero());
-  state.species.assign(scene.particle_count, host_species);
-  kick_impurities<D>(rng, state, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+  const InitialState<D> state = blast_initial_state<D>(scene, realization);
   EngineConfig<D> config;
   config.region_radius = scene.region_radius;
   config.guard_radius = scene.guard_radius;

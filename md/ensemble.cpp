@@ -72,14 +72,7 @@ std::string snapshot_csv(const ResolvedScene& scene, const Engine<D, Queue>& eng
 template <int D, class Queue>
 RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index) {
   const BlastConfig& c = scene.config;
-  auto rng = realization_rng(c.seed, static_cast<std::uint64_t>(index));
-  InitialState<D> state;
-  state.host = {c.a, 1.0};
-  state.impurity = {scene.impurity_radius, c.impurities.mass};
-  state.position = random_sequential_addition<D>(rng, scene.particle_count, c.a, scene.region_radius);
-  state.velocity.assign(scene.particle_count, Vec<D>::Zero());
-  state.species.assign(scene.particle_count, host_species);
-  kick_impurities<D>(rng, state, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+  const InitialState<D> state = blast_initial_state<D>(scene, index);
 
   const bool first = index == 0;
   EngineConfig<D> config;
@@ -185,6 +178,22 @@ std::string number_or_nan(double v) { return std::isfinite(v) ? format_number(v)
 const char* accumulator_header = "block,entry,channel,t,bin,sum,sum_squares";
 const char* block_totals_header = "block,count,collisions,energy_error_max";
 }  // namespace
+
+template <int D>
+InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index) {
+  const BlastConfig& c = scene.config;
+  auto rng = realization_rng(c.seed, static_cast<std::uint64_t>(index));
+  InitialState<D> state;
+  state.host = {c.a, 1.0};
+  state.impurity = {scene.impurity_radius, c.impurities.mass};
+  state.position = random_sequential_addition<D>(rng, scene.particle_count, c.a, scene.region_radius);
+  state.velocity.assign(scene.particle_count, Vec<D>::Zero());
+  state.species.assign(scene.particle_count, host_species);
+  kick_impurities<D>(rng, state, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+  return state;
+}
+template InitialState<2> blast_initial_state<2>(const ResolvedScene&, long long);
+template InitialState<3> blast_initial_state<3>(const ResolvedScene&, long long);
 
 long long BlastResult::realizations() const {
   long long n = 0;

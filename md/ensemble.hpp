@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/output.hpp"
+#include "md/initial_state.hpp"
 #include "md/scenes.hpp"
 
 namespace coldblast::md {
@@ -70,6 +71,12 @@ struct ObservableEstimate {
   double mean, stderr_;
   long long count;
 };
+
+/// The initial state of realization `index` of a resolved blast scene (paper Sec. V): random
+/// sequential addition at density n in the scene's region, then the impurities (the particles
+/// nearest the origin) kicked with total energy E and zero momentum; seeded from (seed, index).
+template <int D>
+InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index);
 
 /// Runs the realizations of `config` owned by this shard. Throws std::invalid_argument for bad
 /// options/scene and std::runtime_error when a realization fails (e.g. the guard trips).
