@@ -8,6 +8,7 @@
 
 #include "md/engine.hpp"
 #include "md/initial_state.hpp"
+#include "tests/md/engine_checks.hpp"
 
 using namespace coldblast::md;
 using Catch::Matchers::WithinAbs;
@@ -154,12 +155,7 @@ TEST_CASE("heap and bucketed calendar give bit-identical trajectories", "[fast]"
   Engine<2, CalendarEventQueue> calendar(config, s);
   heap.run_until(50.0);
   calendar.run_until(50.0);
-  REQUIRE(heap.collision_count() == calendar.collision_count());
-  REQUIRE(heap.collision_count() > 10000);
-  for (std::size_t i = 0; i < count; ++i) {
-    REQUIRE(heap.position(i) == calendar.position(i));
-    REQUIRE(heap.velocity(i) == calendar.velocity(i));
-  }
+  testing::require_same_trajectory(heap, calendar, 10001);
 }
 
 namespace {
@@ -188,14 +184,7 @@ void require_identical_runs(const InitialState<D>& s, const EngineConfig<D>& a, 
   first.run_until(t_end);
   second.run_until(t_end);
   INFO("cell widths " << first.cells().width(0) << " and " << second.cells().width(0));
-  REQUIRE(first.collision_count() == second.collision_count());
-  REQUIRE(first.collision_count() >= min_collisions);
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto id = static_cast<std::int32_t>(i);
-    differing += first.position(id) != second.position(id) || first.velocity(id) != second.velocity(id);
-  }
-  REQUIRE(differing == 0);
+  testing::require_same_trajectory(first, second, min_collisions);
 }
 }  // namespace
 

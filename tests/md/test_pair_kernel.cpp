@@ -13,6 +13,7 @@
 #include "md/engine.hpp"
 #include "md/initial_state.hpp"
 #include "md/pair_kernel.hpp"
+#include "tests/md/engine_checks.hpp"
 
 using namespace coldblast::md;
 
@@ -35,6 +36,13 @@ EarliestContact scalar_earliest(const std::vector<Particle<3>>& particles, const
   return best;
 }
 
+// False (with a warning that says what is not compared) on a CPU without AVX2.
+bool has_avx2_or_warn(const char* skipped) {
+  if (pair_kernel_available()) return true;
+  WARN("this CPU has no AVX2: " << skipped);
+  return false;
+}
+
 Vec<3> random_vec(std::mt19937_64& rng, double scale) {
   std::uniform_real_distribution<double> u(-scale, scale);
   return Vec<3>(u(rng), u(rng), u(rng));
@@ -42,10 +50,7 @@ Vec<3> random_vec(std::mt19937_64& rng, double scale) {
 }  // namespace
 
 TEST_CASE("the AVX2 pair kernel gives the scalar pair test's earliest contact bit for bit", "[fast]") {
-  if (!pair_kernel_available()) {
-    WARN("this CPU has no AVX2: the engine uses the scalar pair test only, nothing to compare");
-    return;
-  }
+  if (!has_avx2_or_warn("the engine uses the scalar pair test only, nothing to compare")) return;
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const double sigma2 = 1.0;
@@ -122,20 +127,13 @@ void require_kernel_invariant(const InitialState<3>& s, EngineConfig<3> config, 
   Engine<3, CalendarEventQueue> simd(config, s);
   run(scalar);
   run(simd);
-  REQUIRE(scalar.collision_count() == simd.collision_count());
-  REQUIRE(scalar.collision_count() >= min_collisions);
-  REQUIRE(scalar.stale_count() == simd.stale_count());
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto id = static_cast<std::int32_t>(i);
-    differing += scalar.position(id) != simd.position(id) || scalar.velocity(id) != simd.velocity(id);
-  }
-  REQUIRE(differing == 0);
+  testing::require_same_trajectory(scalar, simd, min_collisions);
+  REQUIRE(scalar.stale_count() == simd.stale_count());  // the same events, too
 }
 }  // namespace
 
 TEST_CASE("engines with and without the SIMD pair kernel give bit-identical trajectories (3D)", "[fast]") {
-  if (!pair_kernel_available()) WARN("no AVX2 on this CPU: both engines run the scalar pair test");
+  has_avx2_or_warn("both engines run the scalar pair test");
   SECTION("periodic fluid at phi = 0.3 (boundary cells scan with image shifts)") {
     auto rng = realization_rng(3, 0);
     const std::size_t count = 2000;
@@ -163,10 +161,7 @@ TEST_CASE("engines with and without the SIMD pair kernel give bit-identical traj
 }
 
 TEST_CASE("the AVX2 crossing time gives the scalar crossing time and face bit for bit", "[fast]") {
-  if (!pair_kernel_available()) {
-    WARN("this CPU has no AVX2: nothing to compare");
-    return;
-  }
+  if (!has_avx2_or_warn("the engine uses the scalar crossing time only, nothing to compare")) return;
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int ties = 0, resting = 0;
