@@ -2,13 +2,12 @@
 // realization of the paper's 2D blast and its set-up share, 3D equilibrium hard spheres at phi = 0.1, 0.3, 0.45 with
 // N = 10^5 (the EDMD reference point), heap versus bucketed calendar, memory for N = 10^6, and the
 // growth of the cost with t_max over a decade.
+#include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
 #include <cmath>
 #include <map>
 #include <memory>
-
-#include <benchmark/benchmark.h>
 
 #include "md/engine.hpp"
 #include "md/ensemble.hpp"
@@ -22,9 +21,9 @@ namespace {
 // explicitly (md must not call hydro).
 BlastConfig paper_2d(double t_max, const std::string& queue, double margin) {
   return parse_scene(default_scene_toml(),
-                     {"name=\"paper-2d\"", "E=5.7", "A_d=0.22380034", "t_min=0.9765625", "t_max=" + std::to_string(t_max),
-                      "box_margin=" + std::to_string(margin), "realizations=1", "queue=\"" + queue + "\"",
-                      R"(observables=["R_imp","V_imp","C_imp","u_imp","n0","T0","R"])"});
+                     {"name=\"paper-2d\"", "E=5.7", "A_d=0.22380034", "t_min=0.9765625",
+                      "t_max=" + std::to_string(t_max), "box_margin=" + std::to_string(margin), "realizations=1",
+                      "queue=\"" + queue + "\"", R"(observables=["R_imp","V_imp","C_imp","u_imp","n0","T0","R"])"});
 }
 
 void blast(benchmark::State& state, const std::string& queue, double t_max, double margin) {
@@ -38,7 +37,8 @@ void blast(benchmark::State& state, const std::string& queue, double t_max, doub
     collisions += r.collisions();
     seconds += r.wall_seconds;
   }
-  state.counters["collisions_per_second"] = benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
+  state.counters["collisions_per_second"] =
+      benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
   state.counters["collisions_per_realization"] = static_cast<double>(collisions) / state.iterations();
   state.counters["seconds_per_realization"] = seconds / state.iterations();
 }
@@ -108,14 +108,30 @@ void memory_1e6(benchmark::State& state) {
 }  // namespace
 
 // The t_max scan uses box_margin = 3: below t ~ 1000 a few fast particles run well ahead of Eq. (1).
-BENCHMARK_CAPTURE(blast, paper_2d_calendar, std::string("calendar"), 4000.0, 1.6)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(blast, paper_2d_calendar, std::string("calendar"), 4000.0, 1.6)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 BENCHMARK(paper_2d_setup)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK_CAPTURE(blast, paper_2d_heap, std::string("heap"), 4000.0, 1.6)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(blast, t_max_400, std::string("calendar"), 400.0, 3.0)->Unit(benchmark::kMillisecond)->Iterations(10);
-BENCHMARK_CAPTURE(blast, t_max_1265, std::string("calendar"), 1264.9110640673518, 3.0)->Unit(benchmark::kMillisecond)->Iterations(5);
-BENCHMARK_CAPTURE(blast, t_max_4000, std::string("calendar"), 4000.0, 3.0)->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK_TEMPLATE(equilibrium, CalendarEventQueue)->Arg(10)->Arg(30)->Arg(45)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK_TEMPLATE(equilibrium, HeapEventQueue)->Arg(10)->Arg(30)->Arg(45)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_CAPTURE(blast, t_max_1265, std::string("calendar"), 1264.9110640673518, 3.0)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5);
+BENCHMARK_CAPTURE(blast, t_max_4000, std::string("calendar"), 4000.0, 3.0)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+BENCHMARK_TEMPLATE(equilibrium, CalendarEventQueue)
+    ->Arg(10)
+    ->Arg(30)
+    ->Arg(45)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_TEMPLATE(equilibrium, HeapEventQueue)
+    ->Arg(10)
+    ->Arg(30)
+    ->Arg(45)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(memory_1e6)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(1);
 
 BENCHMARK_MAIN();

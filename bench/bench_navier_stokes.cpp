@@ -2,10 +2,10 @@
 // the core runs of acceptance item 4 (R/λ = 2 -> 1e6 in 2D and 3D) at several resolutions, with the
 // error of the final H, n0, T0 exponents against the paper's rationals as a counter (work–precision),
 // and the Euler run against the exact TvNS amplitude. Results: docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <benchmark/benchmark.h>
 
 #include "hydro/navier_stokes.hpp"
 #include "theory/exponents.hpp"
@@ -53,10 +53,23 @@ void euler(benchmark::State& state) {
 }  // namespace
 
 // (d, cells, log10 of R/λ at the end)
-BENCHMARK(core)->Args({2, 64, 6})->Args({2, 128, 6})->Args({2, 256, 6})->Args({3, 64, 6})->Args({3, 128, 6})
-    ->Args({3, 256, 6})->Args({2, 256, 8})->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(core)
+    ->Args({2, 64, 6})
+    ->Args({2, 128, 6})
+    ->Args({2, 256, 6})
+    ->Args({3, 64, 6})
+    ->Args({3, 128, 6})
+    ->Args({3, 256, 6})
+    ->Args({2, 256, 8})
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 // (d, cells), R/λ = 500 with the hot region at 0.4
-BENCHMARK(euler)->Args({2, 128})->Args({2, 256})->Args({3, 128})->Args({3, 256})->Unit(benchmark::kSecond)
+BENCHMARK(euler)
+    ->Args({2, 128})
+    ->Args({2, 256})
+    ->Args({3, 128})
+    ->Args({3, 256})
+    ->Unit(benchmark::kSecond)
     ->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -1,10 +1,10 @@
 // Time to compute the TvNS amplitude A_d (paper Eq. (1) [R-shock]) at requested relative tolerances
 // 1e-6 ... 1e-13 by each method, with the actual error against the most accurate result (closed form
 // at 1e-14) and each method's own error estimate as counters. Results: docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
 #include <cmath>
 #include <string>
-
-#include <benchmark/benchmark.h>
 
 #include "hydro/tvns.hpp"
 
@@ -52,9 +52,15 @@ void run(benchmark::State& state, TvnsMethod method) {
   state.counters["evaluations"] = static_cast<double>(result.evaluations);
 }
 
-void BM_closed_form(benchmark::State& state) { run(state, TvnsMethod::closed_form); }
-void BM_ode_bulirsch_stoer(benchmark::State& state) { run(state, TvnsMethod::ode); }
-void BM_ode_dormand_prince(benchmark::State& state) { run(state, TvnsMethod::ode_check); }
+void BM_closed_form(benchmark::State& state) {
+  run(state, TvnsMethod::closed_form);
+}
+void BM_ode_bulirsch_stoer(benchmark::State& state) {
+  run(state, TvnsMethod::ode);
+}
+void BM_ode_dormand_prince(benchmark::State& state) {
+  run(state, TvnsMethod::ode_check);
+}
 
 /// The whole solve_tvns() at the default tolerance 1e-13: both methods and their comparison.
 void BM_solve_tvns(benchmark::State& state) {

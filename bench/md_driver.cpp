@@ -61,8 +61,8 @@ int blast(int realization, double t_max, double width) {
   if (D == 2)
     set = {"name=\"paper-2d\"", "d=2", "n=0.15", "E=5.7", "A_d=0.22380034", "t_min=0.9765625", "box_margin=1.6"};
   else
-    set = {"name=\"paper-3d\"", "d=3", "n=0.225", "E=5.7", "A_d=0.22429374246053257", "t_min=0.7505963",
-           "box_margin=2.0"};
+    set = {"name=\"paper-3d\"", "d=3",           "n=0.225", "E=5.7", "A_d=0.22429374246053257",
+           "t_min=0.7505963",   "box_margin=2.0"};
   set.push_back("t_max=" + std::to_string(t_max));
   set.push_back("realizations=1");
   set.push_back("queue=\"calendar\"");
@@ -79,14 +79,13 @@ int blast(int realization, double t_max, double width) {
   for (const double t : scene.times) engine.run_until(t);
   engine.run_until(c.t_max);
   const double t2 = cpu_seconds();
-  std::printf("blast D%d r%d cell %g: N %zu collisions %llu events %llu crossings %llu stale %llu checksum %016llx "
-              "setup %.3f loop %.3f s\n",
-              D, realization, engine.cells().width(0), engine.size(),
-              static_cast<unsigned long long>(engine.collision_count()),
-              static_cast<unsigned long long>(engine.event_count()),
-              static_cast<unsigned long long>(engine.crossing_count()),
-              static_cast<unsigned long long>(engine.stale_count()),
-              static_cast<unsigned long long>(checksum<D>(engine)), t1 - t0, t2 - t1);
+  std::printf(
+      "blast D%d r%d cell %g: N %zu collisions %llu events %llu crossings %llu stale %llu checksum %016llx "
+      "setup %.3f loop %.3f s\n",
+      D, realization, engine.cells().width(0), engine.size(), static_cast<unsigned long long>(engine.collision_count()),
+      static_cast<unsigned long long>(engine.event_count()), static_cast<unsigned long long>(engine.crossing_count()),
+      static_cast<unsigned long long>(engine.stale_count()), static_cast<unsigned long long>(checksum<D>(engine)),
+      t1 - t0, t2 - t1);
   return 0;
 }
 
@@ -102,14 +101,13 @@ int equilibrium(double phi, int realization, std::size_t count, std::uint64_t me
   const double t1 = cpu_seconds();
   engine.run_collisions(collisions);
   const double t2 = cpu_seconds();
-  std::printf("equilibrium phi %g r%d N %zu: collisions %llu events %llu crossings %llu stale %llu checksum %016llx "
-              "loop %.3f s rate %.3g/s\n",
-              phi, realization, count, static_cast<unsigned long long>(engine.collision_count()),
-              static_cast<unsigned long long>(engine.event_count()),
-              static_cast<unsigned long long>(engine.crossing_count()),
-              static_cast<unsigned long long>(engine.stale_count()),
-              static_cast<unsigned long long>(checksum<3>(engine)), t2 - t1,
-              static_cast<double>(collisions) / (t2 - t1));
+  std::printf(
+      "equilibrium phi %g r%d N %zu: collisions %llu events %llu crossings %llu stale %llu checksum %016llx "
+      "loop %.3f s rate %.3g/s\n",
+      phi, realization, count, static_cast<unsigned long long>(engine.collision_count()),
+      static_cast<unsigned long long>(engine.event_count()), static_cast<unsigned long long>(engine.crossing_count()),
+      static_cast<unsigned long long>(engine.stale_count()), static_cast<unsigned long long>(checksum<3>(engine)),
+      t2 - t1, static_cast<double>(collisions) / (t2 - t1));
   return 0;
 }
 

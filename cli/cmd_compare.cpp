@@ -43,22 +43,26 @@ void print_table(const compare::CompareResult& result) {
               "window fit", "dev/sig", "verdict");
   for (const auto& v : result.observables) {
     char reference[64], measured[64], window[64];
-    std::snprintf(reference, sizeof reference, v.alpha_reference_error > 0 ? "%.4f±%.3f" : "%.4f",
-                  v.alpha_reference, v.alpha_reference_error);
+    std::snprintf(reference, sizeof reference, v.alpha_reference_error > 0 ? "%.4f±%.3f" : "%.4f", v.alpha_reference,
+                  v.alpha_reference_error);
     // An exponent (or its jackknife error) is undefined when the observable's ensemble mean, or a
     // delete-one-block mean, is <= 0 at one of its times (u_flow: the thermal-noise correction
     // exceeds the signal); say so instead of printing nan.
     if (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error))
       std::snprintf(measured, sizeof measured, "%.4f±%.4f @%g", v.alpha_measured, v.alpha_error, v.t_measured);
-    else std::snprintf(measured, sizeof measured, "undefined @%g", v.t_measured);
+    else
+      std::snprintf(measured, sizeof measured, "undefined @%g", v.t_measured);
     if (std::isfinite(v.window.exponent) && std::isfinite(v.window.exponent_error))
       std::snprintf(window, sizeof window, "%.4f±%.4f", v.window.exponent, v.window.exponent_error);
-    else std::snprintf(window, sizeof window, "undefined");
+    else
+      std::snprintf(window, sizeof window, "undefined");
     char deviation[32];
-    if (std::isfinite(v.deviation_sigma)) std::snprintf(deviation, sizeof deviation, "%+8.2f", v.deviation_sigma);
-    else std::snprintf(deviation, sizeof deviation, "%8s", "-");
-    std::printf("%-7s %-10s %-17s %-24s %-19s %s  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(),
-                reference, measured, window, deviation, v.pass ? "pass" : "FAIL");
+    if (std::isfinite(v.deviation_sigma))
+      std::snprintf(deviation, sizeof deviation, "%+8.2f", v.deviation_sigma);
+    else
+      std::snprintf(deviation, sizeof deviation, "%8s", "-");
+    std::printf("%-7s %-10s %-17s %-24s %-19s %s  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(), reference,
+                measured, window, deviation, v.pass ? "pass" : "FAIL");
   }
   std::printf("\nverdict: %s\n", result.pass ? "PASS" : "FAIL");
 }
@@ -72,8 +76,10 @@ void run(CompareOptions& options) {
     const auto files = compare::write_report(result, {options.out, !options.no_figures});
     std::cerr << "compare: wrote " << files.size() << " files to " << options.out << '\n';
   }
-  if (options.format == Format::json) print_json(compare::verdict_json(result));
-  else print_table(result);
+  if (options.format == Format::json)
+    print_json(compare::verdict_json(result));
+  else
+    print_table(result);
   if (!result.pass) throw ExitStatus{3};
 }
 
@@ -87,21 +93,25 @@ void add_compare_command(CLI::App& app) {
       ->required();
   command->add_option("--against", options->against, "Reference: theory (exact rationals), paper (Table 1) or hydro")
       ->capture_default_str();
-  command->add_option("--sigma", options->config.sigma, "k: pass when |alpha_S - alpha_ref| <= k*error (+ allowance); (0, 10]")
+  command
+      ->add_option("--sigma", options->config.sigma,
+                   "k: pass when |alpha_S - alpha_ref| <= k*error (+ allowance); (0, 10]")
       ->capture_default_str();
   command->add_option("--allowance", options->config.allowance,
                       "Finite-time allowance on |alpha_S - alpha_ref| for theory/hydro, [0, 1]; "
                       "default 0.10 (theory), 0.05 (hydro), 0 (paper)");
-  command->add_option("--window-decades", options->config.window_decades,
-                      "Window fit over the last W decades of recorded time, (0, 6]")
+  command
+      ->add_option("--window-decades", options->config.window_decades,
+                   "Window fit over the last W decades of recorded time, (0, 6]")
       ->capture_default_str();
   command->add_option("--until", options->config.until,
                       "Measure as of time T: ignore recorded times after T (default: all); "
                       "T in [second, last recorded time]");
   command->add_option("--observables", options->observables,
                       "Comma-separated subset of R_imp,C_imp,V_imp,u_imp,T0,n0 (default: all recorded)");
-  command->add_option("--hydro-cells", options->config.hydro_cells,
-                      "Navier–Stokes cells for --against hydro, [16, 100000]")
+  command
+      ->add_option("--hydro-cells", options->config.hydro_cells,
+                   "Navier–Stokes cells for --against hydro, [16, 100000]")
       ->capture_default_str();
   command->add_option("--out", options->out, "Report directory (report.md, verdict.json, exponents.csv, figures/)");
   command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");

@@ -103,14 +103,14 @@ std::string config_header(const hydro::NavierStokesResult& r) {
 void write_files(const hydro::NavierStokesResult& r, const std::string& directory) {
   if (directory.empty()) return;
   std::string series = config_header(r);
-  series += "t,R_over_lambda,R,H,H_density,n0,T0,p0,energy,mass,energy_error,H_prefactor,n0_prefactor,T0_prefactor,"
-            "p0_scaled\n";
+  series +=
+      "t,R_over_lambda,R,H,H_density,n0,T0,p0,energy,mass,energy_error,H_prefactor,n0_prefactor,T0_prefactor,"
+      "p0_scaled\n";
   for (const auto& s : r.samples)
     series += number(s.t) + "," + number(s.R_over_lambda) + "," + number(s.R) + "," + number(s.H) + "," +
               number(s.H_density) + "," + number(s.n0) + "," + number(s.T0) + "," + number(s.p0) + "," +
-              number(s.energy) + "," + number(s.mass) + "," + number(s.energy_error, 3) + "," +
-              number(s.H_prefactor) + "," + number(s.n0_prefactor) + "," + number(s.T0_prefactor) + "," +
-              number(s.p0_scaled) + "\n";
+              number(s.energy) + "," + number(s.mass) + "," + number(s.energy_error, 3) + "," + number(s.H_prefactor) +
+              "," + number(s.n0_prefactor) + "," + number(s.T0_prefactor) + "," + number(s.p0_scaled) + "\n";
   common::write_file_atomic(directory + "/samples.csv", series);
   std::string exponents = config_header(r);
   exponents += "t,R_over_lambda,R,H,H_density,n0,T0,H_in_R,H_density_in_R,n0_in_R,T0_in_R\n";
@@ -168,14 +168,15 @@ void run_core(const HydroOptions& options) {
   }
   std::printf("Navier-Stokes core, d = %d, R/lambda = %s, %d cells, c_kappa = %.6g, c_mu = %.6g\n", config.physics.d,
               number(s.R_over_lambda, 6).c_str(), config.numerics.cells, r.kappa_prefactor, r.viscosity_prefactor);
-  std::printf("running time exponents d ln X / d ln t at the end:\n  %-4s %10s %10s %10s\n", "X", "measured",
-              "theory", "");
+  std::printf("running time exponents d ln X / d ln t at the end:\n  %-4s %10s %10s %10s\n", "X", "measured", "theory",
+              "");
   for (const Row& row : rows)
     std::printf("  %-4s %10.5f %10.5f %10s\n", row.name, row.measured, theory::to_double(row.theory),
                 theory::to_string(row.theory).c_str());
-  std::printf("prefactors: H/(lambda x^h_d) = %.4f, n0/(n_inf x^-2d^2/(8+3d^2)) = %.4f, T0/(Rdot^2 x^2d^2/(8+3d^2)) = "
-              "%.4f (x = R/lambda)\n",
-              s.H_prefactor, s.n0_prefactor, s.T0_prefactor);
+  std::printf(
+      "prefactors: H/(lambda x^h_d) = %.4f, n0/(n_inf x^-2d^2/(8+3d^2)) = %.4f, T0/(Rdot^2 x^2d^2/(8+3d^2)) = "
+      "%.4f (x = R/lambda)\n",
+      s.H_prefactor, s.n0_prefactor, s.T0_prefactor);
   std::printf("central pressure p0/(n_inf Rdot^2) = %.4f; energy error %.2e; %.2f s, %ld RHS evaluations\n",
               s.p0_scaled, r.max_energy_error, r.statistics.wall_seconds, r.statistics.rhs_evaluations);
 }
@@ -186,16 +187,17 @@ void run_euler(const HydroOptions& options) {
   write_files(r, options.out);
   const hydro::TvnsComparison c = hydro::compare_to_tvns(r);
   if (options.format == Format::json) {
-    print_json({{"d", config.physics.d},
-                {"A_measured", c.A_measured},
-                {"A_exact", c.A_exact},
-                {"A_relative_error", c.A_relative_error},
-                {"profile_L1_error", {{"density", c.L1_density}, {"velocity", c.L1_velocity}, {"pressure", c.L1_pressure}}},
-                {"R_over_initial_width", config.until_R_over_lambda /
-                                             (config.numerics.start_R_over_lambda * config.numerics.initial_width)},
-                {"cells", config.numerics.cells},
-                {"energy_error", r.max_energy_error},
-                {"wall_seconds", r.statistics.wall_seconds}});
+    print_json(
+        {{"d", config.physics.d},
+         {"A_measured", c.A_measured},
+         {"A_exact", c.A_exact},
+         {"A_relative_error", c.A_relative_error},
+         {"profile_L1_error", {{"density", c.L1_density}, {"velocity", c.L1_velocity}, {"pressure", c.L1_pressure}}},
+         {"R_over_initial_width",
+          config.until_R_over_lambda / (config.numerics.start_R_over_lambda * config.numerics.initial_width)},
+         {"cells", config.numerics.cells},
+         {"energy_error", r.max_energy_error},
+         {"wall_seconds", r.statistics.wall_seconds}});
     return;
   }
   std::printf("Euler (kappa = mu = 0), d = %d, %d cells, R/(initial width) = %.4g\n", config.physics.d,
@@ -209,7 +211,8 @@ void run_euler(const HydroOptions& options) {
 }
 
 void add_common_options(CLI::App& command, HydroOptions& options, const char* until_help) {
-  command.add_option("--d", options.d, "Spatial dimension: 1 planar, 2 cylindrical, 3 spherical")->capture_default_str();
+  command.add_option("--d", options.d, "Spatial dimension: 1 planar, 2 cylindrical, 3 spherical")
+      ->capture_default_str();
   command.add_option("--until", options.until, until_help);
   command.add_option("--cells", options.cells, "Finite-volume cells (>= 16)")->capture_default_str();
   command.add_option("--out", options.out, "Folder for samples.csv, exponents.csv, profile.csv (none if empty)");
@@ -219,7 +222,8 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
 }  // namespace
 
 void add_hydro_command(CLI::App& app) {
-  CLI::App* hydro = app.add_subcommand("hydro", "Radial Navier-Stokes blast (paper Sec. III): core exponents, Euler check");
+  CLI::App* hydro =
+      app.add_subcommand("hydro", "Radial Navier-Stokes blast (paper Sec. III): core exponents, Euler check");
   hydro->require_subcommand(1);
 
   auto core_options = std::make_shared<HydroOptions>();
@@ -240,7 +244,8 @@ void add_hydro_command(CLI::App& app) {
 
   auto euler_options = std::make_shared<HydroOptions>();
   CLI::App* euler = hydro->add_subcommand("euler", "kappa = mu = 0: A_d and profiles against the exact TvNS solution");
-  add_common_options(*euler, *euler_options, "Stop at R/lambda (default 500; the initial hot region has R/lambda = 0.4)");
+  add_common_options(*euler, *euler_options,
+                     "Stop at R/lambda (default 500; the initial hot region has R/lambda = 0.4)");
   euler->callback([euler_options] { run_euler(*euler_options); });
 }
 

@@ -125,7 +125,8 @@ void run_md(const MdRunOptions& o) {
   // --resume DIR continues there (DIR is the output directory).
   std::string out = o.out;
   if (!o.resume.empty()) {
-    if (o.out_given && std::filesystem::path(o.out).lexically_normal() != std::filesystem::path(o.resume).lexically_normal())
+    if (o.out_given &&
+        std::filesystem::path(o.out).lexically_normal() != std::filesystem::path(o.resume).lexically_normal())
       throw std::invalid_argument("--resume = " + o.resume + " must be the output directory (--out = " + o.out + ")");
     out = o.resume;
     options.resume = true;
@@ -191,19 +192,30 @@ void equilibrium_md(const MdEquilibriumOptions& o) {
 }  // namespace
 
 void add_md_command(CLI::App& app) {
-  CLI::App* md = app.add_subcommand("md", "Event-driven MD of the blast in a zero-temperature hard-sphere gas (paper Sec. V)");
+  CLI::App* md =
+      app.add_subcommand("md", "Event-driven MD of the blast in a zero-temperature hard-sphere gas (paper Sec. V)");
   md->require_subcommand(1);
 
   auto run = std::make_shared<MdRunOptions>();
-  CLI::App* run_command = md->add_subcommand("run", "Run an ensemble of blast realizations of a TOML scene (default: the embedded scene)");
+  CLI::App* run_command =
+      md->add_subcommand("run", "Run an ensemble of blast realizations of a TOML scene (default: the embedded scene)");
   run_command->add_option("SCENE", run->scene_file, "Scene file (TOML); keys in docs/md-output.md");
-  run_command->add_option("--set", run->set, "Override a scene key: key=value (repeatable; e.g. --set E=20 --set impurities.count=2)");
+  run_command->add_option("--set", run->set,
+                          "Override a scene key: key=value (repeatable; e.g. --set E=20 --set impurities.count=2)");
   run_command->add_option("--realizations", run->realizations, "Number of realizations (overrides the scene)");
-  run_command->add_option("--threads", run->threads, "Worker threads (results are identical for any count)")->capture_default_str();
+  run_command->add_option("--threads", run->threads, "Worker threads (results are identical for any count)")
+      ->capture_default_str();
   run_command->add_option("--seed", run->seed, "Master seed (overrides the scene; >= 0)");
-  CLI::Option* out_option = run_command->add_option("--out", run->out, "Output directory (finished blocks are checkpointed in OUT/checkpoint until the run ends)")->capture_default_str();
-  run_command->add_option("--shard", run->shard, "Run only blocks i, i+n, ... of the ensemble: i/n")->capture_default_str();
-  run_command->add_option("--resume", run->resume, "Continue a killed run in output directory DIR: load its checkpoint (same scene required) and run only the missing blocks");
+  CLI::Option* out_option =
+      run_command
+          ->add_option("--out", run->out,
+                       "Output directory (finished blocks are checkpointed in OUT/checkpoint until the run ends)")
+          ->capture_default_str();
+  run_command->add_option("--shard", run->shard, "Run only blocks i, i+n, ... of the ensemble: i/n")
+      ->capture_default_str();
+  run_command->add_option("--resume", run->resume,
+                          "Continue a killed run in output directory DIR: load its checkpoint (same scene required) "
+                          "and run only the missing blocks");
   add_format_option(*run_command, run->format);
   run_command->callback([run, out_option] {
     run->out_given = out_option->count() > 0;
@@ -218,11 +230,14 @@ void add_md_command(CLI::App& app) {
   merge_command->callback([merge] { merge_md(*merge); });
 
   auto eq = std::make_shared<MdEquilibriumOptions>();
-  CLI::App* eq_command = md->add_subcommand("equilibrium", "Equilibrium hard spheres in a periodic box: Z = beta P/n and the collision rate");
+  CLI::App* eq_command = md->add_subcommand(
+      "equilibrium", "Equilibrium hard spheres in a periodic box: Z = beta P/n and the collision rate");
   eq_command->add_option("--d", eq->config.d, "Dimension (2 or 3)")->capture_default_str();
-  eq_command->add_option("--phi", eq->config.phi, "Packing fraction (0..0.7 in 2D, 0..0.5 in 3D)")->capture_default_str();
+  eq_command->add_option("--phi", eq->config.phi, "Packing fraction (0..0.7 in 2D, 0..0.5 in 3D)")
+      ->capture_default_str();
   eq_command->add_option("--particles", eq->config.particles, "Number of particles N")->capture_default_str();
-  eq_command->add_option("--collisions", eq->config.collisions, "Collisions measured after equilibration")->capture_default_str();
+  eq_command->add_option("--collisions", eq->config.collisions, "Collisions measured after equilibration")
+      ->capture_default_str();
   eq_command->add_option("--blocks", eq->config.blocks, "Blocks for the error bars")->capture_default_str();
   eq_command->add_option("--seed", eq->config.seed, "Random seed")->capture_default_str();
   eq_command->add_option("--queue", eq->config.queue, "Event calendar: calendar or heap")->capture_default_str();

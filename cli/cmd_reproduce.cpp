@@ -21,15 +21,15 @@ void print_verdict(const char* name, const compare::CompareResult& result) {
   std::printf("\nagainst %-6s: %s\n", name, result.pass ? "PASS" : "FAIL");
   for (const auto& v : result.observables)
     std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma)  %s\n", v.name.c_str(),
-                v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error,
-                v.deviation_sigma, v.pass ? "pass" : "FAIL");
+                v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error, v.deviation_sigma,
+                v.pass ? "pass" : "FAIL");
 }
 
 void run(ReproduceOptions& options) {
   options.config.scale = compare::parse_scale(options.scale);
   options.config.figures = !options.no_figures;
-  const compare::ReproduceResult r =
-      compare::run_reproduce(options.config, [](const std::string& line) { std::cerr << "reproduce: " << line << '\n'; });
+  const compare::ReproduceResult r = compare::run_reproduce(
+      options.config, [](const std::string& line) { std::cerr << "reproduce: " << line << '\n'; });
   if (options.format == Format::json) {
     print_json(compare::reproduce_summary(r));
     return;
@@ -60,11 +60,13 @@ void add_reproduce_command(CLI::App& app) {
   command->add_option("--threads", options->config.threads, "MD worker threads; 0 = all hardware threads")
       ->capture_default_str();
   command->add_option("--seed", options->config.seed, "MD master seed")->capture_default_str();
-  command->add_option("--realizations", options->config.realizations,
-                      "MD realizations; 0 = the scale's default (quick 384, paper 30000)")
+  command
+      ->add_option("--realizations", options->config.realizations,
+                   "MD realizations; 0 = the scale's default (quick 384, paper 30000)")
       ->capture_default_str();
-  command->add_option("--hydro-until", options->config.hydro_until,
-                      "Navier–Stokes run up to this R/lambda, [20, 1e8]; 0 = the scale's default (1e4, 1e6)")
+  command
+      ->add_option("--hydro-until", options->config.hydro_until,
+                   "Navier–Stokes run up to this R/lambda, [20, 1e8]; 0 = the scale's default (1e4, 1e6)")
       ->capture_default_str();
   command->add_option("--md-run", options->config.md_run,
                       "Use this existing `md run` directory of the paper scene instead of running the MD step. "

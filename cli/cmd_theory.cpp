@@ -46,8 +46,7 @@ common::Json dimension_json(int d) {
 
 std::string cell(const theory::Rational& value) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%-9s %9.6f", theory::to_string(value).c_str(),
-                theory::to_double(value));
+  std::snprintf(buffer, sizeof buffer, "%-9s %9.6f", theory::to_string(value).c_str(), theory::to_double(value));
   return buffer;
 }
 
@@ -63,8 +62,8 @@ void print_detail(int d) {
                   cell(e.in_R_over_lambda).c_str());
     std::cout << line;
   }
-  std::cout << "\n  convection-diffusion (Sec. IV): (d/dt + t^(" << theory::to_string(c.drift)
-            << ") d/dr) P = t^(" << theory::to_string(c.diffusion) << ") Laplacian P\n"
+  std::cout << "\n  convection-diffusion (Sec. IV): (d/dt + t^(" << theory::to_string(c.drift) << ") d/dr) P = t^("
+            << theory::to_string(c.diffusion) << ") Laplacian P\n"
             << "    P = t^(-" << theory::to_string(c.density) << ") Pscaled(eta), eta = r t^(-"
             << theory::to_string(c.spread) << "), Pscaled ~ exp(-" << theory::to_string(c.gaussian_coefficient)
             << " eta^2)\n";
@@ -109,15 +108,17 @@ std::pair<int, int> parse_range(const std::string& text) {
   }
   common::require_integer_in_range("--d-range first", first, theory::min_dimension, theory::max_dimension);
   common::require_integer_in_range("--d-range last", last, first, std::min(first + 999, theory::max_dimension),
-                           "(at most 1000 dimensions, last >= first)");
+                                   "(at most 1000 dimensions, last >= first)");
   return {first, last};
 }
 
 void run(const TheoryOptions& options) {
   if (options.d_range.empty()) {
     common::require_integer_in_range("--d", options.d, theory::min_dimension, theory::max_dimension);
-    if (options.format == Format::json) print_json(dimension_json(options.d));
-    else print_detail(options.d);
+    if (options.format == Format::json)
+      print_json(dimension_json(options.d));
+    else
+      print_detail(options.d);
     return;
   }
   const auto [first, last] = parse_range(options.d_range);
@@ -136,10 +137,9 @@ void add_theory_command(CLI::App& app) {
   auto options = std::make_shared<TheoryOptions>();
   CLI::App* command = app.add_subcommand(
       "theory", "Exact rational scaling exponents of the paper (Table 2, Eqs. 4-12, 21-24, Sec. IV) for any d");
-  auto* d_option = command->add_option("--d", options->d, "Spatial dimension d (integer, 1..10000)")
-                       ->capture_default_str();
-  command->add_option("--d-range", options->d_range, "Range of dimensions FIRST..LAST, e.g. 2..6")
-      ->excludes(d_option);
+  auto* d_option =
+      command->add_option("--d", options->d, "Spatial dimension d (integer, 1..10000)")->capture_default_str();
+  command->add_option("--d-range", options->d_range, "Range of dimensions FIRST..LAST, e.g. 2..6")->excludes(d_option);
   add_format_option(*command, options->format);
   command->callback([options] { run(*options); });
 }

@@ -30,13 +30,18 @@ struct TvnsOptions {
   Format format = Format::table;
 };
 
-const char* geometry(int d) { return d == 1 ? "planar" : d == 2 ? "cylindrical" : "spherical"; }
+const char* geometry(int d) {
+  return d == 1 ? "planar" : d == 2 ? "cylindrical" : "spherical";
+}
 
 const char* case_name(hydro::TvnsCase c) {
   switch (c) {
-    case hydro::TvnsCase::standard: return "standard";
-    case hydro::TvnsCase::singular: return "singular";
-    case hydro::TvnsCase::vacuum: return "vacuum";
+    case hydro::TvnsCase::standard:
+      return "standard";
+    case hydro::TvnsCase::singular:
+      return "singular";
+    case hydro::TvnsCase::vacuum:
+      return "vacuum";
   }
   return "?";
 }
@@ -79,8 +84,7 @@ hydro::TvnsConfig make_config(const TvnsOptions& options) {
   if (config.eos == hydro::Eos::ideal) {
     if (options.gamma != 0.0)
       common::require_in_range("--gamma", options.gamma, hydro::min_gamma, hydro::max_gamma, common::Bound::closed,
-                               common::Bound::closed,
-                               "(0 selects 1 + 2/d)");
+                               common::Bound::closed, "(0 selects 1 + 2/d)");
     if (options.phi != 0.0)
       throw std::invalid_argument("--phi = " + common::format_number(options.phi) +
                                   " needs a hard-particle --eos (henderson for d = 2, carnahan-starling for d = 3)");
@@ -91,8 +95,8 @@ hydro::TvnsConfig make_config(const TvnsOptions& options) {
       throw std::invalid_argument("--eos = " + options.eos + " is for --d = " + std::to_string(eos_d) +
                                   " only, not --d = " + std::to_string(options.d));
     if (options.gamma != 0.0)
-      throw std::invalid_argument("--gamma = " + common::format_number(options.gamma) + " cannot be set with --eos = " +
-                                  options.eos + " (hard particles: e = (d/2) T)");
+      throw std::invalid_argument("--gamma = " + common::format_number(options.gamma) +
+                                  " cannot be set with --eos = " + options.eos + " (hard particles: e = (d/2) T)");
     common::require_in_range("--phi", options.phi, 0.0, hydro::max_ambient_packing_fraction(config.eos),
                              common::Bound::open, common::Bound::open,
                              "for --eos = " + options.eos + " (post-shock phi must stay below close packing " +
@@ -108,26 +112,29 @@ hydro::TvnsConfig make_config(const TvnsOptions& options) {
 common::Json point_json(const hydro::TvnsPoint& p) {
   // JSON has no infinity: the centre's temperature (standard case) is written as null.
   const auto finite_or_null = [](double value) { return std::isfinite(value) ? common::Json(value) : common::Json(); };
-  return {{"r_over_R", p.r_over_R}, {"density", p.density}, {"velocity", p.velocity}, {"pressure", p.pressure},
+  return {{"r_over_R", p.r_over_R},
+          {"density", p.density},
+          {"velocity", p.velocity},
+          {"pressure", p.pressure},
           {"temperature", finite_or_null(p.temperature)}};
 }
 
 void write_profile(const std::string& path, const hydro::TvnsSolution& s, const std::vector<hydro::TvnsPoint>& points) {
   const hydro::TvnsConfig& c = s.config();
-  std::string text = common::provenance_header(
-      {{"d", std::to_string(c.d)},
-       {"gamma", number(s.gamma())},
-       {"eos", hydro::to_string(c.eos)},
-       {"phi", number(c.phi)},
-       {"tolerance", number(c.tolerance)},
-       {"case", case_name(s.solution_case())},
-       {"A", number(s.A())},
-       {"A_error", number(s.A_error(), 3)},
-       {"method_agreement", number(s.method_agreement(), 3)},
-       {"cavity_radius", number(s.cavity_radius())},
-       {"note", "temperature is inf where the density is 0 (the centre, or below 1e-308)"}},
-      "r_over_R = r/R; density = rho/rho0; velocity = u/Rdot; pressure = p/(rho0 Rdot^2); "
-      "temperature = T/Rdot^2 with T = p/(n Z), k_B = m = 1");
+  std::string text =
+      common::provenance_header({{"d", std::to_string(c.d)},
+                                 {"gamma", number(s.gamma())},
+                                 {"eos", hydro::to_string(c.eos)},
+                                 {"phi", number(c.phi)},
+                                 {"tolerance", number(c.tolerance)},
+                                 {"case", case_name(s.solution_case())},
+                                 {"A", number(s.A())},
+                                 {"A_error", number(s.A_error(), 3)},
+                                 {"method_agreement", number(s.method_agreement(), 3)},
+                                 {"cavity_radius", number(s.cavity_radius())},
+                                 {"note", "temperature is inf where the density is 0 (the centre, or below 1e-308)"}},
+                                "r_over_R = r/R; density = rho/rho0; velocity = u/Rdot; pressure = p/(rho0 Rdot^2); "
+                                "temperature = T/Rdot^2 with T = p/(n Z), k_B = m = 1");
   text += "r_over_R,density,velocity,pressure,temperature\n";
   for (const hydro::TvnsPoint& p : points) {
     if (!(std::isfinite(p.density) && std::isfinite(p.velocity) && std::isfinite(p.pressure)))
@@ -154,7 +161,9 @@ void run(const TvnsOptions& options) {
   if (!options.profile.empty()) write_profile(options.profile, s, points);
 
   if (options.format == Format::json) {
-    const auto finite_or_null = [](double value) { return std::isfinite(value) ? common::Json(value) : common::Json(); };
+    const auto finite_or_null = [](double value) {
+      return std::isfinite(value) ? common::Json(value) : common::Json();
+    };
     common::Json document = {{"d", config.d},
                              {"gamma", s.gamma()},
                              {"eos", hydro::to_string(config.eos)},
@@ -220,27 +229,31 @@ void add_tvns_command(CLI::App& app) {
       "tvns", "Exact Taylor-von Neumann-Sedov blast: A_d of Eq. (1) with its error, and the profile at any r/R");
   command->add_option("--d", options->d, "Spatial dimension d (integer, 1 planar, 2 cylindrical, 3 spherical)")
       ->capture_default_str();
-  command->add_option("--gamma", options->gamma,
-                      "Adiabatic index gamma in [1.001, 1000] (dimensionless, ideal EOS only; default 0 means 1 + 2/d)")
+  command
+      ->add_option("--gamma", options->gamma,
+                   "Adiabatic index gamma in [1.001, 1000] (dimensionless, ideal EOS only; default 0 means 1 + 2/d)")
       ->capture_default_str();
-  command->add_option("--eos", options->eos,
-                      "Equation of state: ideal, henderson (hard discs, d = 2) or carnahan-starling (hard spheres, d = 3)")
+  command
+      ->add_option("--eos", options->eos,
+                   "Equation of state: ideal, henderson (hard discs, d = 2) or carnahan-starling (hard spheres, d = 3)")
       ->capture_default_str();
-  command->add_option("--phi", options->phi,
-                      "Ambient packing fraction phi (dimensionless; hard-particle EOS only: henderson (0, 0.89286), "
-                      "carnahan-starling (0, 0.72042))")
+  command
+      ->add_option("--phi", options->phi,
+                   "Ambient packing fraction phi (dimensionless; hard-particle EOS only: henderson (0, 0.89286), "
+                   "carnahan-starling (0, 0.72042))")
       ->capture_default_str();
   command->add_option("--tolerance", options->tolerance, "Requested relative accuracy of A_d (1e-14..1e-3)")
       ->capture_default_str();
   command->add_option("--profile", options->profile,
                       "Write the profile to this CSV file (r/R, rho/rho0, u/Rdot, p/(rho0 Rdot^2), T/Rdot^2); "
                       "default: no file");
-  auto* points_option = command->add_option("--points", options->points,
-                                            "Profile points r/R = i/N, i = 1..N (integer N >= 1)")
-                            ->capture_default_str();
-  command->add_option("--at", options->at,
-                      "Evaluate the profile exactly at these r/R in [0, 1], comma-separated (printed, and written "
-                      "to --profile if given); default: none")
+  auto* points_option =
+      command->add_option("--points", options->points, "Profile points r/R = i/N, i = 1..N (integer N >= 1)")
+          ->capture_default_str();
+  command
+      ->add_option("--at", options->at,
+                   "Evaluate the profile exactly at these r/R in [0, 1], comma-separated (printed, and written "
+                   "to --profile if given); default: none")
       ->excludes(points_option);
   add_format_option(*command, options->format);
   command->callback([options] { run(*options); });

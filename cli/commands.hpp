@@ -1,9 +1,8 @@
 #pragma once
 // One registration function per subcommand (cli/cmd_<name>.cpp), called once by main().
 // Each maps flags to its module's Config, calls run_<x>() and writes files and the summary.
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 #include "common/output.hpp"
 
@@ -21,11 +20,9 @@ enum class Format { table, json };
 
 /// Adds `--format table|json` (default table) to a subcommand.
 inline CLI::Option* add_format_option(CLI::App& command, Format& format) {
-  return command
-      .add_option("--format", format, "Format of the stdout summary: table or json (default table)")
+  return command.add_option("--format", format, "Format of the stdout summary: table or json (default table)")
       ->transform(CLI::CheckedTransformer(
-                      std::map<std::string, Format>{{"table", Format::table}, {"json", Format::json}},
-                      CLI::ignore_case)
+                      std::map<std::string, Format>{{"table", Format::table}, {"json", Format::json}}, CLI::ignore_case)
                       .description(""))
       ->type_name("table|json")
       ->default_str("table");

@@ -1,11 +1,11 @@
 // coldblast: one binary, one subcommand per flow. Exit codes: 0 success, 1 runtime failure,
 // 2 usage or parameter error, 3 a comparison verdict of "fail" (coldblast compare).
+#include <gsl/gsl_errno.h>
+
 #include <cstdio>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
-
-#include <gsl/gsl_errno.h>
 
 #include "cli/commands.hpp"
 #include "coldblast/build_info.hpp"
@@ -14,7 +14,9 @@
 #endif
 
 namespace coldblast::cli {
-void print_json(const common::Json& document) { std::cout << document.dump(2) << '\n'; }
+void print_json(const common::Json& document) {
+  std::cout << document.dump(2) << '\n';
+}
 }  // namespace coldblast::cli
 
 int main(int argc, char** argv) {
@@ -28,10 +30,10 @@ int main(int argc, char** argv) {
   gsl_set_error_handler_off();  // GSL aborts by default; every status is checked instead
   common::set_command_line(argc, argv);
 
-  CLI::App app{"coldblast: theory, hydrodynamics and molecular dynamics of a blast in a "
-               "zero-temperature hard-sphere gas (units: m = 1, k_B = 1, a = particle radius)"};
-  app.set_version_flag("--version", std::string("coldblast ") + common::version + " (" +
-                                        common::git_commit + ")");
+  CLI::App app{
+      "coldblast: theory, hydrodynamics and molecular dynamics of a blast in a "
+      "zero-temperature hard-sphere gas (units: m = 1, k_B = 1, a = particle radius)"};
+  app.set_version_flag("--version", std::string("coldblast ") + common::version + " (" + common::git_commit + ")");
   app.require_subcommand(1);
   cli::add_theory_command(app);
   cli::add_md_command(app);

@@ -1,9 +1,10 @@
 #include "common/output.hpp"
 
+#include <unistd.h>
+
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
-#include <unistd.h>
 
 #include "coldblast/build_info.hpp"
 
@@ -25,7 +26,9 @@ void set_command_line(int argc, const char* const* argv) {
   command_line_storage() = line;
 }
 
-const std::string& command_line() { return command_line_storage(); }
+const std::string& command_line() {
+  return command_line_storage();
+}
 
 void write_file_atomic(const std::filesystem::path& path, const std::string& content) {
   namespace fs = std::filesystem;

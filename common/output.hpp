@@ -2,11 +2,10 @@
 // Output plumbing shared by every module: atomic file writes (nothing is ever half-written),
 // commented provenance headers for CSV/TSV files, and the JSON type used for summaries.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace coldblast::common {
 

@@ -19,29 +19,28 @@ std::string format_number(double value) {
   const auto shortest = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific);
   int digits = 0;
   for (const char* c = buffer; c != shortest.ptr && *c != 'e'; ++c) digits += *c >= '0' && *c <= '9';
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, std::max(6, digits));
+  const auto end =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, std::max(6, digits));
   return std::string(buffer, end.ptr);
 }
 
-void require_in_range(const std::string& name, double value, double lo, double hi, Bound lo_bound,
-                      Bound hi_bound, const std::string& context) {
+void require_in_range(const std::string& name, double value, double lo, double hi, Bound lo_bound, Bound hi_bound,
+                      const std::string& context) {
   const bool above = lo_bound == Bound::open ? value > lo : value >= lo;
   const bool below = hi_bound == Bound::open ? value < hi : value <= hi;
   if (std::isfinite(value) && above && below) return;
-  const std::string range = std::string(lo_bound == Bound::open ? "(" : "[") + format_number(lo) +
-                            ", " + format_number(hi) + (hi_bound == Bound::open ? ")" : "]");
+  const std::string range = std::string(lo_bound == Bound::open ? "(" : "[") + format_number(lo) + ", " +
+                            format_number(hi) + (hi_bound == Bound::open ? ")" : "]");
   throw std::invalid_argument(name + " = " + format_number(value) + " is outside " + range +
                               (context.empty() ? "" : " " + context));
 }
 
 void require_integer_in_range(const std::string& name, long long value, long long lo, long long hi,
-                      const std::string& context) {
+                              const std::string& context) {
   if (value >= lo && value <= hi) return;
-  const std::string hi_text =
-      hi == std::numeric_limits<long long>::max() ? "inf" : std::to_string(hi);
-  throw std::invalid_argument(name + " = " + std::to_string(value) + " is outside [" +
-                              std::to_string(lo) + ", " + hi_text + "]" +
-                              (context.empty() ? "" : " " + context));
+  const std::string hi_text = hi == std::numeric_limits<long long>::max() ? "inf" : std::to_string(hi);
+  throw std::invalid_argument(name + " = " + std::to_string(value) + " is outside [" + std::to_string(lo) + ", " +
+                              hi_text + "]" + (context.empty() ? "" : " " + context));
 }
 
 }  // namespace coldblast::common

@@ -25,8 +25,8 @@ struct Bin {
 };
 
 std::map<double, std::vector<Bin>> distribution_by_time(const CsvTable& table) {
-  const std::size_t t = table.column("t"), r = table.column("r"), p = table.column("p"),
-                    e = table.column("p_stderr"), lo = table.column("r_lo"), hi = table.column("r_hi");
+  const std::size_t t = table.column("t"), r = table.column("r"), p = table.column("p"), e = table.column("p_stderr"),
+                    lo = table.column("r_lo"), hi = table.column("r_hi");
   std::map<double, std::vector<Bin>> by_time;
   for (const auto& row : table.rows) by_time[row[t]].push_back({row[r], row[p], row[e], row[hi] - row[lo]});
   return by_time;
@@ -106,8 +106,10 @@ std::optional<DistributionFit> fit_impurity_distribution(const RunData& run) {
   const double g = (std::sqrt(5.0) - 1) / 2;
   for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
     const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    if (cost(std::exp(x1)) < cost(std::exp(x2))) hi = x2;
-    else lo = x1;
+    if (cost(std::exp(x1)) < cost(std::exp(x2)))
+      hi = x2;
+    else
+      lo = x1;
   }
   fit.b_fit = std::exp(0.5 * (lo + hi));
   fit.bins = static_cast<int>(bins.size());
@@ -115,7 +117,8 @@ std::optional<DistributionFit> fit_impurity_distribution(const RunData& run) {
   double jacobian_sq = 0;
   for (const auto& bin : bins) {
     const double dm = (theory::radial_position_density(run.d, bin.r, (fit.b_fit + h) * scale) -
-                       theory::radial_position_density(run.d, bin.r, (fit.b_fit - h) * scale)) / (2 * h);
+                       theory::radial_position_density(run.d, bin.r, (fit.b_fit - h) * scale)) /
+                      (2 * h);
     jacobian_sq += dm * dm;
   }
   fit.b_fit_error = jacobian_sq > 0 ? std::sqrt(rss / std::max(fit.bins - 1, 1) / jacobian_sq) : INFINITY;
@@ -141,15 +144,16 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
          << "set title 'Impurity radial distribution (Fig. 3 style): fitted b = "
          << common::format_number(std::round(fit.b_fit * 1000) / 1000) << " ± "
          << common::format_number(std::round(fit.b_fit_error * 1000) / 1000) << ", R_{imp}/t^{"
-         << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time) << "} = "
-         << common::format_number(std::round(fit.b_direct * 1000) / 1000) << "'\n";
+         << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time)
+         << "} = " << common::format_number(std::round(fit.b_direct * 1000) / 1000) << "'\n";
   std::string plot = "plot ";
   for (std::size_t i = first; i < times.size(); ++i) {
     const double scale = std::pow(times[i], fit.spread);
-    for (const auto& bin : by_time.at(times[i])) data << bin.r / scale << ' ' << bin.p * scale << ' ' << bin.error * scale << '\n';
+    for (const auto& bin : by_time.at(times[i]))
+      data << bin.r / scale << ' ' << bin.p * scale << ' ' << bin.error * scale << '\n';
     data << "\n\n";
-    plot += "'p_imp.dat' index " + std::to_string(i - first) + " u 1:2:3 w yerrorbars pt 7 ps 0.6 t 't = " +
-            common::format_number(std::round(times[i] * 10) / 10) + "', ";
+    plot += "'p_imp.dat' index " + std::to_string(i - first) +
+            " u 1:2:3 w yerrorbars pt 7 ps 0.6 t 't = " + common::format_number(std::round(times[i] * 10) / 10) + "', ";
   }
   // Eq. (39) / its d-dimensional form with R_imp = b t^spread, in scaled variables.
   std::ostringstream model;
@@ -185,7 +189,8 @@ std::string profile_figure(const RunData& run, const fs::path& folder) {
                             : INFINITY;
   for (const auto& row : table.rows)
     if (row[ct] == t_last && row[hi] <= region)
-      md_data << 0.5 * (row[lo] + row[hi]) << ' ' << row[cn] << ' ' << row[cu] / Rdot << ' ' << row[cT] / (Rdot * Rdot) << '\n';
+      md_data << 0.5 * (row[lo] + row[hi]) << ' ' << row[cn] << ' ' << row[cu] / Rdot << ' ' << row[cT] / (Rdot * Rdot)
+              << '\n';
   const hydro::TvnsSolution exact = hydro::solve_tvns({run.d, 0.0, hydro::Eos::ideal, 0.0, 1e-10});
   for (int i = 1; i <= 400; ++i) {
     const hydro::TvnsPoint p = exact.at(i / 400.0);
@@ -198,8 +203,8 @@ std::string profile_figure(const RunData& run, const fs::path& folder) {
   const double phi = run.summary.contains("phi") ? run.summary["phi"].get<double>() : 0.0;
   const bool dense = phi > 0;
   if (dense) {
-    const hydro::TvnsSolution solution = hydro::solve_tvns(
-        {run.d, 0.0, run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling, phi, 1e-8});
+    const hydro::TvnsSolution solution =
+        hydro::solve_tvns({run.d, 0.0, run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling, phi, 1e-8});
     std::vector<double> x;
     for (int i = 1; i <= 400; ++i) x.push_back(i / 400.0);
     for (const auto& p : solution.profile(x))
@@ -229,19 +234,27 @@ std::string profile_figure(const RunData& run, const fs::path& folder) {
       curves += ", 'profiles_tvns_phi.dat' u 1:" + std::to_string(column) + " w l lw 2 dt 2 t 'TvNS, " + eos_name +
                 " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000) + "'";
     if (have_ns)
-      curves += ", 'profiles_ns.dat' u 1:" + std::to_string(column) + " w l lw 2 dt 4 lc rgb 'black' t 'Navier-Stokes, R/{/Symbol l} = " +
+      curves += ", 'profiles_ns.dat' u 1:" + std::to_string(column) +
+                " w l lw 2 dt 4 lc rgb 'black' t 'Navier-Stokes, R/{/Symbol l} = " +
                 common::format_number(std::round(x_md * 10) / 10) + "'";
     return curves;
   };
   common::write_file_atomic(folder / "profiles_md.dat", md_data.str());
   common::write_file_atomic(folder / "profiles_tvns.dat", exact_data.str());
   std::ostringstream script;
-  script << "set terminal pngcairo size 1500,460 font 'Sans,11'\nset output 'profiles.png'\nset multiplot layout 1,3 title "
-         << "'MD radial profiles at t = " << common::format_number(t_last) << " against the exact TvNS solution and the Navier-Stokes blast'\n"
+  script << "set terminal pngcairo size 1500,460 font 'Sans,11'\nset output 'profiles.png'\nset multiplot layout 1,3 "
+            "title "
+         << "'MD radial profiles at t = " << common::format_number(t_last)
+         << " against the exact TvNS solution and the Navier-Stokes blast'\n"
          << "set xlabel 'r/R'\nset xrange [0:1.5]\nset key top left Left reverse font ',10'\n"
-         << "set ylabel 'n/n_{/Symbol \\245}'\nplot 'profiles_md.dat' u 1:2 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:2 w l lw 2 t 'TvNS, ideal'" << dense_curve(2) << "\n"
-         << "set ylabel 'u/(dR/dt)'\nplot 'profiles_md.dat' u 1:3 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:3 w l lw 2 t 'TvNS, ideal'" << dense_curve(3) << "\n"
-         << "set ylabel 'T/(dR/dt)^2'\nset logscale y\nset yrange [1e-3:*]\nplot 'profiles_md.dat' u 1:($4>0?$4:1/0) w p pt 7 t 'MD', "
+         << "set ylabel 'n/n_{/Symbol \\245}'\nplot 'profiles_md.dat' u 1:2 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:2 "
+            "w l lw 2 t 'TvNS, ideal'"
+         << dense_curve(2) << "\n"
+         << "set ylabel 'u/(dR/dt)'\nplot 'profiles_md.dat' u 1:3 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:3 w l lw 2 "
+            "t 'TvNS, ideal'"
+         << dense_curve(3) << "\n"
+         << "set ylabel 'T/(dR/dt)^2'\nset logscale y\nset yrange [1e-3:*]\nplot 'profiles_md.dat' u 1:($4>0?$4:1/0) w "
+            "p pt 7 t 'MD', "
          << "'profiles_tvns.dat' u 1:($4>0?$4:1/0) w l lw 2 t 'TvNS, ideal'" << dense_curve(4) << "\nunset multiplot\n";
   common::write_file_atomic(folder / "profiles.gp", script.str());
   run_gnuplot(folder, "profiles.gp");
@@ -283,8 +296,8 @@ std::string snapshot_figure(const RunData& run, const fs::path& folder) {
       (row[cm] > 0 ? moving : resting) << row[cx] << ' ' << row[cy] << '\n';
     }
     if (have_trajectories) {
-      const std::size_t id = trajectories.column("id"), ct = trajectories.column("t"),
-                        tx = trajectories.column("x"), ty = trajectories.column("y");
+      const std::size_t id = trajectories.column("id"), ct = trajectories.column("t"), tx = trajectories.column("x"),
+                        ty = trajectories.column("y");
       double previous = -1;
       for (const auto& row : trajectories.rows) {
         if (row[ct] > t) continue;
@@ -317,7 +330,8 @@ std::string snapshot_figure(const RunData& run, const fs::path& folder) {
 
 }  // namespace
 
-ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit, const fs::path& folder) {
+ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
+                                 const fs::path& folder) {
   ExtraFigures figures;
   if (fit) figures.distribution = distribution_figure(run, *fit, folder);
   if (fs::exists(run.directory / "profiles.csv") && run.summary.contains("lambda"))

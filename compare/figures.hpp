@@ -14,10 +14,10 @@ namespace coldblast::compare {
 /// of Eq. (35) [Prt-d] and R_imp = b t^(spread) (in 2D exactly Eq. (39) [eq:pr], the paper's Fig. 3).
 struct DistributionFit {
   double t = 0;
-  double spread = 0;           ///< exact R_imp time exponent (2D: 2/5) used to scale r
+  double spread = 0;                  ///< exact R_imp time exponent (2D: 2/5) used to scale r
   double b_fit = 0, b_fit_error = 0;  ///< least-squares b and its 1-sigma error (Δχ² = 1)
-  double b_direct = 0;         ///< R_imp(t)/t^spread from the R_imp observable (paper: 1.71)
-  double residual_rms = 0;     ///< root-mean-square residual of p (1/length)
+  double b_direct = 0;                ///< R_imp(t)/t^spread from the R_imp observable (paper: 1.71)
+  double residual_rms = 0;            ///< root-mean-square residual of p (1/length)
   int bins = 0;
   /// Shape tests of the Gaussian (docs/verification.md, Campaign 1): chi^2 per degree of freedom
   /// of the fitted Gaussian against the per-bin standard errors (bins with an error > 0; NaN if

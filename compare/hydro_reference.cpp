@@ -61,8 +61,8 @@ double HydroReference::exponent(const std::string& observable, double R_over_lam
     return (1 - w) * collision_exponent_[i - 1] + w * collision_exponent_[i];
   }
   const hydro::RunningExponents e = result_.exponents_at(R_over_lambda);
-  if (observable == "R_imp" || observable == "H") return e.H;  // R_imp ~ H, Eq. (6) [R-imp]
-  if (observable == "V_imp") return 0.5 * e.T0;                // V_imp ~ √T0, Sec. III
+  if (observable == "R_imp" || observable == "H") return e.H;             // R_imp ~ H, Eq. (6) [R-imp]
+  if (observable == "V_imp") return 0.5 * e.T0;                           // V_imp ~ √T0, Sec. III
   if (observable == "u_imp" || observable == "u_flow") return e.H - 1.0;  // u_imp ~ R_imp/t, Eq. (22)
   if (observable == "n0") return e.n0;
   if (observable == "T0") return e.T0;

@@ -39,7 +39,8 @@ JackknifeResult jackknife(const BlockSeries& series,
 std::vector<RunningExponent> running_exponents(const BlockSeries& series) {
   const std::size_t K = series.time_count();
   if (K < 2)
-    throw std::invalid_argument("observable " + series.observable + ": a running exponent needs at least 2 recording times");
+    throw std::invalid_argument("observable " + series.observable +
+                                ": a running exponent needs at least 2 recording times");
   auto estimator = [&](const std::vector<double>& A) {
     Eigen::VectorXd alpha(static_cast<Eigen::Index>(K - 1));
     for (std::size_t k = 0; k + 1 < K; ++k)

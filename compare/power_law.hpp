@@ -4,10 +4,9 @@
 // grid) and least-squares exponents over a window, all with delete-one-block jackknife errors.
 // Errors come from the realizations themselves, never from the scatter of the curve, because
 // successive times of one realization are correlated.
+#include <Eigen/Dense>
 #include <functional>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "compare/run_data.hpp"
 

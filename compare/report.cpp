@@ -1,12 +1,13 @@
 #include "compare/report.hpp"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "common/validate.hpp"
 #include "compare/figures.hpp"
@@ -29,11 +30,12 @@ common::Json verdict_json(const CompareResult& result) {
                            {"alpha_measured", v.alpha_measured},
                            {"alpha_error", v.alpha_error},
                            {"t_measured", v.t_measured},
-                           {"window", {{"exponent", v.window.exponent},
-                                       {"error", v.window.exponent_error},
-                                       {"t_first", v.window.t_first},
-                                       {"t_last", v.window.t_last},
-                                       {"points", v.window.points}}},
+                           {"window",
+                            {{"exponent", v.window.exponent},
+                             {"error", v.window.exponent_error},
+                             {"t_first", v.window.t_first},
+                             {"t_last", v.window.t_last},
+                             {"points", v.window.points}}},
                            {"deviation_sigma", v.deviation_sigma},
                            {"tolerance", v.tolerance},
                            {"pass", v.pass},
@@ -56,8 +58,8 @@ std::string running_exponents_csv(const CompareResult& result) {
       << "t,t_next,observable,alpha,error,alpha_theory\n";
   for (const auto& v : result.observables)
     for (const auto& r : v.running)
-      out << format_number(r.t) << ',' << format_number(r.t_next) << ',' << v.name << ','
-          << format_number(r.alpha) << ',' << format_number(r.error) << ',' << format_number(v.alpha_theory) << '\n';
+      out << format_number(r.t) << ',' << format_number(r.t_next) << ',' << v.name << ',' << format_number(r.alpha)
+          << ',' << format_number(r.error) << ',' << format_number(v.alpha_theory) << '\n';
   return out.str();
 }
 
@@ -116,28 +118,28 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
     const double x0 = static_cast<double>(i % columns) * w;
     const double y0 = 1.0 - static_cast<double>(i / columns + 1) * h;
     const double t_last = s.t.back(), a_last = values.back();
-    script << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << h << "\n"
-           << "set logscale xy\nset format x '10^{%L}'\nset xlabel 't (MD time units: m = 1, lengths as in the scene)'\n"
-           << "set ylabel '" << label(v.name) << "'\nset key " << (v.alpha_theory > 0 ? "bottom right" : "bottom left")
-           << " font ',9'\n"
-           << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name) << ": {/Symbol a}_T = "
-           << v.alpha_theory_rational << ", {/Symbol a}_S = "
-           << (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
-                   ? format_number(std::round(v.alpha_measured * 1000) / 1000) + " ± " +
-                         format_number(std::round(v.alpha_error * 1000) / 1000)
-                   : std::string("undefined (a mean <= 0)"))
-           << "'\n"
-           << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t 'MD', "
-           << a_last << "*(x/" << t_last << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{"
-           << v.alpha_theory_rational << "}'\n";
+    script
+        << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << h << "\n"
+        << "set logscale xy\nset format x '10^{%L}'\nset xlabel 't (MD time units: m = 1, lengths as in the scene)'\n"
+        << "set ylabel '" << label(v.name) << "'\nset key " << (v.alpha_theory > 0 ? "bottom right" : "bottom left")
+        << " font ',9'\n"
+        << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name)
+        << ": {/Symbol a}_T = " << v.alpha_theory_rational << ", {/Symbol a}_S = "
+        << (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
+                ? format_number(std::round(v.alpha_measured * 1000) / 1000) + " ± " +
+                      format_number(std::round(v.alpha_error * 1000) / 1000)
+                : std::string("undefined (a mean <= 0)"))
+        << "'\n"
+        << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t 'MD', " << a_last << "*(x/" << t_last
+        << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{" << v.alpha_theory_rational << "}'\n";
     // Inset: running exponent.
     const bool rising = v.alpha_theory > 0;
     // Rising curves leave the top left empty, falling ones the top right.
     script << "reset\nset origin " << x0 + (rising ? 0.14 : 0.52) * w << "," << y0 + 0.52 * h << "\nset size "
            << 0.42 * w << "," << 0.34 * h << "\nset logscale x\nset format x '10^{%L}'\nset tics font ',8'\n"
            << "set ylabel '{/Symbol a}(t)' font ',9' offset 1.5,0\nunset key\n"
-           << "plot '" << v.name << "_alpha.dat' u 1:2:3 w yerrorbars pt 7 ps 0.4 lc rgb '#d62728', "
-           << v.alpha_theory << " w l dt 2 lc rgb 'black'\n";
+           << "plot '" << v.name << "_alpha.dat' u 1:2:3 w yerrorbars pt 7 ps 0.4 lc rgb '#d62728', " << v.alpha_theory
+           << " w l dt 2 lc rgb 'black'\n";
   }
   script << "unset multiplot\n";
   common::write_file_atomic(folder / "observables.gp", script.str());
@@ -149,25 +151,29 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
   std::ostringstream md;
   md << "# coldblast comparison: MD against " << to_string(result.against) << "\n\n"
      << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
-     << ", recorded times up to t = " << format_number(result.until)
-     << ". Verdict: **" << (result.pass ? "PASS" : "FAIL") << "** (tolerance: " << format_number(result.sigma)
-     << " sigma";
+     << ", recorded times up to t = " << format_number(result.until) << ". Verdict: **"
+     << (result.pass ? "PASS" : "FAIL") << "** (tolerance: " << format_number(result.sigma) << " sigma";
   if (result.against != Reference::paper) md << " + allowance " << format_number(result.allowance);
   md << "; errors: delete-one-block jackknife over realizations).\n\n"
      << "| observable | alpha_T | reference | alpha_S (last two times) | window fit | deviation / sigma | verdict |\n"
      << "|---|---|---|---|---|---|---|\n";
   char buffer[512];
   for (const auto& v : result.observables) {
-    // Undefined exponents (an ensemble mean <= 0 at some time, e.g. u_flow lost in noise) are named, not printed as nan.
+    // Undefined exponents (an ensemble mean <= 0 at some time, e.g. u_flow lost in noise) are named, not printed as
+    // nan.
     const auto exponent = [](double alpha, double error) {
       char text[64];
-      if (std::isfinite(alpha) && std::isfinite(error)) std::snprintf(text, sizeof text, "%.4f ± %.4f", alpha, error);
-      else std::snprintf(text, sizeof text, "undefined (a mean <= 0)");  // also when only a jackknife mean is
+      if (std::isfinite(alpha) && std::isfinite(error))
+        std::snprintf(text, sizeof text, "%.4f ± %.4f", alpha, error);
+      else
+        std::snprintf(text, sizeof text, "undefined (a mean <= 0)");  // also when only a jackknife mean is
       return std::string(text);
     };
     char deviation[32];
-    if (std::isfinite(v.deviation_sigma)) std::snprintf(deviation, sizeof deviation, "%+.2f", v.deviation_sigma);
-    else std::snprintf(deviation, sizeof deviation, "-");
+    if (std::isfinite(v.deviation_sigma))
+      std::snprintf(deviation, sizeof deviation, "%+.2f", v.deviation_sigma);
+    else
+      std::snprintf(deviation, sizeof deviation, "-");
     std::snprintf(buffer, sizeof buffer, "| %s | %s (%.4f) | %.4f%s | %s (t = %s) | %s (%d pts) | %s | %s |\n",
                   v.name.c_str(), v.alpha_theory_rational.c_str(), v.alpha_theory, v.alpha_reference,
                   v.alpha_reference_error > 0 ? (" ± " + format_number(v.alpha_reference_error)).c_str() : "",
@@ -180,9 +186,10 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
   if (fit) {
     md << "\n## Impurity radial distribution (paper Fig. 3)\n\nAt t = " << format_number(fit->t)
        << ", a least-squares fit of the Gaussian radial density (Eq. (39) in 2D, Eq. (35) in general) with R_imp = b t^"
-       << format_number(fit->spread) << " gives b = " << format_number(fit->b_fit) << " ± " << format_number(fit->b_fit_error)
-       << " (unweighted least squares, rms residual " << format_number(fit->residual_rms) << " over " << fit->bins
-       << " bins); directly, R_imp/t^" << format_number(fit->spread) << " = " << format_number(fit->b_direct)
+       << format_number(fit->spread) << " gives b = " << format_number(fit->b_fit) << " ± "
+       << format_number(fit->b_fit_error) << " (unweighted least squares, rms residual "
+       << format_number(fit->residual_rms) << " over " << fit->bins << " bins); directly, R_imp/t^"
+       << format_number(fit->spread) << " = " << format_number(fit->b_direct)
        << ". The paper reports b = 1.75 (fit) and 1.71 (direct) at t = 4000.\n";
     char shape[400];
     std::snprintf(shape, sizeof shape,
@@ -195,8 +202,7 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
     md << shape;
     if (!extra.distribution.empty()) md << "\n![p_imp collapse](figures/" << extra.distribution << ")\n";
   }
-  if (!extra.snapshot.empty())
-    md << "\n## Snapshots (paper Fig. 1)\n\n![snapshot](figures/" << extra.snapshot << ")\n";
+  if (!extra.snapshot.empty()) md << "\n## Snapshots (paper Fig. 1)\n\n![snapshot](figures/" << extra.snapshot << ")\n";
   if (!extra.profiles.empty())
     md << "\n## Radial profiles against TvNS\n\n![profiles](figures/" << extra.profiles << ")\n";
   md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
@@ -222,14 +228,20 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
     }
     if (fit)
       common::write_file_atomic(staging / "distribution_fit.json",
-                                common::Json{{"t", fit->t}, {"spread", fit->spread}, {"b_fit", fit->b_fit},
-                                             {"b_fit_error", fit->b_fit_error}, {"b_direct", fit->b_direct},
-                                             {"residual_rms", fit->residual_rms}, {"bins", fit->bins},
-                                             {"chi2_per_dof", fit->chi2_per_dof}, {"weighted_bins", fit->weighted_bins},
+                                common::Json{{"t", fit->t},
+                                             {"spread", fit->spread},
+                                             {"b_fit", fit->b_fit},
+                                             {"b_fit_error", fit->b_fit_error},
+                                             {"b_direct", fit->b_direct},
+                                             {"residual_rms", fit->residual_rms},
+                                             {"bins", fit->bins},
+                                             {"chi2_per_dof", fit->chi2_per_dof},
+                                             {"weighted_bins", fit->weighted_bins},
                                              {"moment_ratio", fit->moment_ratio},
                                              {"moment_ratio_error", fit->moment_ratio_error},
                                              {"moment_ratio_gaussian", fit->moment_ratio_gaussian}}
-                                        .dump(2) + "\n");
+                                        .dump(2) +
+                                    "\n");
     common::write_file_atomic(staging / "report.md", markdown(result, config.figures, fit, extra));
   } catch (...) {
     fs::remove_all(staging);

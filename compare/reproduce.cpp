@@ -87,7 +87,8 @@ std::string top_report(const ReproduceResult& r) {
      << "The paper prints A_3 = 0.072401066; see docs/verification.md.\n\n"
      << "## Navier–Stokes core (d = 2, Chapman–Enskog κ)\n\nRunning time exponents at R/λ = "
      << common::format_number(r.hydro["R_over_lambda"].get<double>()) << " (relative energy error "
-     << common::format_number(r.hydro["energy_error"].get<double>()) << "):\n\n| quantity | measured | theory |\n|---|---|---|\n";
+     << common::format_number(r.hydro["energy_error"].get<double>())
+     << "):\n\n| quantity | measured | theory |\n|---|---|---|\n";
   for (const char* name : {"H", "n0", "T0", "R"}) {
     const auto& e = r.hydro["exponents"][name];
     char row[160];
@@ -96,16 +97,18 @@ std::string top_report(const ReproduceResult& r) {
     md << row;
   }
   md << "\n"
-     << "## MD ensemble\n\n" << r.md["realizations"] << " realizations of the paper's 2D scene, "
-     << r.md["collisions_total"] << " collisions in " << r.md["wall_seconds"] << " s; largest relative energy error "
-     << r.md["energy_error_max"] << ". Output: `md/`.\n\n";
+     << "## MD ensemble\n\n"
+     << r.md["realizations"] << " realizations of the paper's 2D scene, " << r.md["collisions_total"]
+     << " collisions in " << r.md["wall_seconds"] << " s; largest relative energy error " << r.md["energy_error_max"]
+     << ". Output: `md/`.\n\n";
   const std::pair<const char*, const CompareResult*> comparisons[] = {
       {"theory", &r.against_theory}, {"paper", &r.against_paper}, {"hydro", &r.against_hydro}};
   for (const auto& [name, result] : comparisons) {
     md << "## Against " << name << ": " << (result->pass ? "PASS" : "FAIL") << "\n\n"
        << "| observable | alpha_T | reference | alpha_S (last two times) | deviation / sigma | verdict |\n"
-       << "|---|---|---|---|---|---|\n" << verdict_rows(*result)
-       << "\nFull report: [report-" << name << "/report.md](report-" << name << "/report.md)\n\n";
+       << "|---|---|---|---|---|---|\n"
+       << verdict_rows(*result) << "\nFull report: [report-" << name << "/report.md](report-" << name
+       << "/report.md)\n\n";
   }
   return md.str();
 }
@@ -132,11 +135,15 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   r.A3_error = a3.A_error();
   r.A2_md = a2_md.A();
   r.A2_md_error = a2_md.A_error();
-  common::write_file_atomic(config.out / "tvns.json",
-                            common::Json{{"A_2", r.A2}, {"A_2_error", r.A2_error}, {"A_3", r.A3},
-                                         {"A_3_error", r.A3_error}, {"phi_md", r.phi_md},
-                                         {"A_2_phi_md", r.A2_md}, {"A_2_phi_md_error", r.A2_md_error}}
-                                    .dump(2) + "\n");
+  common::write_file_atomic(config.out / "tvns.json", common::Json{{"A_2", r.A2},
+                                                                   {"A_2_error", r.A2_error},
+                                                                   {"A_3", r.A3},
+                                                                   {"A_3_error", r.A3_error},
+                                                                   {"phi_md", r.phi_md},
+                                                                   {"A_2_phi_md", r.A2_md},
+                                                                   {"A_2_phi_md_error", r.A2_md_error}}
+                                                              .dump(2) +
+                                                          "\n");
 
   say(progress, "step 2/5: Navier–Stokes core run (d = 2, heat conduction, Chapman–Enskog kappa)");
   const double until = config.hydro_until > 0 ? config.hydro_until : (quick ? 1e4 : 1e6);
@@ -150,20 +157,21 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
     md_dir = config.md_run;
     r.md = read_run(md_dir).summary;
   } else {
-  say(progress, "step 3/5: MD ensemble of the paper's 2D scene");
-  scene.A_d = r.A2_md;
-  scene.seed = config.seed;
-  scene.realizations = config.realizations > 0 ? config.realizations : (quick ? 384 : 30000);
-  scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
-  md::RunOptions options;
-  options.threads = config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  options.progress = [&progress, total = scene.realizations](long long done, long long) {
-    if (progress && (done % std::max<long long>(1, total / 20) == 0 || done == total))
-      progress("  md: " + std::to_string(done) + "/" + std::to_string(total) + " realizations");
-  };
-  const md::BlastResult blast = md::run_blast(scene, options);
-  md::write_blast_outputs(blast, md_dir);
-  r.md = md::blast_summary(blast);
+    say(progress, "step 3/5: MD ensemble of the paper's 2D scene");
+    scene.A_d = r.A2_md;
+    scene.seed = config.seed;
+    scene.realizations = config.realizations > 0 ? config.realizations : (quick ? 384 : 30000);
+    scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
+    md::RunOptions options;
+    options.threads =
+        config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    options.progress = [&progress, total = scene.realizations](long long done, long long) {
+      if (progress && (done % std::max<long long>(1, total / 20) == 0 || done == total))
+        progress("  md: " + std::to_string(done) + "/" + std::to_string(total) + " realizations");
+    };
+    const md::BlastResult blast = md::run_blast(scene, options);
+    md::write_blast_outputs(blast, md_dir);
+    r.md = md::blast_summary(blast);
   }
 
   say(progress, "step 4/5: comparisons against theory, the paper's Table 1 and the Navier–Stokes prediction");
@@ -192,7 +200,8 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
 
 std::string table1_markdown(const ReproduceResult& r) {
   std::ostringstream md;
-  md << "| observable | α_T (theory) | paper α_S ± δα | coldblast MD α_S ± δα | MD vs paper (σ) | NS at the MD's R/λ | MD vs NS (σ) |\n"
+  md << "| observable | α_T (theory) | paper α_S ± δα | coldblast MD α_S ± δα | MD vs paper (σ) | NS at the MD's R/λ | "
+        "MD vs NS (σ) |\n"
      << "|---|---|---|---|---|---|---|\n";
   char row[400];
   for (std::size_t i = 0; i < r.against_paper.observables.size(); ++i) {
@@ -200,8 +209,8 @@ std::string table1_markdown(const ReproduceResult& r) {
     const auto& h = r.against_hydro.observables[i];
     std::snprintf(row, sizeof row, "| %s | %s | %.3f ± %.3f | %.3f ± %.3f (t = %.4g) | %+.1f | %.3f | %+.1f |\n",
                   p.name.c_str(), p.alpha_theory_rational.c_str(), p.alpha_reference, p.alpha_reference_error,
-                  p.alpha_measured, p.alpha_error, p.t_measured, p.deviation_sigma,
-                  h.alpha_reference, h.deviation_sigma);
+                  p.alpha_measured, p.alpha_error, p.t_measured, p.deviation_sigma, h.alpha_reference,
+                  h.deviation_sigma);
     md << row;
   }
   md << "\nMD: " << r.md["realizations"] << " realizations, seed " << r.md["seed"]

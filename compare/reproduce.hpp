@@ -20,20 +20,20 @@ ReproduceScale parse_scale(const std::string& text);
 struct ReproduceConfig {
   ReproduceScale scale = ReproduceScale::quick;
   std::filesystem::path out = "coldblast-reproduce";  ///< output directory (sub-folders per step)
-  int threads = 0;                 ///< MD worker threads; 0 = all hardware threads
-  std::uint64_t seed = 1;          ///< MD master seed
-  long long realizations = 0;      ///< MD realizations; 0 = the scale's default (quick 384, paper 30000)
-  double hydro_until = 0;          ///< NS run up to this R/λ; 0 = the scale's default (quick 1e4, paper 1e6)
-  bool figures = true;             ///< gnuplot figures in the reports
-  std::filesystem::path md_run;    ///< an existing `md run` directory of the paper scene to use instead of step 3
+  int threads = 0;                                    ///< MD worker threads; 0 = all hardware threads
+  std::uint64_t seed = 1;                             ///< MD master seed
+  long long realizations = 0;    ///< MD realizations; 0 = the scale's default (quick 384, paper 30000)
+  double hydro_until = 0;        ///< NS run up to this R/λ; 0 = the scale's default (quick 1e4, paper 1e6)
+  bool figures = true;           ///< gnuplot figures in the reports
+  std::filesystem::path md_run;  ///< an existing `md run` directory of the paper scene to use instead of step 3
   void validate() const;
 };
 
 struct ReproduceResult {
   double A2 = 0, A2_error = 0, A3 = 0, A3_error = 0;  ///< ideal gas, γ = 1 + 2/d
   double A2_md = 0, A2_md_error = 0, phi_md = 0;      ///< A_2 at the MD's packing fraction (Henderson)
-  common::Json hydro;                                  ///< final NS exponents beside theory
-  common::Json md;                                     ///< the MD summary.json
+  common::Json hydro;                                 ///< final NS exponents beside theory
+  common::Json md;                                    ///< the MD summary.json
   CompareResult against_theory, against_paper, against_hydro;
   std::filesystem::path out;
 };

@@ -73,7 +73,9 @@ double parse_double(const std::string& text, const std::string& where) {
 
 std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, const std::string& source) {
   // Collect (observable, block, t) -> (sum, count), then lay out dense arrays.
-  struct Cell { double sum, count; };
+  struct Cell {
+    double sum, count;
+  };
   std::map<std::string, std::map<long, std::map<double, Cell>>> cells;
   std::istringstream stream(text);
   std::string line;
@@ -91,9 +93,11 @@ std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, con
       header_seen = true;
       continue;
     }
-    if (fields.size() != 5) throw std::invalid_argument(where + ": expected 5 fields, found " + std::to_string(fields.size()));
+    if (fields.size() != 5)
+      throw std::invalid_argument(where + ": expected 5 fields, found " + std::to_string(fields.size()));
     const double block = parse_double(fields[0], where + " (block)");
-    if (block < 0 || block != std::floor(block)) throw std::invalid_argument(where + ": block must be a non-negative integer");
+    if (block < 0 || block != std::floor(block))
+      throw std::invalid_argument(where + ": block must be a non-negative integer");
     const double t = parse_double(fields[1], where + " (t)");
     transform_for(fields[2]);  // rejects unknown observables
     const double sum = parse_double(fields[3], where + " (sum)");
@@ -115,8 +119,8 @@ std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, con
     for (const auto& [block, by_time] : blocks) {
       std::vector<double> sums(series.t.size(), 0.0), counts(series.t.size(), 0.0);
       for (const auto& [t, cell] : by_time) {
-        const auto k = static_cast<std::size_t>(
-            std::lower_bound(series.t.begin(), series.t.end(), t) - series.t.begin());
+        const auto k =
+            static_cast<std::size_t>(std::lower_bound(series.t.begin(), series.t.end(), t) - series.t.begin());
         sums[k] = cell.sum;
         counts[k] = cell.count;
       }
@@ -165,7 +169,8 @@ CsvTable read_numeric_csv(const std::filesystem::path& path) {
 void truncate_run(RunData& run, double until) {
   for (auto& [name, series] : run.series) {
     const double limit = until * (1.0 + 1e-9);
-    const auto keep = static_cast<std::size_t>(std::upper_bound(series.t.begin(), series.t.end(), limit) - series.t.begin());
+    const auto keep =
+        static_cast<std::size_t>(std::upper_bound(series.t.begin(), series.t.end(), limit) - series.t.begin());
     if (keep < 2 || until > series.t.back() * (1.0 + 1e-9)) {
       std::ostringstream message;
       message.precision(10);
@@ -191,12 +196,16 @@ RunData read_run(const std::filesystem::path& directory) {
   } catch (const common::Json::exception& e) {
     throw std::invalid_argument(summary_path.string() + ": malformed JSON (" + e.what() + ")");
   }
-  const common::Json* scene = run.summary.contains("scene") && run.summary["scene"].is_object()
-                                  ? &run.summary["scene"] : nullptr;
-  if (run.summary.contains("d") && run.summary["d"].is_number_integer()) run.d = run.summary["d"].get<int>();
-  else if (scene && scene->contains("d") && (*scene)["d"].is_number_integer()) run.d = (*scene)["d"].get<int>();
-  else throw std::invalid_argument(summary_path.string() + ": no integer 'd' (top level or in 'scene')");
-  if (run.d < 1 || run.d > 3) throw std::invalid_argument(summary_path.string() + ": d = " + std::to_string(run.d) + " is outside [1, 3]");
+  const common::Json* scene =
+      run.summary.contains("scene") && run.summary["scene"].is_object() ? &run.summary["scene"] : nullptr;
+  if (run.summary.contains("d") && run.summary["d"].is_number_integer())
+    run.d = run.summary["d"].get<int>();
+  else if (scene && scene->contains("d") && (*scene)["d"].is_number_integer())
+    run.d = (*scene)["d"].get<int>();
+  else
+    throw std::invalid_argument(summary_path.string() + ": no integer 'd' (top level or in 'scene')");
+  if (run.d < 1 || run.d > 3)
+    throw std::invalid_argument(summary_path.string() + ": d = " + std::to_string(run.d) + " is outside [1, 3]");
   const auto blocks_path = directory / "blocks.csv";
   run.series = parse_blocks_csv(read_text(blocks_path), blocks_path.string());
   if (run.series.empty()) throw std::invalid_argument(blocks_path.string() + ": no data rows");

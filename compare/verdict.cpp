@@ -6,8 +6,8 @@
 
 #include "common/validate.hpp"
 #include "compare/hydro_reference.hpp"
-#include "theory/prefactors.hpp"
 #include "theory/exponents.hpp"
+#include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
 
@@ -20,9 +20,12 @@ Reference parse_reference(const std::string& text) {
 
 std::string to_string(Reference reference) {
   switch (reference) {
-    case Reference::theory: return "theory";
-    case Reference::paper: return "paper";
-    case Reference::hydro: return "hydro";
+    case Reference::theory:
+      return "theory";
+    case Reference::paper:
+      return "paper";
+    case Reference::hydro:
+      return "hydro";
   }
   throw std::logic_error("unknown Reference");
 }
@@ -46,13 +49,14 @@ PaperValue paper_table1(const std::string& observable) {
 }
 
 void CompareConfig::validate() const {
-  using common::require_in_range;
   using common::Bound;
+  using common::require_in_range;
   require_in_range("--sigma", sigma, 0.0, 10.0, Bound::open, Bound::closed);
   if (allowance >= 0) require_in_range("--allowance", allowance, 0.0, 1.0, Bound::closed, Bound::closed);
   require_in_range("--window-decades", window_decades, 0.0, 6.0, Bound::open, Bound::closed);
   if (until != 0.0 && !(until > 0.0 && std::isfinite(until)))
-    throw std::invalid_argument("--until = " + std::to_string(until) + " must be a positive finite time (0: all times)");
+    throw std::invalid_argument("--until = " + std::to_string(until) +
+                                " must be a positive finite time (0: all times)");
   common::require_integer_in_range("--hydro-cells", hydro_cells, 16, 100000);
   for (const auto& name : observables) {
     const auto& known = table1_observables();
@@ -65,9 +69,12 @@ void CompareConfig::validate() const {
 double CompareConfig::effective_allowance() const {
   if (allowance >= 0) return allowance;
   switch (against) {
-    case Reference::theory: return 0.10;
-    case Reference::hydro: return 0.05;
-    case Reference::paper: return 0.0;
+    case Reference::theory:
+      return 0.10;
+    case Reference::hydro:
+      return 0.05;
+    case Reference::paper:
+      return 0.0;
   }
   throw std::logic_error("unknown Reference");
 }

@@ -34,13 +34,13 @@ struct PaperValue {
 PaperValue paper_table1(const std::string& observable);
 
 struct CompareConfig {
-  std::filesystem::path run_dir;         ///< an `md run` output directory
+  std::filesystem::path run_dir;  ///< an `md run` output directory
   Reference against = Reference::theory;
-  double sigma = 2.0;                    ///< k: pass when |dev| <= k * error (+ allowance), k in (0, 10]
+  double sigma = 2.0;  ///< k: pass when |dev| <= k * error (+ allowance), k in (0, 10]
   /// Finite-time allowance added to k * error for theory and hydro, in [0, 1]; negative selects
   /// the documented default of the reference (theory 0.10, hydro 0.05, paper 0: docs/compare.md).
   double allowance = -1.0;
-  double window_decades = 0.5;           ///< window fit over [t_max 10^-w, t_max], w in (0, 6]
+  double window_decades = 0.5;  ///< window fit over [t_max 10^-w, t_max], w in (0, 6]
   /// Compare as of this time: recorded times > until are ignored (0: use every recorded time). It
   /// must lie in [second recorded time, last recorded time] of the run.
   double until = 0.0;
@@ -54,16 +54,16 @@ struct CompareConfig {
 /// The verdict for one observable.
 struct ObservableVerdict {
   std::string name;
-  double alpha_theory = 0;               ///< exact rational of theory/ as a number
-  std::string alpha_theory_rational;     ///< "p/q"
-  double alpha_reference = 0;            ///< what was compared with (theory, paper or hydro value)
-  double alpha_reference_error = 0;      ///< its own error (paper: its delta alpha; else 0)
-  double alpha_measured = 0;             ///< running exponent at the last two recorded times
-  double alpha_error = 0;                ///< its jackknife error
-  double t_measured = 0;                 ///< the earlier of those two times
-  PowerLawFit window;                    ///< least-squares exponent over the window
-  double deviation_sigma = 0;            ///< (alpha_measured - alpha_reference)/combined error
-  double tolerance = 0;                  ///< the bound |alpha_measured - alpha_reference| must meet
+  double alpha_theory = 0;            ///< exact rational of theory/ as a number
+  std::string alpha_theory_rational;  ///< "p/q"
+  double alpha_reference = 0;         ///< what was compared with (theory, paper or hydro value)
+  double alpha_reference_error = 0;   ///< its own error (paper: its delta alpha; else 0)
+  double alpha_measured = 0;          ///< running exponent at the last two recorded times
+  double alpha_error = 0;             ///< its jackknife error
+  double t_measured = 0;              ///< the earlier of those two times
+  PowerLawFit window;                 ///< least-squares exponent over the window
+  double deviation_sigma = 0;         ///< (alpha_measured - alpha_reference)/combined error
+  double tolerance = 0;               ///< the bound |alpha_measured - alpha_reference| must meet
   bool pass = false;
   std::vector<RunningExponent> running;  ///< alpha(t) at every recorded pair
 };

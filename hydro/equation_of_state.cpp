@@ -2,14 +2,14 @@
 // have no energy scale: e = (d/2) T per unit mass and p = n T Z(phi), so the blast stays self-similar.
 #include "hydro/equation_of_state.hpp"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
-
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
 
 #include "common/validate.hpp"
 #include "hydro/gsl_status.hpp"
@@ -21,17 +21,19 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 
 void check_gsl(int status, const std::string& context) {
-  if (status != GSL_SUCCESS)
-    throw std::runtime_error("GSL error in " + context + ": " + gsl_strerror(status));
+  if (status != GSL_SUCCESS) throw std::runtime_error("GSL error in " + context + ": " + gsl_strerror(status));
 }
 
 }  // namespace
 
 std::string to_string(Eos eos) {
   switch (eos) {
-    case Eos::ideal: return "ideal";
-    case Eos::henderson: return "henderson";
-    case Eos::carnahan_starling: return "carnahan-starling";
+    case Eos::ideal:
+      return "ideal";
+    case Eos::henderson:
+      return "henderson";
+    case Eos::carnahan_starling:
+      return "carnahan-starling";
   }
   throw std::logic_error("to_string: unknown Eos");
 }
@@ -46,25 +48,32 @@ Eos eos_from_string(const std::string& text, const std::string& option) {
 
 int eos_dimension(Eos eos) {
   switch (eos) {
-    case Eos::ideal: return 0;
-    case Eos::henderson: return 2;
-    case Eos::carnahan_starling: return 3;
+    case Eos::ideal:
+      return 0;
+    case Eos::henderson:
+      return 2;
+    case Eos::carnahan_starling:
+      return 3;
   }
   throw std::logic_error("eos_dimension: unknown Eos");
 }
 
 double close_packing_fraction(Eos eos) {
   switch (eos) {
-    case Eos::ideal: return std::numeric_limits<double>::infinity();
-    case Eos::henderson: return pi / (2.0 * std::sqrt(3.0));
-    case Eos::carnahan_starling: return pi / (3.0 * std::sqrt(2.0));
+    case Eos::ideal:
+      return std::numeric_limits<double>::infinity();
+    case Eos::henderson:
+      return pi / (2.0 * std::sqrt(3.0));
+    case Eos::carnahan_starling:
+      return pi / (3.0 * std::sqrt(2.0));
   }
   throw std::logic_error("close_packing_fraction: unknown Eos");
 }
 
 double compressibility(Eos eos, double phi) {
   switch (eos) {
-    case Eos::ideal: return 1.0;
+    case Eos::ideal:
+      return 1.0;
     case Eos::henderson: {
       // Henderson (1975): Z = (1 + phi^2/8)/(1 - phi)^2.
       const double one_minus = 1.0 - phi;
@@ -81,7 +90,8 @@ double compressibility(Eos eos, double phi) {
 
 double compressibility_derivative(Eos eos, double phi) {
   switch (eos) {
-    case Eos::ideal: return 0.0;
+    case Eos::ideal:
+      return 0.0;
     case Eos::henderson: {
       // d/dphi of (1 + phi^2/8)(1 - phi)^-2 = (phi/4)(1-phi)^-2 + 2(1 + phi^2/8)(1-phi)^-3.
       const double one_minus = 1.0 - phi;
@@ -111,8 +121,7 @@ double max_ambient_packing_fraction(Eos eos) {
 double strong_shock_compression(Eos eos, double phi) {
   if (eos == Eos::ideal) throw std::logic_error("strong_shock_compression: use (gamma+1)/(gamma-1) for an ideal gas");
   const int d = eos_dimension(eos);
-  common::require_in_range("phi", phi, 0.0, max_ambient_packing_fraction(eos), common::Bound::open,
-                           common::Bound::open,
+  common::require_in_range("phi", phi, 0.0, max_ambient_packing_fraction(eos), common::Bound::open, common::Bound::open,
                            "for " + to_string(eos) + " (post-shock phi must stay below close packing " +
                                common::format_number(close_packing_fraction(eos)) + ")");
   // Hugoniot with e = (d/2) T, p = n T Z, cold pressureless upstream: e1 = u1^2/2 and
@@ -139,8 +148,7 @@ double strong_shock_compression(Eos eos, double phi) {
     check_gsl(gsl_root_fsolver_iterate(solver.get()), "strong_shock_compression (iterate)");
     lower = gsl_root_fsolver_x_lower(solver.get());
     upper = gsl_root_fsolver_x_upper(solver.get());
-    if (gsl_root_test_interval(lower, upper, 0.0, 4.0 * std::numeric_limits<double>::epsilon()) ==
-        GSL_SUCCESS)
+    if (gsl_root_test_interval(lower, upper, 0.0, 4.0 * std::numeric_limits<double>::epsilon()) == GSL_SUCCESS)
       return 1.0 / gsl_root_fsolver_root(solver.get());
   }
   throw std::runtime_error("strong_shock_compression: Brent iteration did not converge for phi = " +

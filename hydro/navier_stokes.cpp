@@ -4,17 +4,17 @@
 // Toro, "Riemann Solvers and Numerical Methods for Fluid Dynamics" (2009), Sec. 10.4 (HLLC).
 #include "hydro/navier_stokes.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <limits>
-#include <stdexcept>
-
 #include <cvode/cvode.h>
 #include <cvode/cvode_proj.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_band.h>
 #include <sunmatrix/sunmatrix_band.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include "common/validate.hpp"
 #include "hydro/sundials_handles.hpp"
@@ -43,8 +43,8 @@ void hllc_flux(const State& L, const State& R, double w, double gamma, double fl
   const double SL = std::min(L.u - cL, R.u - cR), SR = std::max(L.u + cL, R.u + cR);
   const double EL = L.p / (gamma - 1) + 0.5 * L.n * L.u * L.u;
   const double ER = R.p / (gamma - 1) + 0.5 * R.n * R.u * R.u;
-  const double SM = (R.p - L.p + L.n * L.u * (SL - L.u) - R.n * R.u * (SR - R.u)) /
-                    (L.n * (SL - L.u) - R.n * (SR - R.u));
+  const double SM =
+      (R.p - L.p + L.n * L.u * (SL - L.u) - R.n * R.u * (SR - R.u)) / (L.n * (SL - L.u) - R.n * (SR - R.u));
   auto physical = [&](const State& s, double total, double out[components]) {
     out[0] = s.n * s.u - w * s.n;
     out[1] = s.n * s.u * s.u + s.p - w * s.n * s.u;
@@ -53,16 +53,19 @@ void hllc_flux(const State& L, const State& R, double w, double gamma, double fl
   auto star = [&](const State& s, double total, double S, double out[components]) {
     const double factor = s.n * (S - s.u) / (S - SM);
     const double U[components] = {s.n, s.n * s.u, total};
-    const double Ustar[components] = {
-        factor, factor * SM,
-        factor * (total / s.n + (SM - s.u) * (SM + s.p / (s.n * (S - s.u))))};
+    const double Ustar[components] = {factor, factor * SM,
+                                      factor * (total / s.n + (SM - s.u) * (SM + s.p / (s.n * (S - s.u))))};
     physical(s, total, out);
     for (int k = 0; k < components; ++k) out[k] += w * U[k] + S * (Ustar[k] - U[k]) - w * Ustar[k];
   };
-  if (w <= SL) physical(L, EL, flux);
-  else if (w <= SM) star(L, EL, SL, flux);
-  else if (w <= SR) star(R, ER, SR, flux);
-  else physical(R, ER, flux);
+  if (w <= SL)
+    physical(L, EL, flux);
+  else if (w <= SM)
+    star(L, EL, SL, flux);
+  else if (w <= SR)
+    star(R, ER, SR, flux);
+  else
+    physical(R, ER, flux);
 }
 
 /// The semi-discrete blast: geometry, parameters and scratch space of the right-hand side.
@@ -84,7 +87,10 @@ class Blast {
     build_grid(config);
     floor_ = numerics.temperature_floor;
     t0_ = time_of(numerics.start_R_over_lambda * lambda_);
-    n_.resize(cells_); u_.resize(cells_); T_.resize(cells_); p_.resize(cells_);
+    n_.resize(cells_);
+    u_.resize(cells_);
+    T_.resize(cells_);
+    p_.resize(cells_);
     slope_.assign(3 * cells_, 0.0);
     flux_.assign(components * (cells_ + 1), 0.0);
     heat_.assign(cells_ + 1, 0.0);
@@ -156,7 +162,10 @@ class Blast {
       const double internal = energy / volume - 0.5 * n * u * u;  // (d/2) n T
       const double T = internal / (0.5 * d_ * n);
       if (!(n > 0) || !(T > 0) || !std::isfinite(T) || !std::isfinite(u)) return false;
-      n_[i] = n; u_[i] = u; T_[i] = T; p_[i] = n * T;
+      n_[i] = n;
+      u_[i] = u;
+      T_[i] = T;
+      p_[i] = n * T;
     }
     return true;
   }
@@ -229,8 +238,7 @@ class Blast {
         const double u_out = i == N - 1 ? 0.5 * u_[i] : 0.5 * (u_[i] + u_[i + 1]);
         const double dudr = (u_out - u_in) / (r_[i + 1] - r_[i]);
         const double rc = centre[i + 1];
-        const double tau_tt = mu_ * std::sqrt(T_[i]) *
-                              (2 * u_[i] / rc - 2.0 / d_ * (dudr + (d_ - 1) * u_[i] / rc));
+        const double tau_tt = mu_ * std::sqrt(T_[i]) * (2 * u_[i] / rc - 2.0 / d_ * (dudr + (d_ - 1) * u_[i] / rc));
         out[1] += A_out * stress_[i + 1] - A_in * stress_[i] - tau_tt * (A_out - A_in);
         const double u_face_out = i == N - 1 ? 0.0 : 0.5 * (u_[i] + u_[i + 1]);
         out[2] += A_out * u_face_out * stress_[i + 1] - A_in * u_in * stress_[i];
@@ -249,7 +257,7 @@ class Blast {
 
  private:
   /// Faces in ξ = r/R_ref ∈ [0, margin] equidistributing the cell density
-///   φ(ξ) = 1/(ξ_c + ξ) + B + S b(ξ),
+  ///   φ(ξ) = 1/(ξ_c + ξ) + B + S b(ξ),
   /// logarithmic for ξ_c ≲ ξ ≲ 1/B (the core), uniform beyond, and refined by S in the band
   /// b = [0.85, 1.03] (smoothed) that holds the shock and the steep TvNS profile behind it. B gives the
   /// uniform part as many cells as the logarithmic one; S gives the band its share of all cells.
@@ -257,7 +265,9 @@ class Blast {
     const double xi_c = *config.numerics.core_resolution;
     const double outer = margin_;
     const double B = std::log((xi_c + outer) / xi_c) / outer;
-    auto band = [](double xi) { return 0.25 * (1 + std::tanh((xi - 0.85) / 0.03)) * (1 - std::tanh((xi - 1.03) / 0.03)); };
+    auto band = [](double xi) {
+      return 0.25 * (1 + std::tanh((xi - 0.85) / 0.03)) * (1 - std::tanh((xi - 1.03) / 0.03));
+    };
     const int fine = 400000;  // trapezoidal cumulative of φ on a fine uniform mesh, then inverted
     std::vector<double> cumulative_log(fine + 1, 0.0), cumulative_band(fine + 1, 0.0);
     const double h = outer / fine;
@@ -356,8 +366,8 @@ int error_weights(N_Vector y, N_Vector weight, void* user_data) {
 
 /// Linear interpolation of the radius where `values` (at cell centres) crosses `level`, searching
 /// outward from cell `first`; NaN if never crossed.
-double crossing_radius(const std::vector<double>& centres, const std::vector<double>& values, int first,
-                       double level, bool falling) {
+double crossing_radius(const std::vector<double>& centres, const std::vector<double>& values, int first, double level,
+                       bool falling) {
   for (std::size_t i = first + 1; i < values.size(); ++i) {
     const bool crossed = falling ? values[i] <= level : values[i] >= level;
     if (crossed) {
@@ -423,8 +433,8 @@ double chapman_enskog_viscosity_prefactor(int d) {
   common::require_integer_in_range("d", d, 1, 3);
   if (d == 1) return 0.25;
   // η0 = (d+2)/8 Γ(d/2) π^(-(d-1)/2) σ^(1-d) √T and σ^(1-d) = n∞ λ Ω_{d-1}/2^(d-1) (σ = 2a)
-  return (d + 2.0) / 8.0 * std::tgamma(0.5 * d) * std::pow(M_PI, -0.5 * (d - 1)) *
-         theory::unit_ball_volume(d - 1) / std::pow(2.0, d - 1);
+  return (d + 2.0) / 8.0 * std::tgamma(0.5 * d) * std::pow(M_PI, -0.5 * (d - 1)) * theory::unit_ball_volume(d - 1) /
+         std::pow(2.0, d - 1);
 }
 
 void NavierStokesConfig::validate() const {
@@ -439,8 +449,8 @@ void NavierStokesConfig::validate() const {
     common::require_in_range("viscosity_prefactor", *physics.viscosity_prefactor, 0, 1e6, Bound::closed);
   common::require_integer_in_range("cells", numerics.cells, 16, 100000);
   common::require_in_range("start_R_over_lambda", numerics.start_R_over_lambda, 0, 1e6);
-  common::require_in_range("until_R_over_lambda", until_R_over_lambda, numerics.start_R_over_lambda, 1e12,
-                           Bound::open, Bound::closed, " (must exceed start_R_over_lambda)");
+  common::require_in_range("until_R_over_lambda", until_R_over_lambda, numerics.start_R_over_lambda, 1e12, Bound::open,
+                           Bound::closed, " (must exceed start_R_over_lambda)");
   common::require_in_range("initial_width", numerics.initial_width, 0, 0.8, Bound::open, Bound::closed);
   common::require_in_range("temperature_floor", numerics.temperature_floor, 0, 1e-2, Bound::open, Bound::closed);
   common::require_in_range("relative_tolerance", numerics.relative_tolerance, 1e-12, 1e-2, Bound::closed,
@@ -453,25 +463,32 @@ void NavierStokesConfig::validate() const {
   if (numerics.core_resolution)
     common::require_in_range("core_resolution", *numerics.core_resolution, 1e-6, 0.5, Bound::closed, Bound::closed);
   for (double R : numerics.profile_R_over_lambda)
-    common::require_in_range("profile_R_over_lambda", R, numerics.start_R_over_lambda, until_R_over_lambda,
-                             Bound::open, Bound::closed);
+    common::require_in_range("profile_R_over_lambda", R, numerics.start_R_over_lambda, until_R_over_lambda, Bound::open,
+                             Bound::closed);
 }
 
 RunningExponents NavierStokesResult::exponents_at(double R_over_lambda) const {
   if (exponents.empty()) throw std::logic_error("NavierStokesResult::exponents_at: no exponents");
   const double front = exponents.front().R_over_lambda, back = exponents.back().R_over_lambda;
-  common::require_in_range("R_over_lambda", R_over_lambda, front, back, common::Bound::closed,
-                           common::Bound::closed, " (the sampled range of this run)");
+  common::require_in_range("R_over_lambda", R_over_lambda, front, back, common::Bound::closed, common::Bound::closed,
+                           " (the sampled range of this run)");
   std::size_t k = 1;
   while (k + 1 < exponents.size() && exponents[k].R_over_lambda < R_over_lambda) ++k;
   const RunningExponents& a = exponents[k - 1];
   const RunningExponents& b = exponents[k];
   const double f = std::log(R_over_lambda / a.R_over_lambda) / std::log(b.R_over_lambda / a.R_over_lambda);
   auto mix = [f](double x, double y) { return x + f * (y - x); };
-  return RunningExponents{mix(a.t, b.t),       R_over_lambda,           mix(a.R, b.R),
-                          mix(a.H, b.H),       mix(a.H_density, b.H_density), mix(a.n0, b.n0),
-                          mix(a.T0, b.T0),     mix(a.H_in_R, b.H_in_R), mix(a.H_density_in_R, b.H_density_in_R),
-                          mix(a.n0_in_R, b.n0_in_R), mix(a.T0_in_R, b.T0_in_R)};
+  return RunningExponents{mix(a.t, b.t),
+                          R_over_lambda,
+                          mix(a.R, b.R),
+                          mix(a.H, b.H),
+                          mix(a.H_density, b.H_density),
+                          mix(a.n0, b.n0),
+                          mix(a.T0, b.T0),
+                          mix(a.H_in_R, b.H_in_R),
+                          mix(a.H_density_in_R, b.H_density_in_R),
+                          mix(a.n0_in_R, b.n0_in_R),
+                          mix(a.T0_in_R, b.T0_in_R)};
 }
 
 const NavierStokesSample& NavierStokesResult::final_sample() const {
@@ -507,8 +524,9 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   result.config = config;
   result.kappa_prefactor =
       config.physics.heat_conduction ? config.physics.kappa_prefactor.value_or(chapman_enskog_kappa_prefactor(d)) : 0.0;
-  result.viscosity_prefactor =
-      config.physics.viscosity ? config.physics.viscosity_prefactor.value_or(chapman_enskog_viscosity_prefactor(d)) : 0.0;
+  result.viscosity_prefactor = config.physics.viscosity
+                                   ? config.physics.viscosity_prefactor.value_or(chapman_enskog_viscosity_prefactor(d))
+                                   : 0.0;
   TvnsConfig tvns_config;
   tvns_config.d = d;
   tvns_config.tolerance = 1e-10;
@@ -555,8 +573,7 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   UserData user{&blast, &weights};
   sh::check_cvode(CVodeSetUserData(memory, &user), "CVodeSetUserData");
   sh::check_cvode(CVodeSetConstraints(memory, constraints.get()), "CVodeSetConstraints");
-  if (config.numerics.project_totals)
-    sh::check_cvode(CVodeSetProjFn(memory, project_totals), "CVodeSetProjFn");
+  if (config.numerics.project_totals) sh::check_cvode(CVodeSetProjFn(memory, project_totals), "CVodeSetProjFn");
   sh::check_cvode(CVodeSetMaxNumSteps(memory, 5000000), "CVodeSetMaxNumSteps");
   sh::check_cvode(CVodeSetMaxErrTestFails(memory, 20), "CVodeSetMaxErrTestFails");
   sh::check_cvode(CVodeSetMaxConvFails(memory, 50), "CVodeSetMaxConvFails");
@@ -575,13 +592,12 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     sh::check_cvode(CVodeSetStopTime(memory, output.t), "CVodeSetStopTime");
     const int flag = CVode(memory, output.t, y.get(), &t, CV_NORMAL);
     sh::check_cvode(flag, "CVode",
-                    " at t = " + common::format_number(t) + " (R_ref/lambda = " +
-                        common::format_number(blast.reference_radius(t) / lambda) + ")");
+                    " at t = " + common::format_number(t) +
+                        " (R_ref/lambda = " + common::format_number(blast.reference_radius(t) / lambda) + ")");
     const double* state = N_VGetArrayPointer(y.get());
     std::vector<double> derivative(size);
     if (blast.rhs(t, state, derivative.data()) != 0)
-      throw std::runtime_error("positivity lost at t = " + common::format_number(t) +
-                               ": a cell has n <= 0 or T <= 0");
+      throw std::runtime_error("positivity lost at t = " + common::format_number(t) + ": a cell has n <= 0 or T <= 0");
     const std::vector<double>& radii = blast.radii();
     for (int i = 0; i < N; ++i) centres[i] = 0.5 * (radii[i] + radii[i + 1]);
     const std::vector<double>& n = blast.density();
@@ -594,9 +610,10 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     const int peak = static_cast<int>(std::max_element(n.begin(), n.end()) - n.begin());
     const double R_crossing = crossing_radius(centres, n, peak, 0.5 * (config.physics.n_inf + n[peak]), true);
     if (!std::isfinite(R_crossing) || R_crossing > 0.97 * radii[N])
-      throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) + ", R_ref/lambda = " +
-                               common::format_number(blast.reference_radius(t) / lambda) +
-                               " (heat conduction outruns the shock when R/lambda is ~1 or kappa is large: start later, or raise outer_margin)");
+      throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) +
+                               ", R_ref/lambda = " + common::format_number(blast.reference_radius(t) / lambda) +
+                               " (heat conduction outruns the shock when R/lambda is ~1 or kappa is large: start "
+                               "later, or raise outer_margin)");
     sample.R = conservative_shock_radius(blast, state, peak, config.physics.n_inf);
     if (!std::isfinite(sample.R)) sample.R = R_crossing;
     sample.R_over_lambda = sample.R / lambda;
@@ -615,8 +632,8 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     const double x = sample.R_over_lambda, shock_speed = 2 * sample.R / ((d + 2) * t);
     const double core_exponent = 2.0 * d * d / (8.0 + 3.0 * d * d);
     sample.H_prefactor = sample.H / (lambda * std::pow(x, (4.0 + 3.0 * d * d) / (8.0 + 3.0 * d * d)));  // Eq. (4)
-    sample.n0_prefactor = sample.n0 / (config.physics.n_inf * std::pow(x, -core_exponent));           // Eq. (11)
-    sample.T0_prefactor = sample.T0 / (shock_speed * shock_speed * std::pow(x, core_exponent));        // Eq. (12)
+    sample.n0_prefactor = sample.n0 / (config.physics.n_inf * std::pow(x, -core_exponent));             // Eq. (11)
+    sample.T0_prefactor = sample.T0 / (shock_speed * shock_speed * std::pow(x, core_exponent));         // Eq. (12)
     sample.p0_scaled = sample.p0 / (config.physics.n_inf * shock_speed * shock_speed);
     sample.energy_error = std::abs(energy - blast.expected_energy(t)) / config.physics.E;
     sample.mass_error = std::abs(mass - blast.expected_mass(t)) / mass;
@@ -646,8 +663,7 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   // Keep the final (R/λ = until) profile last.
   std::stable_partition(result.profiles.begin(), result.profiles.end(),
                         [&](const NavierStokesProfile& p) { return std::abs(p.t / t_end_profile - 1) > 1e-12; });
-  result.statistics.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  result.statistics.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
 
   long value = 0;
   sh::check_cvode(CVodeGetNumSteps(memory, &value), "CVodeGetNumSteps");

@@ -12,11 +12,11 @@ namespace coldblast::hydro {
 
 /// Physical model (units: m = 1, k_B = 1; a is the particle radius).
 struct NavierStokesPhysics {
-  int d = 2;                ///< spatial dimension, 1 (planar), 2 (cylindrical) or 3 (spherical)
-  double E = 1.0;           ///< blast energy, > 0
-  double n_inf = 1.0;       ///< ambient number density n∞ (1/length^d), > 0
-  double a = 0.5;           ///< particle radius (length), > 0; sets λ = 1/(n∞ Ω_{d-1} a^{d-1})
-  bool heat_conduction = true;  ///< false together with viscosity = false is the Euler mode
+  int d = 2;                              ///< spatial dimension, 1 (planar), 2 (cylindrical) or 3 (spherical)
+  double E = 1.0;                         ///< blast energy, > 0
+  double n_inf = 1.0;                     ///< ambient number density n∞ (1/length^d), > 0
+  double a = 0.5;                         ///< particle radius (length), > 0; sets λ = 1/(n∞ Ω_{d-1} a^{d-1})
+  bool heat_conduction = true;            ///< false together with viscosity = false is the Euler mode
   std::optional<double> kappa_prefactor;  ///< c_κ >= 0 in κ = c_κ n∞ λ √T; default chapman_enskog_kappa_prefactor(d)
   bool viscosity = false;                 ///< shear viscosity μ = c_μ n∞ λ √T (zero bulk viscosity)
   std::optional<double> viscosity_prefactor;  ///< c_μ >= 0; default chapman_enskog_viscosity_prefactor(d)
@@ -24,16 +24,18 @@ struct NavierStokesPhysics {
 
 /// Discretisation and integrator options; none of them changes the physics being solved.
 struct NavierStokesNumerics {
-  int cells = 256;                    ///< finite-volume cells in [0, outer_margin R_ref], [16, 100000]
-  double start_R_over_lambda = 2.0;   ///< R_ref/λ at the initial time, (0, until)
-  double initial_width = 0.2;         ///< radius of the initial hot region / R_ref(t_start), (0, 0.8]
-  double temperature_floor = 1e-6;    ///< T of the cold gas entering the grid / Ṙ_ref(t)², (0, 1e-2]: never T = 0
-  double relative_tolerance = 1e-6;   ///< CVODE relative tolerance, [1e-12, 1e-2]
-  int samples_per_decade = 20;        ///< diagnostics per decade of R/λ, [4, 200]
-  double outer_margin = 1.15;         ///< outer grid edge / R_ref(t), [1.05, 2]
-  std::optional<double> core_resolution;  ///< ξ_c of the grid (cells ~ ξ_c + ξ near the centre); default from H/R at `until`
-  std::optional<double> shock_band_fraction;  ///< share of cells in 0.85 < r/R_ref < 1.03, [0, 0.9]; default 0.25 (Euler: 0.75)
-  bool project_totals = true;         ///< restore exact mass/energy totals after each step (CVODE projection)
+  int cells = 256;                   ///< finite-volume cells in [0, outer_margin R_ref], [16, 100000]
+  double start_R_over_lambda = 2.0;  ///< R_ref/λ at the initial time, (0, until)
+  double initial_width = 0.2;        ///< radius of the initial hot region / R_ref(t_start), (0, 0.8]
+  double temperature_floor = 1e-6;   ///< T of the cold gas entering the grid / Ṙ_ref(t)², (0, 1e-2]: never T = 0
+  double relative_tolerance = 1e-6;  ///< CVODE relative tolerance, [1e-12, 1e-2]
+  int samples_per_decade = 20;       ///< diagnostics per decade of R/λ, [4, 200]
+  double outer_margin = 1.15;        ///< outer grid edge / R_ref(t), [1.05, 2]
+  std::optional<double>
+      core_resolution;  ///< ξ_c of the grid (cells ~ ξ_c + ξ near the centre); default from H/R at `until`
+  std::optional<double>
+      shock_band_fraction;     ///< share of cells in 0.85 < r/R_ref < 1.03, [0, 0.9]; default 0.25 (Euler: 0.75)
+  bool project_totals = true;  ///< restore exact mass/energy totals after each step (CVODE projection)
   std::vector<double> profile_R_over_lambda;  ///< extra profile times (R_ref/λ); the final profile is always kept
 };
 
@@ -54,15 +56,15 @@ double chapman_enskog_viscosity_prefactor(int d);
 
 /// Diagnostics at one time (physical units unless stated).
 struct NavierStokesSample {
-  double t = 0;              ///< time since the (virtual) point explosion of R_ref(t)
-  double R_over_lambda = 0;  ///< measured shock radius / λ
-  double R = 0;              ///< shock radius: outermost r where n = (n∞ + n_max)/2
-  double H = 0;              ///< core radius: r where T falls to T0/2
-  double H_density = 0;      ///< second core radius: r where n rises to 2 n0
+  double t = 0;                   ///< time since the (virtual) point explosion of R_ref(t)
+  double R_over_lambda = 0;       ///< measured shock radius / λ
+  double R = 0;                   ///< shock radius: outermost r where n = (n∞ + n_max)/2
+  double H = 0;                   ///< core radius: r where T falls to T0/2
+  double H_density = 0;           ///< second core radius: r where n rises to 2 n0
   double n0 = 0, T0 = 0, p0 = 0;  ///< centre-cell density, temperature, pressure
   double energy = 0, mass = 0;    ///< totals over the grid, including the cold gas swept in
-  double energy_error = 0;   ///< |energy - (E + energy that entered through the outer edge)|/E
-  double mass_error = 0;     ///< |mass - n∞ V(grid)|/mass
+  double energy_error = 0;        ///< |energy - (E + energy that entered through the outer edge)|/E
+  double mass_error = 0;          ///< |mass - n∞ V(grid)|/mass
   /// Prefactors of Eqs. (4), (11), (12) with Ṙ = 2R/((d+2)t) and x = R/λ: H/(λ x^h_d),
   /// n0/(n∞ x^(-2d²/(8+3d²))), T0/(Ṙ² x^(2d²/(8+3d²))); and the central pressure p0/(n∞ Ṙ²).
   double H_prefactor = 0, n0_prefactor = 0, T0_prefactor = 0, p0_scaled = 0;
@@ -71,7 +73,7 @@ struct NavierStokesSample {
 /// d ln X / d ln t (time) and d ln X / d ln(R/λ) of the diagnostics, centred differences.
 struct RunningExponents {
   double t = 0, R_over_lambda = 0;
-  double R = 0, H = 0, H_density = 0, n0 = 0, T0 = 0;  ///< time exponents
+  double R = 0, H = 0, H_density = 0, n0 = 0, T0 = 0;               ///< time exponents
   double H_in_R = 0, H_density_in_R = 0, n0_in_R = 0, T0_in_R = 0;  ///< exponents in R/λ
 };
 
@@ -91,17 +93,17 @@ struct NavierStokesStatistics {
 /// Result of run_navier_stokes.
 struct NavierStokesResult {
   NavierStokesConfig config;
-  double lambda = 0;          ///< Eq. (5) [eq:mfp] mean free path
+  double lambda = 0;                                    ///< Eq. (5) [eq:mfp] mean free path
   double kappa_prefactor = 0, viscosity_prefactor = 0;  ///< c_κ, c_μ used (0 when off)
-  double A_reference = 0;     ///< A_d used for the grid scale R_ref(t)
-  double A_measured = 0;      ///< E t^2/(n∞ R^(d+2)) at the last sample
-  double max_energy_error = 0;  ///< max over samples of sample.energy_error
-  double energy_projected = 0;  ///< Σ |energy corrections| of the projection / E (integrator drift)
-  double mass_projected = 0;    ///< Σ |mass corrections| / final mass
+  double A_reference = 0;                               ///< A_d used for the grid scale R_ref(t)
+  double A_measured = 0;                                ///< E t^2/(n∞ R^(d+2)) at the last sample
+  double max_energy_error = 0;                          ///< max over samples of sample.energy_error
+  double energy_projected = 0;                  ///< Σ |energy corrections| of the projection / E (integrator drift)
+  double mass_projected = 0;                    ///< Σ |mass corrections| / final mass
   double min_density = 0, min_temperature = 0;  ///< over all samples and cells (positivity check)
-  std::vector<NavierStokesSample> samples;   ///< log-spaced in R/λ, up to slightly beyond `until`
-  std::vector<RunningExponents> exponents;   ///< at the interior samples
-  std::vector<NavierStokesProfile> profiles; ///< requested times, then the final one (R/λ = until)
+  std::vector<NavierStokesSample> samples;      ///< log-spaced in R/λ, up to slightly beyond `until`
+  std::vector<RunningExponents> exponents;      ///< at the interior samples
+  std::vector<NavierStokesProfile> profiles;    ///< requested times, then the final one (R/λ = until)
   NavierStokesStatistics statistics;
   /// Running exponents interpolated (linear in ln R/λ) at R/λ inside the sampled range; throws otherwise.
   RunningExponents exponents_at(double R_over_lambda) const;
@@ -127,8 +129,7 @@ using NavierStokesProgress = std::function<void(const NavierStokesSample&)>;
 
 /// Integrates the blast; throws std::invalid_argument for a bad config and std::runtime_error (with
 /// the CVODE flag name) if the integrator fails or positivity is lost.
-NavierStokesResult run_navier_stokes(const NavierStokesConfig& config,
-                                     const NavierStokesProgress& progress = {});
+NavierStokesResult run_navier_stokes(const NavierStokesConfig& config, const NavierStokesProgress& progress = {});
 
 /// Convenience for compare/: the conduction-only core run in scaled units (E = n∞ = λ = 1) up to
 /// R/λ = until (> 2, the start), default numerics; exponents_at(R/λ) then gives running exponents.

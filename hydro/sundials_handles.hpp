@@ -1,15 +1,15 @@
 #pragma once
 // RAII ownership of the SUNDIALS 6.4 objects used by hydro/ (N_Vector, SUNMatrix, SUNLinearSolver,
 // CVODE memory) and the flag checks that turn every failing return into an exception naming it.
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+
 #include <memory>
 #include <stdexcept>
 #include <string>
-
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.hpp>
-#include <sundials/sundials_linearsolver.h>
-#include <sundials/sundials_matrix.h>
 
 namespace coldblast::hydro::sundials_handles {
 
@@ -35,8 +35,8 @@ using CvodeMemory = std::unique_ptr<void, CvodeDeleter>;
 inline void check_cvode(int flag, const char* call, const std::string& context = "") {
   if (flag >= 0) return;
   char* name = CVodeGetReturnFlagName(flag);
-  std::string message = std::string(call) + " failed: " + (name ? name : "unknown flag") + " (" +
-                        std::to_string(flag) + ")" + context;
+  std::string message =
+      std::string(call) + " failed: " + (name ? name : "unknown flag") + " (" + std::to_string(flag) + ")" + context;
   free(name);  // CVodeGetReturnFlagName allocates with malloc
   throw std::runtime_error(message);
 }

@@ -3,16 +3,16 @@
 // [r-est, T-est] are the near-centre power laws.
 #include "hydro/tvns.hpp"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
-#include <string>
 #include <stdexcept>
-
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
+#include <string>
 
 #include "common/validate.hpp"
 #include "hydro/gsl_status.hpp"
@@ -33,8 +33,8 @@ void TvnsConfig::validate() const {
                                   " needs eos = henderson (d = 2) or carnahan_starling (d = 3), not ideal");
   } else {
     if (eos_dimension(eos) != d)
-      throw std::invalid_argument("eos = " + to_string(eos) + " is for d = " +
-                                  std::to_string(eos_dimension(eos)) + " only, not d = " + std::to_string(d));
+      throw std::invalid_argument("eos = " + to_string(eos) + " is for d = " + std::to_string(eos_dimension(eos)) +
+                                  " only, not d = " + std::to_string(d));
     if (gamma != 0.0 && gamma != 1.0 + 2.0 / d)
       throw std::invalid_argument("gamma = " + common::format_number(gamma) +
                                   " cannot be set with eos = " + to_string(eos) + " (hard particles fix it)");
@@ -178,9 +178,12 @@ TvnsSolution::TvnsSolution(const TvnsConfig& config) : config_(config) {
 TvnsPoint TvnsSolution::at(double r_over_R) const {
   common::require_in_range("r/R", r_over_R, 0.0, 1.0, common::Bound::closed, common::Bound::closed);
   TvnsPoint point{};
-  if (config_.eos != Eos::ideal) point = detail::ode_point(impl_->settings, impl_->ode, r_over_R);
-  else if (case_ == TvnsCase::singular) point = detail::singular_point(r_over_R);
-  else point = impl_->closed_form->at(r_over_R);
+  if (config_.eos != Eos::ideal)
+    point = detail::ode_point(impl_->settings, impl_->ode, r_over_R);
+  else if (case_ == TvnsCase::singular)
+    point = detail::singular_point(r_over_R);
+  else
+    point = impl_->closed_form->at(r_over_R);
   // Only the standard branch's temperature may be infinite: at x = 0, or where rho/rho0 ∝ x^(d/(gamma-1))
   // underflows below the normal double range (e.g. d = 1, gamma = 1.01, x < 1e-3), so that T = p/n overflows.
   const bool overflow = case_ == TvnsCase::standard && point.density < std::numeric_limits<double>::min();
@@ -215,17 +218,19 @@ TvnsSolution::ProfileEnergy TvnsSolution::energy_from_profile(double tolerance) 
       const TvnsPoint point = solution.at(x);
       const int d = solution.config().d;
       double density_of_energy = 0.0;
-      if (params->kinetic) density_of_energy = 0.5 * point.density * point.velocity * point.velocity;
-      else if (solution.config().eos == Eos::ideal) density_of_energy = point.pressure / (solution.gamma() - 1.0);
+      if (params->kinetic)
+        density_of_energy = 0.5 * point.density * point.velocity * point.velocity;
+      else if (solution.config().eos == Eos::ideal)
+        density_of_energy = point.pressure / (solution.gamma() - 1.0);
       else  // (d/2) n T = (d/2) p/Z, without T, which overflows where n underflows
-        density_of_energy = d / 2.0 * point.pressure /
-                            compressibility(solution.config().eos, solution.config().phi * point.density);
+        density_of_energy =
+            d / 2.0 * point.pressure / compressibility(solution.config().eos, solution.config().phi * point.density);
       return density_of_energy * std::pow(x, d - 1);
     };
     F.params = &parameters;
     double result = 0.0, error = 0.0;
-    const int status = gsl_integration_qags(&F, cavity_radius_, 1.0, 0.0, tolerance, workspace_size, workspace.get(),
-                                            &result, &error);
+    const int status =
+        gsl_integration_qags(&F, cavity_radius_, 1.0, 0.0, tolerance, workspace_size, workspace.get(), &result, &error);
     if (status != GSL_SUCCESS && !(status == GSL_EROUND && error <= 1e-10 * std::abs(result)))
       throw std::runtime_error(std::string("TvNS: energy integral of the profile (QAGS): ") + gsl_strerror(status));
     (kinetic ? out.kinetic : out.internal) = result;
@@ -234,10 +239,13 @@ TvnsSolution::ProfileEnergy TvnsSolution::energy_from_profile(double tolerance) 
   return out;
 }
 
-TvnsSolution solve_tvns(const TvnsConfig& config) { return TvnsSolution(config); }
+TvnsSolution solve_tvns(const TvnsConfig& config) {
+  return TvnsSolution(config);
+}
 
 TvnsSolution solve_tvns_for_md(int d, double phi) {
-  if (d != 2 && d != 3) throw std::invalid_argument("d = " + std::to_string(d) + " is outside {2, 3} for hard-particle MD");
+  if (d != 2 && d != 3)
+    throw std::invalid_argument("d = " + std::to_string(d) + " is outside {2, 3} for hard-particle MD");
   return solve_tvns({d, 0.0, d == 2 ? Eos::henderson : Eos::carnahan_starling, phi, 1e-8});
 }
 

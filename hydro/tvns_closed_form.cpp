@@ -3,6 +3,10 @@
 // integrals by GSL QAGS and the inverse x(p) = r/R by GSL Brent.
 #include "hydro/tvns_closed_form.hpp"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_roots.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,10 +14,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
-#include <gsl/gsl_roots.h>
 
 #include "common/validate.hpp"
 #include "hydro/gsl_status.hpp"

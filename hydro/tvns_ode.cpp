@@ -37,8 +37,7 @@ struct StallError : std::runtime_error {
 /// Right-hand sides of the two branches; counts its evaluations.
 class SelfSimilarSystem {
  public:
-  SelfSimilarSystem(const OdeSettings& settings, long& evaluations)
-      : settings_(settings), evaluations_(evaluations) {}
+  SelfSimilarSystem(const OdeSettings& settings, long& evaluations) : settings_(settings), evaluations_(evaluations) {}
 
   /// kappa = C^2 G/P at density G.
   double kappa(double G) const {
@@ -107,8 +106,8 @@ double integrate_to_end(Stepper stepper, System system, OdeState& y, double t, c
   auto observer = [&](const OdeState& state, double time) {
     if (++steps > max_steps)
       throw StallError("TvNS ODE: more than " + std::to_string(max_steps) + " steps before x = exp(-" +
-                               common::format_number(time) + ") (tolerance " + common::format_number(settings.tolerance) +
-                               " too tight?)");
+                       common::format_number(time) + ") (tolerance " + common::format_number(settings.tolerance) +
+                       " too tight?)");
     if (times) {
       times->push_back(time);
       states->push_back(state);
@@ -161,8 +160,10 @@ double integrate_to_end(Stepper stepper, System system, OdeState& y, double t, c
 /// Controlled Runge-Kutta steppers, or Bulirsch-Stoer (already controlled), at absolute = relative tolerance.
 template <class Stepper>
 auto make_stepper(double tolerance) {
-  if constexpr (std::is_same_v<Stepper, odeint::bulirsch_stoer<OdeState>>) return Stepper(tolerance, tolerance);
-  else return odeint::make_controlled<Stepper>(tolerance, tolerance);
+  if constexpr (std::is_same_v<Stepper, odeint::bulirsch_stoer<OdeState>>)
+    return Stepper(tolerance, tolerance);
+  else
+    return odeint::make_controlled<Stepper>(tolerance, tolerance);
 }
 
 /// One integration with the stepper chosen in the settings.
@@ -235,7 +236,7 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
       const OdeState saved = y;
       const double s_saved = s, step_saved = step;
       if (stepper.try_step(system_s, y, s, step) == odeint::fail) continue;  // step already reduced
-      if (!(std::isfinite(y[1] + y[2] + y[3] + y[4]) && y[0] < 1.0)) {     // stepped past the edge
+      if (!(std::isfinite(y[1] + y[2] + y[3] + y[4]) && y[0] < 1.0)) {       // stepped past the edge
         y = saved;
         s = s_saved;
         step = step_saved / 4.0;
@@ -246,8 +247,7 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
     auto system = [&](const OdeState& state, OdeState& derivative, double sigma_value) {
       equations.vacuum(state, derivative, sigma_value);
     };
-    integrate_to_end(make_stepper<Stepper>(settings.tolerance), system, y, sigma, settings, nullptr, nullptr,
-                     false);
+    integrate_to_end(make_stepper<Stepper>(settings.tolerance), system, y, sigma, settings, nullptr, nullptr, false);
     out.cavity_radius = std::exp(y[0]);
   }
   out.energy.kinetic = y[3];

@@ -19,25 +19,25 @@ struct OdeSettings {
   int d = 2;
   double gamma = 2.0;  ///< ideal gas index (ignored for hard particles)
   Eos eos = Eos::ideal;
-  double phi = 0.0;           ///< ambient packing fraction (hard particles)
-  double tolerance = 1e-13;   ///< absolute and relative step tolerance
-  bool check_stepper = false; ///< Dormand-Prince 5(4) instead of Bulirsch-Stoer
+  double phi = 0.0;            ///< ambient packing fraction (hard particles)
+  double tolerance = 1e-13;    ///< absolute and relative step tolerance
+  bool check_stepper = false;  ///< Dormand-Prince 5(4) instead of Bulirsch-Stoer
 };
 
 /// Result of one integration: energy integrals, cavity edge and checkpoints for profiles.
 struct OdeResult {
   EnergyIntegrals energy;
   double cavity_radius = 0.0;
-  double shock_compression = 0.0;  ///< rho1/rho0
+  double shock_compression = 0.0;          ///< rho1/rho0
   std::vector<double> checkpoint_s;        ///< s = -ln(r/R) at accepted steps (standard branch)
   std::vector<OdeState> checkpoint_state;  ///< state there
   double centre_pressure = 0.0;            ///< P at r = 0 (standard branch)
-  double end_s = 0.0;  ///< last s integrated; beyond it the near-centre expansion below is used
-  OdeState end_slope{};               ///< d/ds of the state at end_s
-  double centre_density_exponent = 0.0;  ///< k = d/(gamma0 - 1), gamma0 = kappa at G -> 0
-  double centre_W = 0.0;                 ///< V/x at the centre, 1/gamma0
-  double relaxation_rate = 0.0;          ///< rate r of the corrections exp(-r (s - end_s))
-  double tolerance_used = 0.0;        ///< step tolerance actually used (see integrate_self_similar)
+  double end_s = 0.0;                      ///< last s integrated; beyond it the near-centre expansion below is used
+  OdeState end_slope{};                    ///< d/ds of the state at end_s
+  double centre_density_exponent = 0.0;    ///< k = d/(gamma0 - 1), gamma0 = kappa at G -> 0
+  double centre_W = 0.0;                   ///< V/x at the centre, 1/gamma0
+  double relaxation_rate = 0.0;            ///< rate r of the corrections exp(-r (s - end_s))
+  double tolerance_used = 0.0;             ///< step tolerance actually used (see integrate_self_similar)
 };
 
 /// Integrates from r/R = 1 to the centre (standard) or the cavity edge (vacuum, ideal d = 3, gamma > 7).

@@ -15,9 +15,8 @@ CellList<D> CellList<D>::periodic(const Vec<D>& box, double min_width, std::size
   for (int k = 0; k < D; ++k) {
     const double cells = std::floor(box[k] / min_width);
     if (!(cells >= 3.0))
-      throw std::invalid_argument("periodic box side " + std::to_string(box[k]) +
-                                  " is shorter than 3 cells of width " + std::to_string(min_width) +
-                                  ": use more particles");
+      throw std::invalid_argument("periodic box side " + std::to_string(box[k]) + " is shorter than 3 cells of width " +
+                                  std::to_string(min_width) + ": use more particles");
     if (cells > 2e9) throw std::invalid_argument("periodic box has too many cells");
     list.count_[k] = static_cast<std::int32_t>(cells);
     list.width_[k] = box[k] / cells;
@@ -27,8 +26,8 @@ CellList<D> CellList<D>::periodic(const Vec<D>& box, double min_width, std::size
 }
 
 template <int D>
-CellList<D> CellList<D>::open(double region_radius, double guard_radius, double min_width,
-                              std::size_t particle_count, int margin_cells) {
+CellList<D> CellList<D>::open(double region_radius, double guard_radius, double min_width, std::size_t particle_count,
+                              int margin_cells) {
   CellList list;
   list.periodic_ = false;
   const double cells_per_axis = 2.0 * std::ceil(region_radius / min_width) + 2.0 * std::max(2, margin_cells);
@@ -108,7 +107,8 @@ void CellList<D>::set_up_wrapped() {
   for (int face_class = 0; face_class < neighbours; ++face_class) {
     add(face_class, -1, 0, wrapped_delta_, wrapped_shift_);
     for (int axis = 0; axis < D; ++axis)
-      for (int side = 0; side < 2; ++side) add(face_class, axis, side == 0 ? -1 : 1, slab_wrapped_delta_, slab_wrapped_shift_);
+      for (int side = 0; side < 2; ++side)
+        add(face_class, axis, side == 0 ? -1 : 1, slab_wrapped_delta_, slab_wrapped_shift_);
   }
 }
 

@@ -38,8 +38,10 @@ class CellList {
     for (int k = D - 1; k >= 1; --k) {
       // cell / stride by a multiplication and one correction step (an integer division is slow).
       std::int32_t q = static_cast<std::int32_t>(cell * inverse_stride_[k]);
-      if (q * stride_[k] > cell) --q;
-      else if ((q + 1) * stride_[k] <= cell) ++q;
+      if (q * stride_[k] > cell)
+        --q;
+      else if ((q + 1) * stride_[k] <= cell)
+        ++q;
       c[k] = q;
       cell -= q * stride_[k];
     }
@@ -59,8 +61,10 @@ class CellList {
     head_[cell] = id;
   }
   void remove(std::int32_t id, std::int32_t cell) {
-    if (head_[cell] == id) head_[cell] = next_[id + 1];  // the usual case: a cell holds a particle or two
-    else remove_further(id, cell);
+    if (head_[cell] == id)
+      head_[cell] = next_[id + 1];  // the usual case: a cell holds a particle or two
+    else
+      remove_further(id, cell);
   }
   /// First particle of a cell, -1 if empty.
   std::int32_t first(std::int32_t cell) const { return head_[cell]; }
@@ -133,7 +137,7 @@ class CellList {
   std::vector<std::uint8_t> face_;
   std::vector<std::int32_t> wrapped_delta_, slab_wrapped_delta_;  // per class (and axis, direction)
   std::vector<Vec<D>> wrapped_shift_, slab_wrapped_shift_;
-  std::vector<std::int32_t> neighbour_delta_;                       // 3^D index offsets (no wrap)
+  std::vector<std::int32_t> neighbour_delta_;                           // 3^D index offsets (no wrap)
   std::array<std::array<std::vector<std::int32_t>, 2>, D> slab_delta_;  // per axis, direction (no wrap)
 };
 

@@ -102,7 +102,8 @@ BlockSums parse_checkpoint_block(const std::string& text, long long block, std::
   BlockSums s;
   if (static_cast<long long>(integer("block")) != block) throw bad("block index differs from the file name");
   s.count = static_cast<long long>(integer("count"));
-  if (s.count != count) throw bad("count = " + std::to_string(s.count) + ", the scene's block has " + std::to_string(count));
+  if (s.count != count)
+    throw bad("count = " + std::to_string(s.count) + ", the scene's block has " + std::to_string(count));
   s.collisions = integer("collisions");
   s.energy_error_max = number(field("energy_error_max"), "energy_error_max");
   if (integer("entries") != entries)
@@ -162,8 +163,8 @@ Checkpoint load_checkpoint(const fs::path& directory, const ResolvedScene& scene
           key = k, was = v, now = "(missing)";
           break;
         }
-    throw std::invalid_argument("--resume: the checkpoint in " + directory.string() + " ran a different scene: " +
-                                key + " = " + was + " there, " + now + " now");
+    throw std::invalid_argument("--resume: the checkpoint in " + directory.string() + " ran a different scene: " + key +
+                                " = " + was + " there, " + now + " now");
   }
   const ObservableLayout layout(scene);
   Checkpoint checkpoint;
@@ -181,7 +182,8 @@ Checkpoint load_checkpoint(const fs::path& directory, const ResolvedScene& scene
   if (checkpoint.blocks.count(0) && fs::exists(directory / "realization0"))
     for (const auto& entry : fs::directory_iterator(directory / "realization0")) {
       const std::string name = entry.path().filename().string();
-      if (name.find(".tmp.") == std::string::npos) checkpoint.realization0_files.push_back({name, read_text(entry.path())});
+      if (name.find(".tmp.") == std::string::npos)
+        checkpoint.realization0_files.push_back({name, read_text(entry.path())});
     }
   std::sort(checkpoint.realization0_files.begin(), checkpoint.realization0_files.end());
   return checkpoint;

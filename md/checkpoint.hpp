@@ -21,8 +21,8 @@ struct Checkpoint {
 std::string checkpoint_block_text(long long block, const BlockSums& sums);
 /// Parses checkpoint_block_text; checks the block index, the number of entries and the count.
 /// Throws std::invalid_argument naming --resume and `source` when the text is malformed.
-BlockSums parse_checkpoint_block(const std::string& text, long long block, std::size_t entries,
-                                 long long count, const std::string& source);
+BlockSums parse_checkpoint_block(const std::string& text, long long block, std::size_t entries, long long count,
+                                 const std::string& source);
 
 /// Starts a fresh checkpoint in `directory`: removes old block files, writes scene.toml.
 void start_checkpoint(const std::filesystem::path& directory, const ResolvedScene& scene);

@@ -74,8 +74,8 @@ CellPlan plan_cells(const EngineConfig<D>& config, const InitialState<D>& state)
   const double requested = automatic_width(config, state);
   std::size_t impurities = 0;
   for (const std::uint8_t s : state.species) impurities += s != host_species;
-  const bool big = !config.periodic && !config.wide_cells_for_big && impurity > host &&
-                   requested < largest_contact && impurities > 0 && impurities <= max_big_particles;
+  const bool big = !config.periodic && !config.wide_cells_for_big && impurity > host && requested < largest_contact &&
+                   impurities > 0 && impurities <= max_big_particles;
   if (!big) return {std::max(requested, largest_contact), 0};
   const double width = std::max(requested, 2.0 * host);
   return {width, static_cast<int>(std::ceil((impurity + host) / width))};
@@ -198,7 +198,8 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, std::uint8_t& code)
 #if defined(__SSE2__)
     const __m128d zero = _mm_setzero_pd(), vv = _mm_set_sd(v), low = _mm_set_sd(lo);
     const __m128d up = _mm_cmpgt_sd(vv, zero);  // v > 0
-    const __m128d wall = _mm_or_pd(_mm_and_pd(up, _mm_add_sd(low, _mm_set_sd(cells_.width(k)))), _mm_andnot_pd(up, low));
+    const __m128d wall =
+        _mm_or_pd(_mm_and_pd(up, _mm_add_sd(low, _mm_set_sd(cells_.width(k)))), _mm_andnot_pd(up, low));
     const __m128d raw = _mm_max_sd(_mm_div_sd(_mm_sub_sd(wall, _mm_set_sd(p.position[k])), vv), zero);
     const __m128d still = _mm_cmpeq_sd(vv, zero);  // v == 0
     const __m128d dt = _mm_or_pd(_mm_and_pd(still, _mm_set_sd(never)), _mm_andnot_pd(still, raw));
@@ -224,8 +225,9 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, std::uint8_t& code)
 template <int D, class Queue>
 template <bool Shifted>
 [[gnu::always_inline]] inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift,
-                                        const Vec<D>& position, const Vec<D>& velocity, double time,
-                                        const double* sigma2_row, bool same_radius, Prediction& best) const {
+                                                               const Vec<D>& position, const Vec<D>& velocity,
+                                                               double time, const double* sigma2_row, bool same_radius,
+                                                               Prediction& best) const {
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
     if (j == id) continue;
     test_pair<Shifted>(j, shift, position, velocity, time, sigma2_row, same_radius, best);
@@ -236,8 +238,8 @@ template <int D, class Queue>
 template <bool Shifted>
 [[gnu::always_inline]] inline void Engine<D, Queue>::test_pair(std::int32_t j, const Vec<D>& shift,
                                                                const Vec<D>& position, const Vec<D>& velocity,
-                                                               double time, const double* sigma2_row,
-                                                               bool same_radius, Prediction& best) const {
+                                                               double time, const double* sigma2_row, bool same_radius,
+                                                               Prediction& best) const {
   const Particle<D>& q = particles_[j];
   // The pair is evaluated at the later of the two stored times (the last time either changed
   // course), not at the time of the scan: the predicted contact time is then a function of the
@@ -249,8 +251,10 @@ template <bool Shifted>
   Vec<D> dr;
   // The image shift is added last, so the pair seen from the other side (shift negated) gives
   // exactly -dr and the same contact time.
-  if constexpr (Shifted) dr = (q.position + q.velocity * (reference - q.time) - own) + shift;
-  else dr = q.position + q.velocity * (reference - q.time) - own;
+  if constexpr (Shifted)
+    dr = (q.position + q.velocity * (reference - q.time) - own) + shift;
+  else
+    dr = q.position + q.velocity * (reference - q.time) - own;
   const Vec<D> dv = q.velocity - velocity;
   const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
 #if defined(__SSE2__)
@@ -307,7 +311,8 @@ void Engine<D, Queue>::kernel_scan(std::int32_t id, std::int32_t* ids, int count
       best.partner_collisions = particles_[best.partner].collisions;
     }
   } else {
-    (void)id, (void)ids, (void)count, (void)sx, (void)sy, (void)sz, (void)position, (void)velocity, (void)time, (void)sigma2, (void)best;
+    (void)id, (void)ids, (void)count, (void)sx, (void)sy, (void)sz, (void)position, (void)velocity, (void)time,
+        (void)sigma2, (void)best;
   }
 }
 
@@ -326,7 +331,8 @@ template <int D, class Queue>
 
 template <int D, class Queue>
 void Engine<D, Queue>::cover(std::int32_t cell, const std::vector<std::int32_t>& deltas, int change) {
-  for (const std::int32_t delta : deltas) covered_[cell + delta] = static_cast<std::uint8_t>(covered_[cell + delta] + change);
+  for (const std::int32_t delta : deltas)
+    covered_[cell + delta] = static_cast<std::uint8_t>(covered_[cell + delta] + change);
 }
 
 template <int D, class Queue>
@@ -408,8 +414,9 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, co
 }
 
 template <int D, class Queue>
-[[gnu::always_inline]] inline void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first,
-                                  const std::int32_t* last, bool gather) {
+[[gnu::always_inline]] inline void Engine<D, Queue>::scan_cells(std::int32_t id, std::int32_t base,
+                                                                const std::int32_t* first, const std::int32_t* last,
+                                                                bool gather) {
   // Same arithmetic and visiting order as scan_wrapped_cells with zero shifts, with the particle's
   // data and its best prediction kept in registers across the cells.
   const Particle<D>& p = particles_[id];
@@ -463,8 +470,10 @@ void Engine<D, Queue>::schedule(std::int32_t id) {
   // particles flew straight since the reference time without touching); round-off of a grazing
   // or touching pair could put it a hair earlier, and the calendar must not go back in time.
   const double t = std::max(std::min(crossing, p.time), now_);
-  if (t == never) queue_.remove(id);
-  else queue_.set(id, t);
+  if (t == never)
+    queue_.remove(id);
+  else
+    queue_.set(id, t);
 }
 
 template <int D, class Queue>
@@ -502,7 +511,8 @@ void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
   p.advance(t);
   q.advance(t);
   const Vec<D> dr = separation(i, j);
-  const CollisionOutcome<D> outcome = md::collide<D>(dr, p.velocity, q.velocity, mass_[species_[i]], mass_[species_[j]]);
+  const CollisionOutcome<D> outcome =
+      md::collide<D>(dr, p.velocity, q.velocity, mass_[species_[i]], mass_[species_[j]]);
   virial_sum_ += outcome.virial;
   ++p.collisions;
   ++q.collisions;
@@ -552,7 +562,8 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
   check_guard(id);
   if (config_.overlap_check) check_overlaps_of(id);
   Prediction& prediction = predictions_[id];
-  const bool stale = prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions;
+  const bool stale =
+      prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions;
   if (is_big(id)) [[unlikely]] {
     cross_big(id, axis, direction, stale);
   } else if (stale) {
@@ -562,7 +573,8 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
     // A slab (3^(D-1) cells) holds too few candidates for the gathered kernel to pay: 8 % slower
     // at phi = 0.1, no faster at 0.3 (docs/benchmarks.md, "Fourth pass").
     scan_cells(id, p.cell, deltas.data(), deltas.data() + deltas.size(), false);
-    if (big_reach_ != 0 && covered_[p.cell] != 0) [[unlikely]] scan_bigs(id);
+    if (big_reach_ != 0 && covered_[p.cell] != 0) [[unlikely]]
+      scan_bigs(id);
   } else {
     const auto stencil = cells_.wrapped_slab(p.cell, axis, direction);
     scan_wrapped_cells(id, p.cell, stencil.delta, stencil.shift, stencil.count, false);
@@ -578,8 +590,10 @@ template <int D, class Queue>
   const auto& incoming = big_slab_[axis][direction > 0 ? 1 : 0];
   cover(cell, incoming, 1);
   cover(cell - direction * cells_.stride(axis), big_slab_[axis][direction > 0 ? 0 : 1], -1);
-  if (stale) full_scan(id);
-  else scan_cells(id, cell, incoming.data(), incoming.data() + incoming.size(), use_kernel_);
+  if (stale)
+    full_scan(id);
+  else
+    scan_cells(id, cell, incoming.data(), incoming.data() + incoming.size(), use_kernel_);
 }
 
 template <int D, class Queue>
@@ -667,8 +681,8 @@ void Engine<D, Queue>::check_all_overlaps(double tolerance) const {
 template <int D, class Queue>
 std::size_t Engine<D, Queue>::bytes() const {
   return particles_.capacity() * sizeof(Particle<D>) + predictions_.capacity() * sizeof(Prediction) +
-         species_.capacity() + moving_flag_.capacity() + crossing_.capacity() + moving_.capacity() * 4 + cells_.bytes() + queue_.bytes() + covered_.capacity() +
-         big_.capacity() * 4;
+         species_.capacity() + moving_flag_.capacity() + crossing_.capacity() + moving_.capacity() * 4 +
+         cells_.bytes() + queue_.bytes() + covered_.capacity() + big_.capacity() * 4;
 }
 
 template class Engine<2, HeapEventQueue>;

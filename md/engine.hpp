@@ -20,11 +20,11 @@ namespace coldblast::md {
 /// Geometry and checks of one engine.
 template <int D>
 struct EngineConfig {
-  bool periodic = false;           ///< true: periodic box [0, box); false: open blast region
-  Vec<D> box = Vec<D>::Ones();     ///< periodic box side lengths (length)
-  double region_radius = 1.0;      ///< open: particles lie within this radius of the origin (length)
-  double guard_radius = 1.0;       ///< open: a moving particle entering a cell reaching beyond it stops the run
-  std::string guard_advice;        ///< open: what to raise when the guard trips (for the error message)
+  bool periodic = false;        ///< true: periodic box [0, box); false: open blast region
+  Vec<D> box = Vec<D>::Ones();  ///< periodic box side lengths (length)
+  double region_radius = 1.0;   ///< open: particles lie within this radius of the origin (length)
+  double guard_radius = 1.0;    ///< open: a moving particle entering a cell reaching beyond it stops the run
+  std::string guard_advice;     ///< open: what to raise when the guard trips (for the error message)
   /// Cell side (length); 0 = automatic. Never below the largest contact distance, except in open
   /// geometry with impurities larger than the host: then cells are as narrow as the host contact
   /// distance and the impurities are "big" (a wider stencil, see engine.cpp). Periodic geometry
@@ -37,7 +37,7 @@ struct EngineConfig {
   /// equal radii, candidates are tested four at a time (md/pair_kernel.hpp). Trajectories are
   /// bitwise the same either way (tested).
   bool simd = true;
-  bool overlap_check = false;      ///< verify after every event that the touched particles overlap nobody
+  bool overlap_check = false;                 ///< verify after every event that the touched particles overlap nobody
   bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
 };
 
@@ -92,8 +92,8 @@ class Engine {
  private:
   // 16 bytes; the scheduled cell crossing lives in crossing_ (one byte) to stay within the memory budget.
   struct Prediction {
-    double time = never;              // earliest predicted collision
-    std::int32_t partner = -1;        // its partner
+    double time = never;                   // earliest predicted collision
+    std::int32_t partner = -1;             // its partner
     std::uint32_t partner_collisions = 0;  // partner's counter when predicted
   };
   void process(std::int32_t id, double t);
@@ -133,7 +133,7 @@ class Engine {
   void full_scan(std::int32_t id);
   // Big particles (open geometry, impurities larger than the host: see engine.cpp).
   bool is_big(std::int32_t id) const { return big_reach_ != 0 && species_[id] != host_species; }
-  void scan_bigs(std::int32_t id);  // pair tests against every big particle
+  void scan_bigs(std::int32_t id);                                       // pair tests against every big particle
   void cross_big(std::int32_t id, int axis, int direction, bool stale);  // a big particle's crossing
   void cover(std::int32_t cell, const std::vector<std::int32_t>& deltas, int change);
   void schedule(std::int32_t id);
@@ -156,9 +156,9 @@ class Engine {
   std::vector<std::uint8_t> crossing_;  // scheduled cell crossing: 2 axis + (direction > 0)
   std::vector<std::int32_t> moving_;
   double radius_[2], mass_[2], sigma_[2][2], sigma2_[2][2];  // sigma2_ = sigma_²
-  bool same_radius_ = true;  // host and impurity radii equal: the contact distance needs no species lookup
-  bool use_kernel_ = false;     // the SIMD pair kernel (config.simd, D = 3, equal radii, CPU with AVX2)
-  bool simd_crossing_ = false;  // the SIMD crossing time (config.simd, D = 3, CPU with AVX2)
+  bool same_radius_ = true;      // host and impurity radii equal: the contact distance needs no species lookup
+  bool use_kernel_ = false;      // the SIMD pair kernel (config.simd, D = 3, equal radii, CPU with AVX2)
+  bool simd_crossing_ = false;   // the SIMD crossing time (config.simd, D = 3, CPU with AVX2)
   double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run
   CellList<D> cells_;
   int big_reach_ = 0;                      // k: cells per axis a big particle's stencil reaches; 0 = none
@@ -181,8 +181,8 @@ void Engine<D, Queue>::for_each_in_ball(const Vec<D>& centre, double radius, F&&
   for (int k = 0; k < D; ++k) {
     const double w = cells_.width(k);
     lo[k] = static_cast<std::int32_t>(std::max(0.0, std::floor((centre[k] - radius - cells_.lower()[k]) / w)));
-    hi[k] = static_cast<std::int32_t>(
-        std::min<double>(last[k], std::floor((centre[k] + radius - cells_.lower()[k]) / w)));
+    hi[k] =
+        static_cast<std::int32_t>(std::min<double>(last[k], std::floor((centre[k] + radius - cells_.lower()[k]) / w)));
     if (hi[k] < lo[k]) return;
   }
   c = lo;

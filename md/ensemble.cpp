@@ -1,5 +1,7 @@
 #include "md/ensemble.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -10,8 +12,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
-
-#include <toml++/toml.h>
 
 #include "common/validate.hpp"
 #include "md/checkpoint.hpp"
@@ -58,7 +58,8 @@ std::string header_for(const ResolvedScene& s, common::HeaderFields extra = {}) 
 template <int D, class Queue>
 std::string snapshot_csv(const ResolvedScene& scene, const Engine<D, Queue>& engine) {
   std::ostringstream out;
-  out << header_for(scene, {{"realization", "0"}, {"t", format_number(engine.now())}}) << (D == 2 ? "id,x,y,moving,impurity\n" : "id,x,y,z,moving,impurity\n");
+  out << header_for(scene, {{"realization", "0"}, {"t", format_number(engine.now())}})
+      << (D == 2 ? "id,x,y,moving,impurity\n" : "id,x,y,z,moving,impurity\n");
   for (std::size_t i = 0; i < engine.size(); ++i) {
     const auto id = static_cast<std::int32_t>(i);
     const Vec<D> x = engine.position(id);
@@ -79,8 +80,8 @@ RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLa
   config.periodic = false;
   config.region_radius = scene.region_radius;
   config.guard_radius = scene.guard_radius;
-  config.guard_advice = "raise box_margin (now " + format_number(c.box_margin) +
-                        ") or give a smaller A_d (now " + format_number(scene.A_d) + ")";
+  config.guard_advice = "raise box_margin (now " + format_number(c.box_margin) + ") or give a smaller A_d (now " +
+                        format_number(scene.A_d) + ")";
   config.cell_width = c.cell_width;
   config.overlap_check = c.overlap_check;
   config.record_impurity_trajectories = first && scene.wants("trajectories");
@@ -93,14 +94,15 @@ RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLa
   for (std::size_t k = 0; k < scene.times.size(); ++k) stops.push_back({scene.times[k], static_cast<int>(k)});
   if (first && scene.wants("snapshots"))
     for (const double t : scene.snapshot_times) stops.push_back({t, -1});
-  std::stable_sort(stops.begin(), stops.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::stable_sort(stops.begin(), stops.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<Vec<D>> start;
   for (const std::int32_t id : observer.impurities()) start.push_back(engine.position(id));
   for (const auto& [t, k] : stops) {
     engine.run_until(t);
-    if (k >= 0) observer.measure(k, out.record);
-    else out.files.push_back({"snapshot_" + format_number(t) + ".csv", snapshot_csv(scene, engine)});
+    if (k >= 0)
+      observer.measure(k, out.record);
+    else
+      out.files.push_back({"snapshot_" + format_number(t) + ".csv", snapshot_csv(scene, engine)});
   }
   engine.run_until(c.t_max);
   out.collisions = engine.collision_count();
@@ -173,7 +175,9 @@ double to_double(const std::string& s) {
   return v;
 }
 
-std::string number_or_nan(double v) { return std::isfinite(v) ? format_number(v) : "nan"; }
+std::string number_or_nan(double v) {
+  return std::isfinite(v) ? format_number(v) : "nan";
+}
 
 const char* accumulator_header = "block,entry,channel,t,bin,sum,sum_squares";
 const char* block_totals_header = "block,count,collisions,energy_error_max";
@@ -437,11 +441,13 @@ void write_blast_outputs(const BlastResult& result, const std::filesystem::path&
       for (std::size_t k = 0; k < scene.times.size(); ++k)
         for (const std::string& name : scalar_observable_names()) {
           const int e = layout.scalar(name, static_cast<int>(k));
-          if (e >= 0) out << b << ',' << format_number(scene.times[k]) << ',' << name << ',' << format_number(s.sum[e]) << ',' << s.count << '\n';
+          if (e >= 0)
+            out << b << ',' << format_number(scene.times[k]) << ',' << name << ',' << format_number(s.sum[e]) << ','
+                << s.count << '\n';
         }
       for (std::size_t e = 0; e < layout.size(); ++e)
-        acc << b << ',' << e << ',' << layout.channel(e) << ',' << format_number(scene.times[layout.time_index(e)]) << ','
-            << layout.bin(e) << ',' << format_number(s.sum[e]) << ',' << format_number(s.sum_squares[e]) << '\n';
+        acc << b << ',' << e << ',' << layout.channel(e) << ',' << format_number(scene.times[layout.time_index(e)])
+            << ',' << layout.bin(e) << ',' << format_number(s.sum[e]) << ',' << format_number(s.sum_squares[e]) << '\n';
       totals << b << ',' << s.count << ',' << s.collisions << ',' << format_number(s.energy_error_max) << '\n';
     }
     common::write_file_atomic(directory / "blocks.csv", out.str());
@@ -464,7 +470,8 @@ void write_blast_outputs(const BlastResult& result, const std::filesystem::path&
   };
   if (layout.has_profiles() && N > 0) {
     std::ostringstream out;
-    out << header << "t,bin,r_over_R_lo,r_over_R_hi,density_over_n,density_stderr,radial_velocity,temperature,particles\n";
+    out << header
+        << "t,bin,r_over_R_lo,r_over_R_hi,density_over_n,density_stderr,radial_velocity,temperature,particles\n";
     const int bins = scene.config.profile_bins;
     const double width = 1.5 / bins;
     for (std::size_t k = 0; k < scene.times.size(); ++k)
@@ -543,8 +550,8 @@ BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& direct
     }
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
       const std::string name = entry.path().filename().string();
-      if (name == "trajectories.csv" || (name.rfind("snapshot_", 0) == 0 && name.size() > 4 &&
-                                         name.substr(name.size() - 4) == ".csv"))
+      if (name == "trajectories.csv" ||
+          (name.rfind("snapshot_", 0) == 0 && name.size() > 4 && name.substr(name.size() - 4) == ".csv"))
         merged.realization0_files.push_back({name, read_text(entry.path())});
     }
   }

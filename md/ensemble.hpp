@@ -21,9 +21,9 @@ namespace coldblast::md {
 
 /// How to run an ensemble (numerics only; the physics is in BlastConfig).
 struct RunOptions {
-  int threads = 1;        ///< worker threads, >= 1
-  int shard_index = 0;    ///< this shard runs blocks shard_index, shard_index + shard_count, ...
-  int shard_count = 1;    ///< number of shards, >= 1
+  int threads = 1;      ///< worker threads, >= 1
+  int shard_index = 0;  ///< this shard runs blocks shard_index, shard_index + shard_count, ...
+  int shard_count = 1;  ///< number of shards, >= 1
   /// Called after each realization with (done, total); may be empty. Called under a lock.
   std::function<void(long long, long long)> progress;
   /// Folder where every finished block is saved at once (md/checkpoint.hpp); empty = no checkpoint.
@@ -42,7 +42,7 @@ struct BlockSums {
   std::vector<double> sum, sum_squares;  ///< per record entry
   long long count = 0;                   ///< realizations in the block
   std::uint64_t collisions = 0;
-  double energy_error_max = 0.0;         ///< largest |E_kin(t_max) - E|/E in the block
+  double energy_error_max = 0.0;  ///< largest |E_kin(t_max) - E|/E in the block
 };
 
 /// A finished (or merged) ensemble.
@@ -86,9 +86,9 @@ BlastResult run_blast(const BlastConfig& config, const RunOptions& options = {})
 /// drivers): the resolved scene and options, the blocks loaded from a checkpoint when resuming,
 /// and the blocks of this shard still to run.
 struct EnsemblePlan {
-  BlastResult result;                 ///< scene, thread/shard settings, already finished blocks
-  std::vector<long long> pending;     ///< blocks still to run, ascending
-  long long pending_realizations = 0; ///< realizations in `pending`
+  BlastResult result;                  ///< scene, thread/shard settings, already finished blocks
+  std::vector<long long> pending;      ///< blocks still to run, ascending
+  long long pending_realizations = 0;  ///< realizations in `pending`
 };
 /// Resolves the scene, loads (resume) or starts the checkpoint in options.checkpoint, and lists
 /// the pending blocks. Throws std::invalid_argument for a bad scene or checkpoint.

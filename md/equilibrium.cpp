@@ -12,7 +12,9 @@
 
 namespace coldblast::md {
 
-double henderson_Z(double phi) { return (1.0 + phi * phi / 8.0) / ((1.0 - phi) * (1.0 - phi)); }
+double henderson_Z(double phi) {
+  return (1.0 + phi * phi / 8.0) / ((1.0 - phi) * (1.0 - phi));
+}
 double carnahan_starling_Z(double phi) {
   return (1.0 + phi + phi * phi - phi * phi * phi) / std::pow(1.0 - phi, 3);
 }
@@ -29,7 +31,8 @@ void EquilibriumConfig::validate() const {
   require_integer_in_range("blocks", blocks, 2, 10000);
   require_integer_in_range("collisions", collisions, 10LL * blocks, 1000000000000LL, " (at least 10 per block)");
   require_in_range("equilibration_per_particle", equilibration_per_particle, 0.0, 1e6, common::Bound::closed);
-  if (queue != "calendar" && queue != "heap") throw std::invalid_argument("queue = " + queue + " is not one of: calendar, heap");
+  if (queue != "calendar" && queue != "heap")
+    throw std::invalid_argument("queue = " + queue + " is not one of: calendar, heap");
 }
 
 namespace {

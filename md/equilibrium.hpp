@@ -9,28 +9,28 @@ namespace coldblast::md {
 
 /// One equilibrium run (units: m = 1, k_B T = 1, a = radius).
 struct EquilibriumConfig {
-  int d = 3;                              ///< dimension, 2 or 3
-  double phi = 0.3;                       ///< packing fraction, in (0, 0.7) (d = 2) or (0, 0.5) (d = 3)
-  double a = 0.5;                         ///< radius (length), > 0
-  long long particles = 10000;            ///< N, in [64, 2e8]
-  long long collisions = 2000000;         ///< collisions measured after equilibration, >= 10 × blocks
-  double equilibration_per_particle = 20; ///< collisions per particle discarded first, >= 0
-  int blocks = 20;                        ///< block averages for error bars, in [2, 10000]
-  std::uint64_t seed = 1;                 ///< random seed (velocities)
-  std::string queue = "calendar";         ///< "calendar" or "heap"
+  int d = 3;                               ///< dimension, 2 or 3
+  double phi = 0.3;                        ///< packing fraction, in (0, 0.7) (d = 2) or (0, 0.5) (d = 3)
+  double a = 0.5;                          ///< radius (length), > 0
+  long long particles = 10000;             ///< N, in [64, 2e8]
+  long long collisions = 2000000;          ///< collisions measured after equilibration, >= 10 × blocks
+  double equilibration_per_particle = 20;  ///< collisions per particle discarded first, >= 0
+  int blocks = 20;                         ///< block averages for error bars, in [2, 10000]
+  std::uint64_t seed = 1;                  ///< random seed (velocities)
+  std::string queue = "calendar";          ///< "calendar" or "heap"
   void validate() const;
 };
 
 struct EquilibriumResult {
   EquilibriumConfig config;
-  double box_side = 0.0;                   ///< periodic box side (length)
-  double Z = 0.0, Z_error = 0.0;           ///< βP/n from the virial, and its standard error
+  double box_side = 0.0;                                    ///< periodic box side (length)
+  double Z = 0.0, Z_error = 0.0;                            ///< βP/n from the virial, and its standard error
   double collision_rate = 0.0, collision_rate_error = 0.0;  ///< ν: collisions per particle per time
   double Z_from_collision_rate = 0.0, Z_from_collision_rate_error = 0.0;  ///< 1 + ν σ √(π/4)/d
-  double Z_reference = 0.0;                ///< Henderson (d = 2) or Carnahan-Starling (d = 3)
+  double Z_reference = 0.0;  ///< Henderson (d = 2) or Carnahan-Starling (d = 3)
   std::string reference_name;
-  double temperature = 0.0;                ///< 2 E_kin / (d (N - 1)), = 1 by construction
-  double energy_error = 0.0;               ///< relative kinetic-energy drift over the run
+  double temperature = 0.0;   ///< 2 E_kin / (d (N - 1)), = 1 by construction
+  double energy_error = 0.0;  ///< relative kinetic-energy drift over the run
   std::uint64_t collisions_total = 0;
   double wall_seconds = 0.0, collisions_per_second = 0.0;
 };

@@ -57,8 +57,10 @@ void HeapEventQueue::set(std::int32_t id, double time) {
   }
   const double old = heap_[k].time;
   heap_[k].time = time;
-  if (time < old) sift_up(k);
-  else sift_down(k);
+  if (time < old)
+    sift_up(k);
+  else
+    sift_down(k);
 }
 
 void HeapEventQueue::remove(std::int32_t id) {
@@ -69,8 +71,10 @@ void HeapEventQueue::remove(std::int32_t id) {
   heap_.pop_back();
   if (static_cast<std::size_t>(k) == heap_.size()) return;
   place(k, last);
-  if (k > 0 && before(last, heap_[(k - 1) / 2])) sift_up(k);
-  else sift_down(k);
+  if (k > 0 && before(last, heap_[(k - 1) / 2]))
+    sift_up(k);
+  else
+    sift_down(k);
 }
 
 // ------------------------------------------------------------ CalendarEventQueue
@@ -94,8 +98,8 @@ CalendarEventQueue::CalendarEventQueue(std::size_t capacity)
       mask_(static_cast<std::int64_t>(head_.size()) - 1) {}
 
 std::size_t CalendarEventQueue::bytes() const {
-  return sizeof(sorted_) + heap_.bytes() + (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 +
-         time_.capacity() * 8;
+  return sizeof(sorted_) + heap_.bytes() +
+         (head_.capacity() + next_.capacity() + prev_.capacity() + where_.capacity()) * 4 + time_.capacity() * 8;
 }
 
 void CalendarEventQueue::clear() {
@@ -144,10 +148,14 @@ void CalendarEventQueue::insert(std::int32_t id, double time) {
 void CalendarEventQueue::unlink(std::int32_t id) {
   const std::int32_t w = where_[id];
   std::int32_t& list = w == in_overflow ? overflow_ : head_[w];
-  if (w == in_overflow) --overflow_size_;
-  else --in_lists_;
-  if (prev_[id] >= 0) next_[prev_[id]] = next_[id];
-  else list = next_[id];
+  if (w == in_overflow)
+    --overflow_size_;
+  else
+    --in_lists_;
+  if (prev_[id] >= 0)
+    next_[prev_[id]] = next_[id];
+  else
+    list = next_[id];
   if (next_[id] >= 0) prev_[next_[id]] = prev_[id];
   where_[id] = absent;
 }
@@ -294,7 +302,8 @@ void CalendarEventQueue::adapt() {
   const double ratio = static_cast<double>(pops_) / static_cast<double>(std::max<std::uint64_t>(advances_, 1));
   if (ratio > 4.0 * target_per_bucket || ratio < 0.125 * target_per_bucket)
     rebuild(width_ * std::clamp(target_per_bucket / ratio, 1.0 / 64.0, 64.0));
-  else pops_ = advances_ = 0;
+  else
+    pops_ = advances_ = 0;
 }
 
 }  // namespace coldblast::md

@@ -40,9 +40,7 @@ class HeapEventQueue {
     double time;
     std::int32_t id;
   };
-  static bool before(const Entry& x, const Entry& y) {
-    return x.time < y.time || (x.time == y.time && x.id < y.id);
-  }
+  static bool before(const Entry& x, const Entry& y) { return x.time < y.time || (x.time == y.time && x.id < y.id); }
   void sift_up(std::size_t k);
   void sift_down(std::size_t k);
   void place(std::size_t k, const Entry& e) {
@@ -68,14 +66,17 @@ class CalendarEventQueue {
   std::size_t size() const { return size_; }
   /// Earliest event (time, id); the queue must not be empty (not const: it may advance buckets).
   std::pair<double, std::int32_t> top() {
-    if (sorted_size_ > 0) return {sorted_[sorted_size_ - 1].time, sorted_[sorted_size_ - 1].id};  // every event's fast path
+    if (sorted_size_ > 0)
+      return {sorted_[sorted_size_ - 1].time, sorted_[sorted_size_ - 1].id};  // every event's fast path
     if (!heap_.empty()) return heap_.top();
     return top_slow();
   }
   void pop() {
     const std::int32_t id = top().second;
-    if (sorted_size_ > 0) --sorted_size_;
-    else heap_.pop();
+    if (sorted_size_ > 0)
+      --sorted_size_;
+    else
+      heap_.pop();
     where_[id] = absent;
     --size_;
     if (++pops_ == adapt_interval) adapt();
@@ -139,16 +140,16 @@ class CalendarEventQueue {
   std::array<Entry, sorted_limit> sorted_;
   std::size_t sorted_size_ = 0;
   HeapEventQueue heap_;
-  HugeVector<std::int32_t> head_;     // bucket lists, circular over bucket_count
+  HugeVector<std::int32_t> head_;         // bucket lists, circular over bucket_count
   HugeVector<std::int32_t> next_, prev_;  // doubly linked lists (buckets and overflow)
-  HugeVector<std::int32_t> where_;    // bucket slot, in_heap, in_overflow or absent
-  HugeVector<double> time_;           // event time per id
-  std::int32_t overflow_ = -1;         // overflow list head
-  std::int64_t mask_ = 0;              // bucket_count - 1 (a power of two)
+  HugeVector<std::int32_t> where_;        // bucket slot, in_heap, in_overflow or absent
+  HugeVector<double> time_;               // event time per id
+  std::int32_t overflow_ = -1;            // overflow list head
+  std::int64_t mask_ = 0;                 // bucket_count - 1 (a power of two)
   // Before the width is known both are at their minimum, so every event goes to the overflow list.
   std::int64_t current_ = unknown_bucket;     // absolute index of the current bucket
   std::int64_t window_end_ = unknown_bucket;  // lists hold buckets < window_end_, overflow the rest
-  double width_ = 1.0;                 // bucket width (time)
+  double width_ = 1.0;                        // bucket width (time)
   double inverse_width_ = 1.0;
   std::size_t size_ = 0, in_lists_ = 0, overflow_size_ = 0;
   std::uint64_t pops_ = 0, advances_ = 0;

@@ -40,13 +40,19 @@ struct HugePageAllocator {
     return static_cast<T*>(p);
   }
   void deallocate(T* p, std::size_t count) noexcept {
-    if (!huge(count * sizeof(T))) ::operator delete(p, std::align_val_t(alignof(T)));
-    else std::free(p);
+    if (!huge(count * sizeof(T)))
+      ::operator delete(p, std::align_val_t(alignof(T)));
+    else
+      std::free(p);
   }
   template <class U>
-  bool operator==(const HugePageAllocator<U>&) const noexcept { return true; }
+  bool operator==(const HugePageAllocator<U>&) const noexcept {
+    return true;
+  }
   template <class U>
-  bool operator!=(const HugePageAllocator<U>&) const noexcept { return false; }
+  bool operator!=(const HugePageAllocator<U>&) const noexcept {
+    return false;
+  }
 };
 
 /// A vector whose large buffers live on huge pages.

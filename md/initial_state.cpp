@@ -22,7 +22,9 @@ std::mt19937_64 realization_rng(std::uint64_t seed, std::uint64_t index) {
   return std::mt19937_64(sequence);
 }
 
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double uniform01(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 double standard_normal(std::mt19937_64& rng) {
   constexpr double two_pi = 6.283185307179586476925;
@@ -128,8 +130,9 @@ std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t
     const Vec<D> x = uniform_in_ball<D>(rng, region_radius);
     if (grid.overlaps(x, radius, centres, same_radius)) {
       if (++failures > max_failures)
-        throw std::runtime_error("random sequential addition stalled after " + std::to_string(centres.size()) +
-                                 " of " + std::to_string(count) + " particles: the packing fraction is too close to RSA jamming");
+        throw std::runtime_error("random sequential addition stalled after " + std::to_string(centres.size()) + " of " +
+                                 std::to_string(count) +
+                                 " particles: the packing fraction is too close to RSA jamming");
       continue;
     }
     centres.push_back(x);
@@ -239,7 +242,8 @@ InitialState<D> lattice_start(std::mt19937_64& rng, std::size_t count, double ra
   const std::size_t per_axis = static_cast<std::size_t>(per_axis_real);
   for (int k = 0; k < D; ++k)
     if (box[k] / per_axis < 2.0 * radius)
-      throw std::invalid_argument("the lattice start does not fit: packing fraction too high for a simple cubic lattice");
+      throw std::invalid_argument(
+          "the lattice start does not fit: packing fraction too high for a simple cubic lattice");
   state.position.resize(count);
   state.velocity.resize(count);
   state.species.assign(count, host_species);

@@ -211,7 +211,8 @@ BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options
       int bytes = 0;
       MPI_Get_count(&status, MPI_BYTE, &bytes);
       buffer.resize(static_cast<std::size_t>(bytes));
-      check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+      check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+                     MPI_STATUS_IGNORE),
             "MPI_Recv");
       Reader reader(buffer);
       const auto kind = reader.get<std::int64_t>();

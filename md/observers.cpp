@@ -62,7 +62,8 @@ BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const Observa
       impurities_.push_back(static_cast<std::int32_t>(i));
   for (const std::int32_t id : impurities_) {
     initial_position_.push_back(engine.position(id));
-    if (scene.wants("u_imp") || scene.wants("u_flow")) local_radius_.push_back(radius_holding(engine.position(id), held_particles, id));
+    if (scene.wants("u_imp") || scene.wants("u_flow"))
+      local_radius_.push_back(radius_holding(engine.position(id), held_particles, id));
   }
   if (scene.wants("n0") || scene.wants("T0")) core_radius_ = radius_holding(Vec<D>::Zero(), held_particles, -1);
 }
@@ -94,7 +95,7 @@ double BlastObserver<D, Queue>::shock_radius() const {
 
 double flow_speed_squared_estimate(double sum_norm_squared, double sum_squares, int count) {
   const double N = count;
-  const double mean_squared = sum_norm_squared / (N * N);                 // |ū|²
+  const double mean_squared = sum_norm_squared / (N * N);                // |ū|²
   const double variance = (sum_squares - N * mean_squared) / (N - 1.0);  // s², summed over components
   return mean_squared - variance / N;
 }

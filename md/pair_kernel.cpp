@@ -29,7 +29,7 @@ bool pair_kernel_available() {
 namespace {
 // 4x4 transpose of rows r0..r3 (each one candidate's four doubles) into columns.
 __attribute__((target("avx2"))) inline void transpose4(__m256d r0, __m256d r1, __m256d r2, __m256d r3, __m256d& c0,
-                                                      __m256d& c1, __m256d& c2, __m256d& c3) {
+                                                       __m256d& c1, __m256d& c2, __m256d& c3) {
   const __m256d t0 = _mm256_unpacklo_pd(r0, r1);  // r0[0] r1[0] r0[2] r1[2]
   const __m256d t1 = _mm256_unpackhi_pd(r0, r1);  // r0[1] r1[1] r0[3] r1[3]
   const __m256d t2 = _mm256_unpacklo_pd(r2, r3);
@@ -41,9 +41,8 @@ __attribute__((target("avx2"))) inline void transpose4(__m256d r0, __m256d r1, _
 }
 }  // namespace
 
-__attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<3>* particles,
-                                                                 const std::int32_t* ids, int count,
-                                                                 const CandidateShifts& shifts,
+__attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<3>* particles, const std::int32_t* ids,
+                                                                 int count, const CandidateShifts& shifts,
                                                                  const Vec<3>& position, const Vec<3>& velocity,
                                                                  double time, double sigma2, double before) {
   if (count % 4 != 0) throw std::invalid_argument("earliest_contact: count is not a multiple of 4");
@@ -66,17 +65,20 @@ __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<
     const double* d = reinterpret_cast<const double*>(particles + ids[k + 3]);
     __m256d qx, qy, qz, qvx, qvy, qvz, qt, unused;
     transpose4(_mm256_load_pd(a), _mm256_load_pd(b), _mm256_load_pd(c), _mm256_load_pd(d), qx, qy, qz, qvx);
-    transpose4(_mm256_load_pd(a + 4), _mm256_load_pd(b + 4), _mm256_load_pd(c + 4), _mm256_load_pd(d + 4), qvy, qvz,
-               qt, unused);
+    transpose4(_mm256_load_pd(a + 4), _mm256_load_pd(b + 4), _mm256_load_pd(c + 4), _mm256_load_pd(d + 4), qvy, qvz, qt,
+               unused);
     (void)unused;
     // reference = max(time, q.time); own = position + velocity (reference - time)
     const __m256d reference = _mm256_max_pd(own_time, qt);
     const __m256d own_dt = _mm256_sub_pd(reference, own_time);
     const __m256d q_dt = _mm256_sub_pd(reference, qt);
     // dr = (q.position + q.velocity (reference - q.time) - own) [+ shift]
-    __m256d dx = _mm256_sub_pd(_mm256_add_pd(qx, _mm256_mul_pd(qvx, q_dt)), _mm256_add_pd(px, _mm256_mul_pd(vx, own_dt)));
-    __m256d dy = _mm256_sub_pd(_mm256_add_pd(qy, _mm256_mul_pd(qvy, q_dt)), _mm256_add_pd(py, _mm256_mul_pd(vy, own_dt)));
-    __m256d dz = _mm256_sub_pd(_mm256_add_pd(qz, _mm256_mul_pd(qvz, q_dt)), _mm256_add_pd(pz, _mm256_mul_pd(vz, own_dt)));
+    __m256d dx =
+        _mm256_sub_pd(_mm256_add_pd(qx, _mm256_mul_pd(qvx, q_dt)), _mm256_add_pd(px, _mm256_mul_pd(vx, own_dt)));
+    __m256d dy =
+        _mm256_sub_pd(_mm256_add_pd(qy, _mm256_mul_pd(qvy, q_dt)), _mm256_add_pd(py, _mm256_mul_pd(vy, own_dt)));
+    __m256d dz =
+        _mm256_sub_pd(_mm256_add_pd(qz, _mm256_mul_pd(qvz, q_dt)), _mm256_add_pd(pz, _mm256_mul_pd(vz, own_dt)));
     if (shifts.x != nullptr) {
       dx = _mm256_add_pd(dx, _mm256_loadu_pd(shifts.x + k));
       dy = _mm256_add_pd(dy, _mm256_loadu_pd(shifts.y + k));
@@ -84,8 +86,10 @@ __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<
     }
     const __m256d ux = _mm256_sub_pd(qvx, vx), uy = _mm256_sub_pd(qvy, vy), uz = _mm256_sub_pd(qvz, vz);
     // b = dr.dv, v2 = |dv|^2, c = |dr|^2 - sigma2, summed as Eigen sums a 3-vector: (0 + 1) + 2
-    const __m256d bb = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, ux), _mm256_mul_pd(dy, uy)), _mm256_mul_pd(dz, uz));
-    const __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ux, ux), _mm256_mul_pd(uy, uy)), _mm256_mul_pd(uz, uz));
+    const __m256d bb =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, ux), _mm256_mul_pd(dy, uy)), _mm256_mul_pd(dz, uz));
+    const __m256d v2 =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ux, ux), _mm256_mul_pd(uy, uy)), _mm256_mul_pd(uz, uz));
     const __m256d cc = _mm256_sub_pd(
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)), s2);
     const __m256d disc = _mm256_sub_pd(_mm256_mul_pd(bb, bb), _mm256_mul_pd(v2, cc));
@@ -93,8 +97,9 @@ __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<
     const __m256d root = _mm256_sqrt_pd(_mm256_max_pd(disc, zero));
     const __m256d tau = _mm256_div_pd(cc, _mm256_add_pd(_mm256_xor_pd(bb, sign), root));
     const __m256d t = _mm256_add_pd(reference, _mm256_max_pd(tau, zero));
-    const __m256d hit = _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(bb, zero, _CMP_LT_OQ), _mm256_cmp_pd(disc, zero, _CMP_GE_OQ)),
-                                      _mm256_cmp_pd(t, lane_best, _CMP_LT_OQ));
+    const __m256d hit =
+        _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(bb, zero, _CMP_LT_OQ), _mm256_cmp_pd(disc, zero, _CMP_GE_OQ)),
+                      _mm256_cmp_pd(t, lane_best, _CMP_LT_OQ));
     lane_best = _mm256_blendv_pd(lane_best, t, hit);
     lane_index = _mm256_blendv_pd(lane_index, index, hit);
     index = _mm256_add_pd(index, four);
@@ -139,7 +144,9 @@ __attribute__((target("avx2"))) double earliest_crossing(const Vec<3>& position,
 
 #else
 
-bool pair_kernel_available() { return false; }
+bool pair_kernel_available() {
+  return false;
+}
 
 double earliest_crossing(const Vec<3>&, const Vec<3>&, const double*, const double*, std::uint8_t&) {
   throw std::logic_error("earliest_crossing: the AVX2 kernel is not built for this CPU");

@@ -2,10 +2,9 @@
 // Particle state of the event-driven engine (paper Sec. V): hard discs/spheres with lazy
 // per-particle time (a particle's position is stored at its own last-update time; Smallenburg's
 // EDMD idea), a collision counter that invalidates stale predictions, and two species (host, impurity).
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace coldblast::md {
 

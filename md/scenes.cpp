@@ -1,12 +1,12 @@
 #include "md/scenes.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
-
-#include <toml++/toml.h>
 
 #include "common/validate.hpp"
 #include "md/initial_state.hpp"
@@ -48,7 +48,8 @@ double number(const toml::node& node, const std::string& key) {
 }
 long long integer(const toml::node& node, const std::string& key) {
   if (node.is_integer()) return *node.value<long long>();
-  if (auto v = node.value<double>(); v && std::floor(*v) == *v && std::abs(*v) < 9e15) return static_cast<long long>(*v);
+  if (auto v = node.value<double>(); v && std::floor(*v) == *v && std::abs(*v) < 9e15)
+    return static_cast<long long>(*v);
   throw std::invalid_argument("scene key " + key + " must be an integer");
 }
 std::string text(const toml::node& node, const std::string& key) {
@@ -83,10 +84,15 @@ toml::table parse_table(const std::string& text_in, const std::string& source) {
 void apply_impurities(const toml::table& table, ImpurityConfig& impurities) {
   for (auto&& [key_view, node] : table) {
     const std::string key(key_view.str());
-    if (key == "count") impurities.count = static_cast<int>(std::clamp<long long>(integer(node, "impurities.count"), INT32_MIN, INT32_MAX));
-    else if (key == "mass") impurities.mass = number(node, "impurities.mass");
-    else if (key == "radius") impurities.radius = number(node, "impurities.radius");
-    else throw std::invalid_argument("unknown scene key impurities." + key + " (allowed: count, mass, radius)");
+    if (key == "count")
+      impurities.count =
+          static_cast<int>(std::clamp<long long>(integer(node, "impurities.count"), INT32_MIN, INT32_MAX));
+    else if (key == "mass")
+      impurities.mass = number(node, "impurities.mass");
+    else if (key == "radius")
+      impurities.radius = number(node, "impurities.radius");
+    else
+      throw std::invalid_argument("unknown scene key impurities." + key + " (allowed: count, mass, radius)");
   }
 }
 
@@ -94,26 +100,42 @@ BlastConfig config_from_table(const toml::table& table) {
   BlastConfig c;
   for (auto&& [key_view, node] : table) {
     const std::string key(key_view.str());
-    if (key == "name") c.name = text(node, key);
-    else if (key == "d") c.d = static_cast<int>(std::clamp<long long>(integer(node, key), -1000, 1000));
-    else if (key == "n") c.n = number(node, key);
-    else if (key == "a") c.a = number(node, key);
-    else if (key == "E") c.E = number(node, key);
-    else if (key == "A_d") c.A_d = number(node, key);
-    else if (key == "t_min") c.t_min = number(node, key);
-    else if (key == "t_max") c.t_max = number(node, key);
-    else if (key == "realizations") c.realizations = integer(node, key);
+    if (key == "name")
+      c.name = text(node, key);
+    else if (key == "d")
+      c.d = static_cast<int>(std::clamp<long long>(integer(node, key), -1000, 1000));
+    else if (key == "n")
+      c.n = number(node, key);
+    else if (key == "a")
+      c.a = number(node, key);
+    else if (key == "E")
+      c.E = number(node, key);
+    else if (key == "A_d")
+      c.A_d = number(node, key);
+    else if (key == "t_min")
+      c.t_min = number(node, key);
+    else if (key == "t_max")
+      c.t_max = number(node, key);
+    else if (key == "realizations")
+      c.realizations = integer(node, key);
     else if (key == "seed") {
       const long long s = integer(node, key);
       require_integer_in_range("seed", s, 0, std::numeric_limits<long long>::max());
       c.seed = static_cast<std::uint64_t>(s);
-    } else if (key == "block_size") c.block_size = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
-    else if (key == "box_margin") c.box_margin = number(node, key);
-    else if (key == "cell_width") c.cell_width = number(node, key);
-    else if (key == "queue") c.queue = text(node, key);
-    else if (key == "profile_bins") c.profile_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
-    else if (key == "p_imp_bins") c.p_imp_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
-    else if (key == "overlap_check") c.overlap_check = boolean(node, key);
+    } else if (key == "block_size")
+      c.block_size = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
+    else if (key == "box_margin")
+      c.box_margin = number(node, key);
+    else if (key == "cell_width")
+      c.cell_width = number(node, key);
+    else if (key == "queue")
+      c.queue = text(node, key);
+    else if (key == "profile_bins")
+      c.profile_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+    else if (key == "p_imp_bins")
+      c.p_imp_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+    else if (key == "overlap_check")
+      c.overlap_check = boolean(node, key);
     else if (key == "observables" || key == "snapshot_times") {
       const toml::array* array = node.as_array();
       if (!array) throw std::invalid_argument("scene key " + key + " must be an array");
@@ -154,12 +176,14 @@ const std::vector<std::string>& scalar_observable_names() {
 }
 
 const std::vector<std::string>& known_observable_names() {
-  static const std::vector<std::string> names{"R_imp", "V_imp",    "C_imp", "u_imp",     "u_flow",      "n0",
-                                              "T0",    "R",        "profiles", "p_imp", "snapshots", "trajectories"};
+  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp",    "u_imp", "u_flow",    "n0",
+                                              "T0",    "R",     "profiles", "p_imp", "snapshots", "trajectories"};
   return names;
 }
 
-const std::string& default_scene_toml() { return default_scene; }
+const std::string& default_scene_toml() {
+  return default_scene;
+}
 
 double ideal_gas_amplitude(int d) {
   if (d == 2) return 0.351935906848599;  // Eq. (3), γ = 2 (hydro::solve_tvns, ±2.5e-14)
@@ -215,8 +239,9 @@ void BlastConfig::validate() const {
   const auto& known = known_observable_names();
   for (const std::string& o : observables)
     if (std::find(known.begin(), known.end(), o) == known.end())
-      throw std::invalid_argument("observables: unknown observable " + o +
-                                  " (allowed: R_imp, V_imp, C_imp, u_imp, u_flow, n0, T0, R, profiles, p_imp, snapshots, trajectories)");
+      throw std::invalid_argument(
+          "observables: unknown observable " + o +
+          " (allowed: R_imp, V_imp, C_imp, u_imp, u_flow, n0, T0, R, profiles, p_imp, snapshots, trajectories)");
   for (const double t : snapshot_times)
     require_in_range("snapshot_times", t, 0.0, t_max, Bound::open, Bound::closed, " (within (0, t_max])");
 }
@@ -270,8 +295,7 @@ ResolvedScene resolve_scene(const BlastConfig& config) {
     s.times.push_back(t);
   }
   s.snapshot_times = c.snapshot_times;
-  if (s.snapshot_times.empty())
-    s.snapshot_times = {0.25 * c.t_max, 0.5 * c.t_max, 0.75 * c.t_max, c.t_max};
+  if (s.snapshot_times.empty()) s.snapshot_times = {0.25 * c.t_max, 0.5 * c.t_max, 0.75 * c.t_max, c.t_max};
   std::sort(s.snapshot_times.begin(), s.snapshot_times.end());
   return s;
 }

@@ -18,26 +18,26 @@ struct ImpurityConfig {
 
 /// One blast scene: physics, recording and ensemble keys (units: m = 1, k_B = 1, length = a units as given).
 struct BlastConfig {
-  std::string name = "default";       ///< label written to the outputs
-  int d = 2;                          ///< dimension, 2 or 3
-  double n = 0.15;                    ///< ambient number density n∞ (1/length^d), > 0
-  double a = 0.5;                     ///< host radius (length), > 0
-  double E = 10.0;                    ///< injected energy (m length²/time²), > 0
-  double A_d = 0.0;                   ///< TvNS amplitude of Eq. (1); 0 = not given (ideal-gas value is used)
+  std::string name = "default";  ///< label written to the outputs
+  int d = 2;                     ///< dimension, 2 or 3
+  double n = 0.15;               ///< ambient number density n∞ (1/length^d), > 0
+  double a = 0.5;                ///< host radius (length), > 0
+  double E = 10.0;               ///< injected energy (m length²/time²), > 0
+  double A_d = 0.0;              ///< TvNS amplitude of Eq. (1); 0 = not given (ideal-gas value is used)
   ImpurityConfig impurities;
-  double t_min = 1.0;                 ///< first recording time t_0 (time), in (0, t_max]
-  double t_max = 200.0;               ///< last recording time (time), > 0
-  long long realizations = 32;        ///< number of independent initial conditions, >= 1
-  std::uint64_t seed = 1;             ///< master seed; realization i uses splitmix64(seed, i)
-  int block_size = 16;                ///< realizations per block for jackknife errors (compare/)
+  double t_min = 1.0;           ///< first recording time t_0 (time), in (0, t_max]
+  double t_max = 200.0;         ///< last recording time (time), > 0
+  long long realizations = 32;  ///< number of independent initial conditions, >= 1
+  std::uint64_t seed = 1;       ///< master seed; realization i uses splitmix64(seed, i)
+  int block_size = 16;          ///< realizations per block for jackknife errors (compare/)
   std::vector<std::string> observables{"R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"};
-  double box_margin = 3.0;            ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25 (3: safe for small blasts)
-  double cell_width = 0.0;            ///< cell side (length); 0 = automatic
-  std::string queue = "calendar";     ///< event calendar: "calendar" (bucketed) or "heap"
-  std::vector<double> snapshot_times; ///< times of snapshot_<t>.csv (realization 0); empty = t_max/4, /2, 3/4, 1
-  int profile_bins = 30;              ///< bins of r/R in [0, 1.5) for profiles.csv
-  int p_imp_bins = 60;                ///< bins of r in [0, R(t)) for p_imp.csv
-  bool overlap_check = false;         ///< check for overlaps after every event (slow; for tests)
+  double box_margin = 3.0;  ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25 (3: safe for small blasts)
+  double cell_width = 0.0;             ///< cell side (length); 0 = automatic
+  std::string queue = "calendar";      ///< event calendar: "calendar" (bucketed) or "heap"
+  std::vector<double> snapshot_times;  ///< times of snapshot_<t>.csv (realization 0); empty = t_max/4, /2, 3/4, 1
+  int profile_bins = 30;               ///< bins of r/R in [0, 1.5) for profiles.csv
+  int p_imp_bins = 60;                 ///< bins of r in [0, R(t)) for p_imp.csv
+  bool overlap_check = false;          ///< check for overlaps after every event (slow; for tests)
 
   /// Throws std::invalid_argument naming the first key out of its allowed range.
   void validate() const;
@@ -64,15 +64,15 @@ double ideal_gas_amplitude(int d);
 /// Quantities derived from a validated scene.
 struct ResolvedScene {
   BlastConfig config;
-  double A_d;                  ///< amplitude used (config.A_d or the ideal-gas value)
-  std::string A_d_source;      ///< "scene" or "ideal gas"
-  double phi, lambda;          ///< packing fraction (Eq. 2) and mean free path (Eq. 5)
-  double impurity_radius;      ///< resolved impurity radius
+  double A_d;                    ///< amplitude used (config.A_d or the ideal-gas value)
+  std::string A_d_source;        ///< "scene" or "ideal gas"
+  double phi, lambda;            ///< packing fraction (Eq. 2) and mean free path (Eq. 5)
+  double impurity_radius;        ///< resolved impurity radius
   double shock_radius_at_t_max;  ///< Eq. (1) at t_max
-  double region_radius;        ///< particles are placed within this radius of the origin
-  double guard_radius;         ///< moving particles must stay inside (region_radius - 2 sigma)
-  std::size_t particle_count;  ///< round(n Ω_d region_radius^d)
-  std::vector<double> times;   ///< recording times t_k = t_min 2^(k/4) <= t_max
+  double region_radius;          ///< particles are placed within this radius of the origin
+  double guard_radius;           ///< moving particles must stay inside (region_radius - 2 sigma)
+  std::size_t particle_count;    ///< round(n Ω_d region_radius^d)
+  std::vector<double> times;     ///< recording times t_k = t_min 2^(k/4) <= t_max
   std::vector<double> snapshot_times;
   bool wants(const std::string& observable) const;
 };

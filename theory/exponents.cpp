@@ -42,26 +42,26 @@ ScalingExponents scaling_exponents(int d) {
   auto law = [&](const Rational& in_R) { return Exponent{in_R, in_R * to_time}; };
 
   s.R = law(Rational(1));
-  s.H = law(s.h_d);                                        // Eq. (4) [size-dim]
-  s.R_imp = law(s.h_d);                                    // Eq. (6) [R-imp]
-  s.C_imp = law(Rational(8 + 2 * d2, 8 + 3 * d2));         // Eq. (10) [C-imp], (24) [C-imp-long]
-  s.V_imp = law(-s.omega_d);                               // Eq. (7) [V-imp]
-  s.u_imp = law(-(half_d + 1 - s.h_d));                    // Eq. (22) [u-imp-phi]
-  s.n0 = law(-(Rational(d) - 2 * s.omega_d));              // Eq. (11) [eq:coren], (19) [n0]
-  s.T0 = law(-2 * s.omega_d);                              // Eq. (12) [eq:coreT], (20) [T0]
-  s.D0 = law(-(3 * s.omega_d - d));                        // Eq. (21) [D:imp]
+  s.H = law(s.h_d);                                 // Eq. (4) [size-dim]
+  s.R_imp = law(s.h_d);                             // Eq. (6) [R-imp]
+  s.C_imp = law(Rational(8 + 2 * d2, 8 + 3 * d2));  // Eq. (10) [C-imp], (24) [C-imp-long]
+  s.V_imp = law(-s.omega_d);                        // Eq. (7) [V-imp]
+  s.u_imp = law(-(half_d + 1 - s.h_d));             // Eq. (22) [u-imp-phi]
+  s.n0 = law(-(Rational(d) - 2 * s.omega_d));       // Eq. (11) [eq:coren], (19) [n0]
+  s.T0 = law(-2 * s.omega_d);                       // Eq. (12) [eq:coreT], (20) [T0]
+  s.D0 = law(-(3 * s.omega_d - d));                 // Eq. (21) [D:imp]
   return s;
 }
 
 std::vector<std::pair<std::string, Exponent>> ScalingExponents::named() const {
-  return {{"R", R},         {"H", H},         {"R_imp", R_imp}, {"C_imp", C_imp}, {"V_imp", V_imp},
-          {"u_imp", u_imp}, {"n0", n0},       {"T0", T0},       {"D0", D0}};
+  return {{"R", R},         {"H", H},   {"R_imp", R_imp}, {"C_imp", C_imp}, {"V_imp", V_imp},
+          {"u_imp", u_imp}, {"n0", n0}, {"T0", T0},       {"D0", D0}};
 }
 
 const Exponent& ScalingExponents::at(const std::string& name) const {
-  const std::pair<const char*, const Exponent*> table[] = {
-      {"R", &R},         {"H", &H},   {"R_imp", &R_imp}, {"C_imp", &C_imp}, {"V_imp", &V_imp},
-      {"u_imp", &u_imp}, {"n0", &n0}, {"T0", &T0},       {"D0", &D0}};
+  const std::pair<const char*, const Exponent*> table[] = {{"R", &R},         {"H", &H},         {"R_imp", &R_imp},
+                                                           {"C_imp", &C_imp}, {"V_imp", &V_imp}, {"u_imp", &u_imp},
+                                                           {"n0", &n0},       {"T0", &T0},       {"D0", &D0}};
   for (const auto& [key, value] : table)
     if (name == key) return *value;
   throw std::invalid_argument("observable = " + name +
@@ -72,9 +72,9 @@ ConvectionDiffusionExponents convection_diffusion_exponents(int d) {
   const ScalingExponents s = scaling_exponents(d);
   ConvectionDiffusionExponents c;
   c.d = d;
-  c.drift = s.u_imp.in_time;      // Eq. (25) [eq:imp-conv-diff]: drift u_imp
-  c.diffusion = s.D0.in_time;     // Eq. (21) [D:imp]
-  c.spread = s.R_imp.in_time;     // Eqs. (27) [eq:Prt-2d-scal], (33) [eq:Prt-3d-scal]
+  c.drift = s.u_imp.in_time;   // Eq. (25) [eq:imp-conv-diff]: drift u_imp
+  c.diffusion = s.D0.in_time;  // Eq. (21) [D:imp]
+  c.spread = s.R_imp.in_time;  // Eqs. (27) [eq:Prt-2d-scal], (33) [eq:Prt-3d-scal]
   c.density = Rational(d) * c.spread;
   // Substituting the scaling form into ∂t P = t^diffusion ∇²P (diffusion = 2*spread - 1) gives
   // -spread (η^d 𝒫)' = (η^(d-1) 𝒫')', hence 𝒫 ∝ exp(-spread η²/2): Eqs. (31) [eq:2d-scal], (34) [3d-scal].

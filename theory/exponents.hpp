@@ -2,11 +2,10 @@
 // The paper's scaling laws as exact rationals for any integer dimension d >= 1: h_d, omega_d, the
 // exponents of R, H, R_imp, C_imp, V_imp, u_imp, n0, T0, D_0 in R/lambda and in t (paper Sec. II,
 // Sec. III and Table 2), and the convection-diffusion scaling of Sec. IV (Eqs. Prt-2d ... Prt-d).
+#include <boost/rational.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <boost/rational.hpp>
 
 namespace coldblast::theory {
 

@@ -18,7 +18,9 @@ using common::require_integer_in_range;
 void check_dimension(int d, int lo = min_dimension) {
   require_integer_in_range("d", d, lo, max_dimension);
 }
-void check_positive(const char* name, double value) { require_in_range(name, value, 0.0, inf); }
+void check_positive(const char* name, double value) {
+  require_in_range(name, value, 0.0, inf);
+}
 }  // namespace
 
 double unit_ball_volume(int d) {
@@ -92,15 +94,15 @@ ScalingEstimates scaling_estimates(const BlastParameters& p, double t) {
   const double x = s.R_over_lambda;
   const ScalingExponents e = scaling_exponents(p.d);
   const double sqrtE_phi = std::sqrt(p.E) * std::pow(s.phi, 0.5 * (p.d - 1));
-  s.H = s.lambda * std::pow(x, to_double(e.H.in_R_over_lambda));          // Eq. (4) [size-dim]
-  s.R_imp = s.lambda * std::pow(x, to_double(e.R_imp.in_R_over_lambda));  // Eq. (6) [R-imp]
-  s.V_imp = sqrtE_phi * std::pow(x, to_double(e.V_imp.in_R_over_lambda)); // Eq. (8) [V-imp-phi]
-  s.u_imp = sqrtE_phi * std::pow(x, to_double(e.u_imp.in_R_over_lambda)); // Eq. (9)
-  s.C_imp = std::pow(x, to_double(e.C_imp.in_R_over_lambda));             // Eq. (10) [C-imp]
-  s.n0 = p.n * std::pow(x, to_double(e.n0.in_R_over_lambda));             // Eq. (11) [eq:coren]
-  s.T0 = p.E * std::pow(p.a / s.lambda, p.d - 1) *
-         std::pow(x, to_double(e.T0.in_R_over_lambda));                   // Eq. (12) [eq:coreT]
-  s.D0 = s.lambda * sqrtE_phi * std::pow(x, to_double(e.D0.in_R_over_lambda));  // Eq. (21) [D:imp]
+  s.H = s.lambda * std::pow(x, to_double(e.H.in_R_over_lambda));           // Eq. (4) [size-dim]
+  s.R_imp = s.lambda * std::pow(x, to_double(e.R_imp.in_R_over_lambda));   // Eq. (6) [R-imp]
+  s.V_imp = sqrtE_phi * std::pow(x, to_double(e.V_imp.in_R_over_lambda));  // Eq. (8) [V-imp-phi]
+  s.u_imp = sqrtE_phi * std::pow(x, to_double(e.u_imp.in_R_over_lambda));  // Eq. (9)
+  s.C_imp = std::pow(x, to_double(e.C_imp.in_R_over_lambda));              // Eq. (10) [C-imp]
+  s.n0 = p.n * std::pow(x, to_double(e.n0.in_R_over_lambda));              // Eq. (11) [eq:coren]
+  s.T0 =
+      p.E * std::pow(p.a / s.lambda, p.d - 1) * std::pow(x, to_double(e.T0.in_R_over_lambda));  // Eq. (12) [eq:coreT]
+  s.D0 = s.lambda * sqrtE_phi * std::pow(x, to_double(e.D0.in_R_over_lambda));                  // Eq. (21) [D:imp]
   return s;
 }
 

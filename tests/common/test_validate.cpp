@@ -1,3 +1,4 @@
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -5,8 +6,6 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
-
-#include <catch2/catch.hpp>
 
 #include "common/validate.hpp"
 

@@ -11,8 +11,8 @@
 
 namespace coldblast::compare::testing {
 
-inline BlockSeries synthetic_series(unsigned seed, int blocks, int per_block, int times, double beta,
-                                    double sigma, double rho, Transform transform = Transform::identity) {
+inline BlockSeries synthetic_series(unsigned seed, int blocks, int per_block, int times, double beta, double sigma,
+                                    double rho, Transform transform = Transform::identity) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   BlockSeries s;

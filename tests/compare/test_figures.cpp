@@ -1,14 +1,13 @@
 // The figure data compare/ writes from recorded runs: MD radial profiles stop at the edge of the
 // simulated ball (data/campaign3-3d: region radius 148.7 = 1.31 R at t_max), so empty bins beyond
 // it are not drawn as vacuum.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
-
-#include <unistd.h>
-
-#include <catch2/catch.hpp>
 
 #include "compare/figures.hpp"
 #include "compare/run_data.hpp"
@@ -74,9 +73,8 @@ RunData histogram_run(const std::string& name, Density density) {
 
 TEST_CASE("the impurity distribution's shape statistics: a Gaussian gives (d+2)/d, r exp(-r^4) gives pi/2", "[fast]") {
   // Eq. (39) with R_imp = 1.3: <r^4>/<r^2>^2 = 2 in 2D whatever the width, chi^2 = 0 at the fit
-  const RunData gaussian = histogram_run("coldblast_shape_gaussian", [](double r) {
-    return coldblast::theory::radial_position_density(2, r, 1.3);
-  });
+  const RunData gaussian = histogram_run(
+      "coldblast_shape_gaussian", [](double r) { return coldblast::theory::radial_position_density(2, r, 1.3); });
   const auto g = fit_impurity_distribution(gaussian);
   REQUIRE(g);
   CHECK(g->b_fit == Approx(1.3).epsilon(1e-6));

@@ -1,9 +1,8 @@
 // The hydro reference maps Navier–Stokes core exponents onto the MD observables (Sec. III):
 // checked on a synthetic Navier–Stokes result with exact 2D power laws, where every mapped
 // exponent must equal the theory's rational (C_imp through the ∫ n0 √T0 dt quadrature).
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "compare/hydro_reference.hpp"
 #include "theory/exponents.hpp"

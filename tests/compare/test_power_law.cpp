@@ -1,8 +1,7 @@
 // compare/ recovers known exponents from synthetic noisy power laws, and its jackknife error bars
 // have the right coverage (about 68 % of seeds within 1 sigma).
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "compare/power_law.hpp"
 #include "synthetic.hpp"

@@ -3,12 +3,11 @@
 // statistical error at every recorded time from t = 256 on. The bound is 4.5 sigma per point; with
 // ~70 points the chance of a false alarm is ~5e-4. A change of physics, seeding or observable
 // definition moves the means by many sigma.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
-
-#include <catch2/catch.hpp>
 
 #include "md/ensemble.hpp"
 #include "md/scenes.hpp"
@@ -23,8 +22,9 @@ TEST_CASE("a fresh small ensemble of the paper scene is consistent with data/pap
   std::stringstream scene_text;
   scene_text << scene_file.rdbuf();
   const unsigned seed = 20261121;
-  md::BlastConfig scene = md::parse_scene(scene_text.str(), {"realizations=48", "block_size=4",
-                                          "seed=" + std::to_string(seed), "observables=[\"R_imp\",\"V_imp\",\"C_imp\",\"n0\",\"T0\",\"R\"]"});
+  md::BlastConfig scene =
+      md::parse_scene(scene_text.str(), {"realizations=48", "block_size=4", "seed=" + std::to_string(seed),
+                                         "observables=[\"R_imp\",\"V_imp\",\"C_imp\",\"n0\",\"T0\",\"R\"]"});
   md::RunOptions options;
   options.threads = 2;
   const md::BlastResult fresh = md::run_blast(scene, options);

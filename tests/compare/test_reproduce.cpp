@@ -1,9 +1,8 @@
 // End to end on a tiny scale: every step runs, the files exist, and the numbers that have an
 // exact reference (A_2, A_3, the NS exponents' approach, the MD's energy conservation) hold.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
-
-#include <catch2/catch.hpp>
 
 #include "compare/reproduce.hpp"
 

@@ -1,7 +1,6 @@
 // Reading an MD run directory: blocks.csv parsing, ensemble values, and loud errors.
-#include <filesystem>
-
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 #include "common/output.hpp"
 #include "compare/run_data.hpp"
@@ -34,7 +33,8 @@ TEST_CASE("blocks.csv is parsed into dense block series with count-weighted mean
 }
 
 TEST_CASE("malformed blocks.csv names the file, the line and the problem", "[fast]") {
-  CHECK_THROWS_WITH(parse_blocks_csv("t,observable\n", "f.csv"), Catch::Contains("f.csv line 1") && Catch::Contains("header"));
+  CHECK_THROWS_WITH(parse_blocks_csv("t,observable\n", "f.csv"),
+                    Catch::Contains("f.csv line 1") && Catch::Contains("header"));
   CHECK_THROWS_WITH(parse_blocks_csv("block,t,observable,sum,count\n0,1,speed,1,1\n", "f.csv"),
                     Catch::Contains("speed"));
   CHECK_THROWS_WITH(parse_blocks_csv("block,t,observable,sum,count\n0,x,R_imp,1,1\n", "f.csv"),

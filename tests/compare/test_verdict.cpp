@@ -1,14 +1,13 @@
 // Verdicts on synthetic runs whose exponents are known: the exact rationals pass against theory,
 // a wrong exponent fails, the paper reference combines both errors, and bad configs are rejected.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <system_error>
 #include <vector>
-
-#include <unistd.h>
-
-#include <catch2/catch.hpp>
 
 #include "compare/report.hpp"
 #include "compare/verdict.hpp"
@@ -115,9 +114,8 @@ TEST_CASE("hydro references come from the supplied function at the measured time
   config.allowance = 1e-12;  // noise-free data: only round-off separates the exponents
   CHECK_THROWS_WITH(run_compare(config), Catch::Contains("lambda"));  // synthetic summary has no λ
   const auto exact = coldblast::theory::scaling_exponents(2);
-  const CompareResult result = run_compare(config, [&](const std::string& name, double) {
-    return coldblast::theory::to_double(exact.at(name).in_time);
-  });
+  const CompareResult result = run_compare(
+      config, [&](const std::string& name, double) { return coldblast::theory::to_double(exact.at(name).in_time); });
   CHECK(result.pass);
 }
 

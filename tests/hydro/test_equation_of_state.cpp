@@ -1,10 +1,9 @@
 // Hard-particle equations of state and the strong-shock jump: known values of Z, Z' against a
 // finite difference, the Hugoniot residual, the phi -> 0 (ideal, gamma = 1 + 2/d) limit and the
 // close-packing bound.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
-
-#include <catch2/catch.hpp>
 
 #include "hydro/equation_of_state.hpp"
 

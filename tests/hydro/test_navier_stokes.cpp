@@ -3,7 +3,6 @@
 // temperature floor and of the initial width, and the approach of the core exponents to the paper's
 // rationals (Sec. III, Eqs. (4), (11), (12)). Long runs are [validation] and reported in docs/.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <stdexcept>
 
@@ -144,8 +143,8 @@ TEST_CASE("Euler mode converges to the exact TvNS solution", "[slow]") {
   // bias of A, ~2 t0/t = 3e-5, is below the discretisation error).
   const auto coarse = hydro::compare_to_tvns(run_navier_stokes(euler_config(2, 500, 64)));
   const auto fine = hydro::compare_to_tvns(run_navier_stokes(euler_config(2, 500, 128)));
-  INFO("A errors " << coarse.A_relative_error << " -> " << fine.A_relative_error << "; L1 density "
-                   << coarse.L1_density << " -> " << fine.L1_density);
+  INFO("A errors " << coarse.A_relative_error << " -> " << fine.A_relative_error << "; L1 density " << coarse.L1_density
+                   << " -> " << fine.L1_density);
   CHECK(fine.A_exact == Approx(0.3519359).epsilon(1e-6));
   // docs/verification.md: -3.2e-3 at 128 cells, first order (-1.3e-3 at 256, -6.9e-4 at 512)
   CHECK(std::abs(fine.A_relative_error) < 5e-3);

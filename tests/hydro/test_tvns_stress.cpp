@@ -1,10 +1,9 @@
 // Stress sweep over d = 1, 2, 3 and gamma from 1.01 to 20 (and the accepted range's ends 1.001 and
 // 1000), including gamma = 2 and 7 and their neighbourhoods: A finite and positive, the two methods
 // agree, the profile finite and positive where gas is, the energy integral of the profile equal to E.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "hydro/tvns.hpp"
 
@@ -12,9 +11,10 @@ using namespace coldblast::hydro;
 using Catch::Matchers::WithinRel;
 
 TEST_CASE("stress: d = 1..3, gamma in [1.001, 1000] with special values", "[slow]") {
-  const std::vector<double> gammas = {min_gamma, 1.01, 1.05, 1.1, 1.2, 1.4, 5.0 / 3.0, 1.999, 2.0 - 1e-6, 2.0,
-                                      2.0 + 1e-6, 2.001, 2.5, 3.0, 4.0, 5.0, 6.0, 6.9, 6.999, 6.9999,
-                                      7.0, 7.0001, 7.001, 7.1, 8.0, 10.0, 15.0, 20.0, 100.0, max_gamma};
+  const std::vector<double> gammas = {min_gamma,  1.01, 1.05,       1.1,    1.2,   1.4,      5.0 / 3.0, 1.999,
+                                      2.0 - 1e-6, 2.0,  2.0 + 1e-6, 2.001,  2.5,   3.0,      4.0,       5.0,
+                                      6.0,        6.9,  6.999,      6.9999, 7.0,   7.0001,   7.001,     7.1,
+                                      8.0,        10.0, 15.0,       20.0,   100.0, max_gamma};
   const std::vector<double> xs = {1.0, 0.999, 0.99, 0.9, 0.7, 0.5, 0.3, 0.1, 0.01, 1e-3, 1e-6, 0.0};
   for (int d = 1; d <= 3; ++d) {
     for (const double gamma : gammas) {

@@ -2,10 +2,9 @@
 // Shared by the md tests that run two engines from one initial state and require the same
 // trajectory: the same number of collisions (at least `min_collisions`, so the comparison covered
 // real dynamics) and bitwise the same final positions and velocities of every particle.
+#include <catch2/catch.hpp>
 #include <cstddef>
 #include <cstdint>
-
-#include <catch2/catch.hpp>
 
 namespace coldblast::md::testing {
 

@@ -3,11 +3,10 @@
 // image shifts; insert and remove keep every cell's list exact, next(-1) = -1.
 #include <algorithm>
 #include <array>
+#include <catch2/catch.hpp>
 #include <random>
 #include <set>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "md/cell_list.hpp"
 

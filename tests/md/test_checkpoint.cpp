@@ -1,13 +1,12 @@
 // Checkpoints (md/checkpoint.hpp): block sums round-trip bit-exactly through their text (including
 // subnormals and extreme exponents), malformed files and a different scene are rejected naming
 // --resume, and a run resumed from a partial checkpoint equals the uninterrupted run.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <limits>
 #include <random>
-
-#include <catch2/catch.hpp>
 
 #include "md/checkpoint.hpp"
 #include "md/ensemble.hpp"
@@ -18,7 +17,9 @@ using namespace coldblast::md;
 namespace fs = std::filesystem;
 
 namespace {
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+bool same_bits(double x, double y) {
+  return std::memcmp(&x, &y, sizeof x) == 0;
+}
 
 BlockSums random_sums(std::size_t entries, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -64,18 +65,21 @@ TEST_CASE("checkpoint block text round-trips every bit", "[fast]") {
 TEST_CASE("malformed checkpoint blocks are rejected naming --resume", "[fast]") {
   const BlockSums s = random_sums(10, 1);
   const std::string text = checkpoint_block_text(3, s);
-  CHECK_THROWS_WITH(parse_checkpoint_block(text, 4, 10, 16, "f"), Catch::Contains("--resume") && Catch::Contains("block index"));
+  CHECK_THROWS_WITH(parse_checkpoint_block(text, 4, 10, 16, "f"),
+                    Catch::Contains("--resume") && Catch::Contains("block index"));
   CHECK_THROWS_WITH(parse_checkpoint_block(text, 3, 11, 16, "f"), Catch::Contains("entries"));
   CHECK_THROWS_WITH(parse_checkpoint_block(text, 3, 10, 15, "f"), Catch::Contains("count = 16"));
-  CHECK_THROWS_WITH(parse_checkpoint_block(text.substr(0, text.size() / 2), 3, 10, 16, "f"), Catch::Contains("--resume: malformed"));
+  CHECK_THROWS_WITH(parse_checkpoint_block(text.substr(0, text.size() / 2), 3, 10, 16, "f"),
+                    Catch::Contains("--resume: malformed"));
   std::string corrupt = text;
   corrupt.replace(corrupt.find("0x", corrupt.find("entries")), 2, "zz");
   CHECK_THROWS_WITH(parse_checkpoint_block(corrupt, 3, 10, 16, "f"), Catch::Contains("not a finite number"));
 }
 
 TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run", "[slow]") {
-  const BlastConfig config = parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2",
-                                                                R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
+  const BlastConfig config = parse_scene(
+      default_scene_toml(),
+      {"t_max=40", "realizations=9", "block_size=2", R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
   const fs::path dir = fresh_directory("resume");
   RunOptions options;
   options.threads = 2;
@@ -103,8 +107,9 @@ TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run"
   CHECK(!full.realization0_files.empty());
 
   // A different scene is refused, naming the key.
-  const BlastConfig other = parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2", "E=11",
-                                                               R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
+  const BlastConfig other = parse_scene(
+      default_scene_toml(),
+      {"t_max=40", "realizations=9", "block_size=2", "E=11", R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
   CHECK_THROWS_WITH(run_blast(other, options), Catch::Contains("--resume") && Catch::Contains("E = 10 there, 11 now"));
   fs::remove_all(dir);
   CHECK_THROWS_WITH(run_blast(config, options), Catch::Contains("no checkpoint"));

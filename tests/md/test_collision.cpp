@@ -1,9 +1,8 @@
 // Pair evaluator: contact times and the elastic collision rule against their analytic solutions,
 // for equal and unequal masses, head-on and oblique.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
-
-#include <catch2/catch.hpp>
 
 #include "md/collision.hpp"
 

@@ -2,9 +2,8 @@
 // conservation over 10^6 collisions, no overlaps with the overlap check on, the heap and the
 // bucketed calendar producing bit-identical trajectories, and so does any cell width in open geometry,
 // and large impurities with host-sized cells and a wide stencil (bit-identical to wide cells).
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "md/engine.hpp"
 #include "md/initial_state.hpp"
@@ -89,8 +88,8 @@ TEST_CASE("the guard stops a particle that approaches the region's edge", "[fast
   CHECK(engine.cells().width(0) <= std::sqrt(2.0) * (1.0 + 1e-15));  // the automatic width's cap
 }
 
-TEMPLATE_TEST_CASE("energy and momentum are conserved to 1e-12 over 10^6 collisions", "[slow]",
-                   CalendarEventQueue, HeapEventQueue) {
+TEMPLATE_TEST_CASE("energy and momentum are conserved to 1e-12 over 10^6 collisions", "[slow]", CalendarEventQueue,
+                   HeapEventQueue) {
   const std::uint64_t seed = 77;
   INFO("seed " << seed);
   auto rng = realization_rng(seed, 0);
@@ -178,8 +177,8 @@ InitialState<D> blast_state(std::uint64_t seed, double radius, Species impurity)
 // Runs `s` to t_end under both configurations and requires the same collisions and bitwise the
 // same final positions and velocities.
 template <int D>
-void require_identical_runs(const InitialState<D>& s, const EngineConfig<D>& a, const EngineConfig<D>& b,
-                            double t_end, std::uint64_t min_collisions) {
+void require_identical_runs(const InitialState<D>& s, const EngineConfig<D>& a, const EngineConfig<D>& b, double t_end,
+                            std::uint64_t min_collisions) {
   Engine<D, CalendarEventQueue> first(a, s), second(b, s);
   first.run_until(t_end);
   second.run_until(t_end);
@@ -201,7 +200,8 @@ TEST_CASE("trajectories are bit-identical for any cell width (2D blast, open geo
   require_identical_runs<2>(s, automatic, wider, 400.0, 10000);
 }
 
-TEST_CASE("the automatic open-grid cell width puts 2.7 particles in a full scan's 3^D cells, never below sigma", "[fast]") {
+TEST_CASE("the automatic open-grid cell width puts 2.7 particles in a full scan's 3^D cells, never below sigma",
+          "[fast]") {
   // 2D at n = 0.2: 9 n w^2 = 2.7 gives w = sqrt(0.3 / n) = 1.22 (in units of sigma = 1); at the
   // paper's n = 0.15 the rule gives 1.4144 and the cap below, sqrt(2), takes over.
   std::mt19937_64 rng(22);
@@ -262,7 +262,8 @@ void compare_big_with_wide_cells(const InitialState<D>& s, double region, double
 }
 }  // namespace
 
-TEST_CASE("large impurities: host-sized cells and a wide stencil give the wide-cell trajectories bit for bit", "[fast]") {
+TEST_CASE("large impurities: host-sized cells and a wide stencil give the wide-cell trajectories bit for bit",
+          "[fast]") {
   compare_big_with_wide_cells<2>(blast_state<2>(12, 110.0, {2.5, 1.0}), 140.0, 400.0, 10000);
   compare_big_with_wide_cells<2>(blast_state<2>(13, 110.0, {5.0, 1.0}), 140.0, 400.0, 10000);
   compare_big_with_wide_cells<2>(blast_state<2>(14, 110.0, {2.5, 3.0}), 140.0, 400.0, 10000);

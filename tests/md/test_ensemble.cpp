@@ -1,12 +1,11 @@
 // Scenes and ensembles: TOML parsing with overrides and rejected keys, the impurity kick (exact E,
 // zero momentum), bit-identical results for 1 and 2 threads, and shards merged equal to the
 // unsharded run.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <catch2/catch.hpp>
 
 #include "md/ensemble.hpp"
 #include "md/initial_state.hpp"
@@ -17,8 +16,9 @@ namespace fs = std::filesystem;
 
 namespace {
 BlastConfig small_scene() {
-  return parse_scene(default_scene_toml(), {"t_max=60", "realizations=7", "block_size=2",
-                                            R"(observables=["R_imp","V_imp","C_imp","u_imp","n0","T0","R","profiles","p_imp"])"});
+  return parse_scene(default_scene_toml(),
+                     {"t_max=60", "realizations=7", "block_size=2",
+                      R"(observables=["R_imp","V_imp","C_imp","u_imp","n0","T0","R","profiles","p_imp"])"});
 }
 std::string data_lines(const fs::path& file) {
   std::ifstream in(file);

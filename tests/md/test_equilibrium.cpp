@@ -3,9 +3,8 @@
 // φ <= 0.3 (0.3%: CS lies between the accurate Kolafa fit and the virial series to about that),
 // and the exact kinetic-theory link Z - 1 = ν σ √(π m/(4 k_B T)) / d, which needs no equation of
 // state: for Maxwellian velocities the collision-averaged normal speed is √(π k_B T/m) (σ = 2a).
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "md/equilibrium.hpp"
 
@@ -21,8 +20,8 @@ void check_equilibrium(int d, double phi, std::uint64_t seed) {
   c.seed = seed;
   const EquilibriumResult r = run_equilibrium(c);
   INFO("d = " << d << ", phi = " << phi << ", seed = " << seed << ": Z = " << r.Z << " ± " << r.Z_error
-              << ", Z(collision rate) = " << r.Z_from_collision_rate << " ± " << r.Z_from_collision_rate_error
-              << ", " << r.reference_name << " " << r.Z_reference);
+              << ", Z(collision rate) = " << r.Z_from_collision_rate << " ± " << r.Z_from_collision_rate_error << ", "
+              << r.reference_name << " " << r.Z_reference);
   constexpr double equation_accuracy = 0.003;
   CHECK(std::abs(r.Z - r.Z_reference) < 4.0 * r.Z_error + equation_accuracy * r.Z_reference);
   const double joint = std::hypot(r.Z_error, r.Z_from_collision_rate_error);

@@ -2,11 +2,10 @@
 // (DynamO's sorter-versus-sort test): the heap and the bucketed calendar must pop exactly the
 // (time, id) minimum at every step, through inserts, moves earlier and later, removals and pops;
 // their prefetch hint, when given, must be the second event.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
 #include <random>
-
-#include <catch2/catch.hpp>
 
 #include "md/event_queue.hpp"
 

@@ -1,8 +1,7 @@
 // HugePageAllocator (md/huge_pages.hpp): large blocks are 2 MiB aligned (so that huge pages can
 // back them), small ones keep their type's alignment, and both hold their contents through growth.
-#include <cstdint>
-
 #include <catch2/catch.hpp>
+#include <cstdint>
 
 #include "md/huge_pages.hpp"
 #include "md/particles.hpp"

@@ -1,14 +1,13 @@
 // Observables of one small blast ensemble: the impurity radial density of Eq. (39) is normalised,
 // the density profile returns to n∞ ahead of the shock and peaks in the shocked shell,
 // the moving-mass shock radius R tracks Eq. (1), snapshots and trajectories are complete.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
 #include <sstream>
-
-#include <catch2/catch.hpp>
 
 #include "md/ensemble.hpp"
 #include "md/observers.hpp"
@@ -44,9 +43,8 @@ TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[s
   const std::uint64_t seed = 4;
   INFO("seed " << seed);
   const BlastConfig scene = parse_scene(
-      default_scene_toml(),
-      {"t_max=400", "realizations=12", "seed=4", "A_d=0.2238", "snapshot_times=[100.0, 400.0]",
-       R"(observables=["R_imp","R","profiles","p_imp","snapshots","trajectories"])"});
+      default_scene_toml(), {"t_max=400", "realizations=12", "seed=4", "A_d=0.2238", "snapshot_times=[100.0, 400.0]",
+                             R"(observables=["R_imp","R","profiles","p_imp","snapshots","trajectories"])"});
   const fs::path dir = fs::temp_directory_path() / "coldblast_test_observers";
   fs::remove_all(dir);
   RunOptions options;
@@ -57,8 +55,7 @@ TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[s
   // p_imp: Σ p Δr over the bins is the fraction of impurities inside R(t) of Eq. (1): <= 1, and
   // 1 at late times (they stay in the core).
   std::map<std::string, double> total;
-  for (const auto& r : rows(dir / "p_imp.csv"))
-    total[r[0]] += std::stod(r[5]) * (std::stod(r[3]) - std::stod(r[2]));
+  for (const auto& r : rows(dir / "p_imp.csv")) total[r[0]] += std::stod(r[5]) * (std::stod(r[3]) - std::stod(r[2]));
   REQUIRE(!total.empty());
   for (const auto& [t, sum] : total) CHECK(sum <= 1.0 + 1e-12);
   CHECK(std::abs(total.rbegin()->second - 1.0) < 1e-12);
@@ -152,6 +149,6 @@ TEST_CASE("u_flow's estimator removes the thermal noise that biases |mean veloci
   corrected /= samples;
   const double error = std::sqrt((corrected_sq / samples - corrected * corrected) / samples);
   INFO("seed 20261121: plain " << plain << ", corrected " << corrected << " ± " << error);
-  CHECK(std::abs(plain - (u * u + 2 * T / N)) < 0.01);         // biased by d T/N = 0.1 ≫ u² = 0.01
+  CHECK(std::abs(plain - (u * u + 2 * T / N)) < 0.01);  // biased by d T/N = 0.1 ≫ u² = 0.01
   CHECK(std::abs(corrected - u * u) < 4 * error);
 }

@@ -3,11 +3,10 @@
 // without periodic image shifts; and whole engines with and without it give bit-identical
 // trajectories (a 3D periodic fluid, whose boundary cells use the shifts, and a 3D blast); the
 // AVX2 crossing time against the scalar rule, ties between axes included.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <vector>
-
-#include <catch2/catch.hpp>
 
 #include "md/collision.hpp"
 #include "md/engine.hpp"
@@ -120,7 +119,8 @@ TEST_CASE("the kernel needs a multiple of 4 candidates", "[fast]") {
 
 namespace {
 template <class Make>
-void require_kernel_invariant(const InitialState<3>& s, EngineConfig<3> config, Make&& run, std::uint64_t min_collisions) {
+void require_kernel_invariant(const InitialState<3>& s, EngineConfig<3> config, Make&& run,
+                              std::uint64_t min_collisions) {
   config.simd = false;
   Engine<3, CalendarEventQueue> scalar(config, s);
   config.simd = true;
@@ -141,7 +141,8 @@ TEST_CASE("engines with and without the SIMD pair kernel give bit-identical traj
     config.periodic = true;
     config.box = Vec<3>::Constant(std::cbrt(count * (M_PI / 6.0) / 0.3));
     const InitialState<3> s = lattice_start<3>(rng, count, 0.5, config.box, 1.0);
-    require_kernel_invariant(s, config, [](auto& engine) { engine.run_collisions(200000); }, 200000);
+    require_kernel_invariant(
+        s, config, [](auto& engine) { engine.run_collisions(200000); }, 200000);
   }
   SECTION("blast (open geometry, mostly resting candidates)") {
     auto rng = realization_rng(4, 0);
@@ -156,7 +157,8 @@ TEST_CASE("engines with and without the SIMD pair kernel give bit-identical traj
     EngineConfig<3> config;
     config.region_radius = 40.0;  // room for the few fast particles that leave the filled ball
     config.guard_radius = 38.0;
-    require_kernel_invariant(s, config, [](auto& engine) { engine.run_until(100.0); }, 5000);
+    require_kernel_invariant(
+        s, config, [](auto& engine) { engine.run_until(100.0); }, 5000);
   }
 }
 
@@ -196,7 +198,8 @@ TEST_CASE("the AVX2 crossing time gives the scalar crossing time and face bit fo
     REQUIRE(got == best);
     REQUIRE(code == expected_code);
     resting += best == never;
-    if (v[0] == v[1] && v[0] != 0.0 && (lower[0] - x[0]) / v[0] == (lower[1] - x[1]) / v[1] && expected_code <= 1) ++ties;
+    if (v[0] == v[1] && v[0] != 0.0 && (lower[0] - x[0]) / v[0] == (lower[1] - x[1]) / v[1] && expected_code <= 1)
+      ++ties;
   }
   REQUIRE(resting >= 300);  // particles at rest: never, code 0
   REQUIRE(ties > 100);

@@ -30,16 +30,16 @@ TEST_CASE("Table 2 of the paper, d = 2 and d = 3, exactly", "[fast]") {
 
 TEST_CASE("Sec. IV convection-diffusion exponents, d = 2 and 3", "[fast]") {
   const auto two = convection_diffusion_exponents(2);
-  CHECK(two.drift == Rational(-3, 5));      // Eq. (26)
-  CHECK(two.diffusion == Rational(-1, 5));  // Eq. (26)
-  CHECK(two.spread == Rational(2, 5));      // Eq. (27)
-  CHECK(two.density == Rational(4, 5));     // Eq. (27)
+  CHECK(two.drift == Rational(-3, 5));                // Eq. (26)
+  CHECK(two.diffusion == Rational(-1, 5));            // Eq. (26)
+  CHECK(two.spread == Rational(2, 5));                // Eq. (27)
+  CHECK(two.density == Rational(4, 5));               // Eq. (27)
   CHECK(two.gaussian_coefficient == Rational(1, 5));  // Eq. (31)
   const auto three = convection_diffusion_exponents(3);
-  CHECK(three.drift == Rational(-113, 175));     // Eq. (32)
-  CHECK(three.diffusion == Rational(-51, 175));  // Eq. (32)
-  CHECK(three.spread == Rational(62, 175));      // Eq. (33)
-  CHECK(three.density == Rational(186, 175));    // Eq. (33)
+  CHECK(three.drift == Rational(-113, 175));               // Eq. (32)
+  CHECK(three.diffusion == Rational(-51, 175));            // Eq. (32)
+  CHECK(three.spread == Rational(62, 175));                // Eq. (33)
+  CHECK(three.density == Rational(186, 175));              // Eq. (33)
   CHECK(three.gaussian_coefficient == Rational(31, 175));  // Eq. (34)
 }
 
@@ -67,12 +67,12 @@ TEST_CASE("consistency identities of Sec. III hold exactly, d = 1..50", "[fast]"
   for (int d = 1; d <= 50; ++d) {
     INFO("d = " << d);
     const auto s = scaling_exponents(d);
-    CHECK(2 * s.R_imp.in_time == s.D0.in_time + 1);                 // R_imp² ∝ D0 t
-    CHECK(s.C_imp.in_time == 1 + s.n0.in_time + s.V_imp.in_time);   // C = t n0 V_imp (Boltzmann cylinder)
-    CHECK(2 * s.V_imp.in_time == s.T0.in_time);                     // V_imp² ∝ T0
-    CHECK(s.u_imp.in_time == s.R_imp.in_time - 1);                  // u_imp ∝ R_imp/t
-    CHECK(s.D0.in_time == s.V_imp.in_time - s.n0.in_time);          // D0 = λ (n/n0) V_imp, Eq. (21)
-    CHECK(s.R_imp.in_time == s.H.in_time);                          // the impurity stays in the core
+    CHECK(2 * s.R_imp.in_time == s.D0.in_time + 1);                // R_imp² ∝ D0 t
+    CHECK(s.C_imp.in_time == 1 + s.n0.in_time + s.V_imp.in_time);  // C = t n0 V_imp (Boltzmann cylinder)
+    CHECK(2 * s.V_imp.in_time == s.T0.in_time);                    // V_imp² ∝ T0
+    CHECK(s.u_imp.in_time == s.R_imp.in_time - 1);                 // u_imp ∝ R_imp/t
+    CHECK(s.D0.in_time == s.V_imp.in_time - s.n0.in_time);         // D0 = λ (n/n0) V_imp, Eq. (21)
+    CHECK(s.R_imp.in_time == s.H.in_time);                         // the impurity stays in the core
     for (const auto& [name, e] : s.named()) CHECK(e.in_time == e.in_R_over_lambda * Rational(2, d + 2));
   }
 }

@@ -1,8 +1,7 @@
 // Prefactor formulas: known values of Omega_d, lambda and phi for the paper's scene, the inverse
 // relations, and the Gaussian of Eq. (35) normalised in d dimensions.
-#include <cmath>
-
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
@@ -26,7 +25,7 @@ TEST_CASE("unit ball volumes and sphere areas", "[fast]") {
 
 TEST_CASE("the paper's 2D scene: n = 0.15, a = 1/2 gives phi = 0.118 and lambda = 20/3", "[fast]") {
   CHECK_THAT(packing_fraction(2, 0.15, 0.5), WithinRel(0.15 * pi / 4.0, 1e-15));  // 0.1178
-  CHECK(std::abs(packing_fraction(2, 0.15, 0.5) - 0.118) < 5e-4);                  // Fig. 1 caption
+  CHECK(std::abs(packing_fraction(2, 0.15, 0.5) - 0.118) < 5e-4);                 // Fig. 1 caption
   CHECK_THAT(mean_free_path(2, 0.15, 0.5), WithinRel(20.0 / 3.0, 1e-15));
   CHECK_THAT(mean_free_path(3, 0.2, 0.5), WithinRel(1.0 / (0.2 * pi * 0.25), 1e-15));
   CHECK_THAT(number_density(3, packing_fraction(3, 0.3, 0.7), 0.7), WithinRel(0.3, 1e-14));

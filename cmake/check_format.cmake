@@ -1,0 +1,20 @@
+# Fails when a C++ source of the tree differs from .clang-format (Debian's clang-format 14):
+# `clang-format --dry-run -Werror` on every .cpp/.hpp outside build directories.
+find_program(CLANG_FORMAT NAMES clang-format clang-format-14 REQUIRED)
+set(files "")
+foreach(dir common theory hydro md compare cli tests bench python fuzz)
+  file(GLOB_RECURSE found "${SOURCE_DIR}/${dir}/*.hpp" "${SOURCE_DIR}/${dir}/*.cpp")
+  list(APPEND files ${found})
+endforeach()
+list(LENGTH files count)
+if(count EQUAL 0)
+  message(FATAL_ERROR "format check: no sources found under ${SOURCE_DIR}")
+endif()
+execute_process(COMMAND ${CLANG_FORMAT} --dry-run -Werror ${files}
+                RESULT_VARIABLE status ERROR_VARIABLE diagnostics)
+if(NOT status EQUAL 0)
+  string(REGEX MATCHALL "[^\n]*: error: code should be clang-formatted[^\n]*" lines "${diagnostics}")
+  string(REPLACE ";" "\n  " text "${lines}")
+  message(FATAL_ERROR "unformatted sources (run clang-format -i on them):\n  ${text}")
+endif()
+message(STATUS "format ok: ${count} files")
