@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "hydro/tvns.hpp"
 #include "md/ensemble.hpp"
@@ -92,6 +93,22 @@ void print_summary(const md::BlastResult& result, const std::string& out, Format
       std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
 }
 
+// The ensemble (over MPI ranks when built with MPI); a SIGINT/SIGTERM stop says how to resume.
+md::BlastResult run_ensemble(const md::BlastConfig& config, const md::RunOptions& options, const std::string& out) {
+  try {
+#if COLDBLAST_HAVE_MPI
+    return md::run_blast_mpi(config, options);
+#else
+    return md::run_blast(config, options);
+#endif
+  } catch (const common::Interrupted&) {
+    std::cerr << "\ncoldblast: the finished blocks are saved in "
+              << (std::filesystem::path(out) / "checkpoint").string()
+              << "; continue with the same command and --resume " << out << '\n';
+    throw;
+  }
+}
+
 void run_md(const MdRunOptions& o) {
   std::vector<std::string> overrides = o.set;
   if (o.realizations != 0) {
@@ -135,10 +152,10 @@ void run_md(const MdRunOptions& o) {
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks; rank 0 alone reports progress and writes the outputs.
   if (md::MpiSession::rank() != 0) options.progress = nullptr;
-  md::BlastResult result = md::run_blast_mpi(config, options);
+  md::BlastResult result = run_ensemble(config, options, out);
   if (md::MpiSession::rank() != 0) return;
 #else
-  md::BlastResult result = md::run_blast(config, options);
+  md::BlastResult result = run_ensemble(config, options, out);
 #endif
   if (!A_d_source.empty()) result.scene.A_d_source = A_d_source;
   md::write_blast_outputs(result, out);
@@ -219,6 +236,7 @@ void add_md_command(CLI::App& app) {
   add_format_option(*run_command, run->format);
   run_command->callback([run, out_option] {
     run->out_given = out_option->count() > 0;
+    common::install_stop_handlers();  // SIGINT/SIGTERM end the run between realizations, blocks saved
     run_md(*run);
   });
 

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "common/interrupt.hpp"
 #include "compare/reproduce.hpp"
 
 namespace coldblast::cli {
@@ -74,7 +75,10 @@ void add_reproduce_command(CLI::App& app) {
                       "--scale paper ensemble bit for bit, and can --resume if killed");
   command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
   add_format_option(*command, options->format);
-  command->callback([options] { run(*options); });
+  command->callback([options] {
+    common::install_stop_handlers();  // SIGINT/SIGTERM end the MD step between realizations
+    run(*options);
+  });
 }
 
 }  // namespace coldblast::cli

@@ -1,5 +1,6 @@
 // coldblast: one binary, one subcommand per flow. Exit codes: 0 success, 1 runtime failure,
-// 2 usage or parameter error, 3 a comparison verdict of "fail" (coldblast compare).
+// 2 usage or parameter error, 3 a comparison verdict of "fail" (coldblast compare), 128 + signal when
+// SIGINT/SIGTERM stopped an MD ensemble (130/143; finished blocks stay in the checkpoint).
 #include <gsl/gsl_errno.h>
 
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "coldblast/build_info.hpp"
+#include "common/interrupt.hpp"
 #if COLDBLAST_HAVE_MPI
 #include "md/mpi_ensemble.hpp"
 #endif
@@ -55,6 +57,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::cerr << "coldblast: error: " << e.what() << "\n(run with --help for the options)\n";
     return failure(2);
+  } catch (const common::Interrupted& e) {  // SIGINT/SIGTERM during md run or reproduce (common/interrupt.hpp)
+    std::cerr << "coldblast: " << e.what() << '\n';
+    return failure(e.exit_code());
   } catch (const std::invalid_argument& e) {
     std::cerr << "coldblast: error: " << e.what() << '\n';
     return failure(2);

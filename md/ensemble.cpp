@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "md/checkpoint.hpp"
 #include "md/engine.hpp"
@@ -248,6 +249,7 @@ BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* rea
   s.sum_squares.assign(layout.size(), 0.0);
   for (long long r = block * B; r < block * B + block_realizations(scene.config, block); ++r) {
     if (stop && *stop) break;
+    common::throw_if_stop_requested();  // SIGINT/SIGTERM or a host's Ctrl-C: finished blocks stay saved
     RealizationOutput out = dispatch(scene, layout, r);
     for (std::size_t e = 0; e < out.record.size(); ++e) {
       s.sum[e] += out.record[e];

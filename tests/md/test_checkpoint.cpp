@@ -3,11 +3,13 @@
 // --resume, and a run resumed from a partial checkpoint equals the uninterrupted run.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <limits>
 #include <random>
 
+#include "common/interrupt.hpp"
 #include "md/checkpoint.hpp"
 #include "md/ensemble.hpp"
 #include "md/observers.hpp"
@@ -113,4 +115,33 @@ TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run"
   CHECK_THROWS_WITH(run_blast(other, options), Catch::Contains("--resume") && Catch::Contains("E = 10 there, 11 now"));
   fs::remove_all(dir);
   CHECK_THROWS_WITH(run_blast(config, options), Catch::Contains("no checkpoint"));
+}
+
+TEST_CASE("a stop request ends a run between realizations, and resuming it equals the uninterrupted run", "[slow]") {
+  const BlastConfig config = parse_scene(
+      default_scene_toml(), {"t_max=40", "realizations=7", "block_size=2", R"(observables=["R_imp","n0"])"});
+  RunOptions options;
+  const BlastResult full = run_blast(config, options);
+  const fs::path dir = fresh_directory("interrupt");
+  options.checkpoint = dir;
+  // The stop arrives after the third realization, inside block 1: blocks 0 is saved, block 1 is not.
+  options.progress = [](long long done, long long) {
+    if (done == 3) coldblast::common::request_stop(SIGINT);
+  };
+  CHECK_THROWS_AS(run_blast(config, options), coldblast::common::Interrupted);
+  CHECK(coldblast::common::stop_signal() == SIGINT);
+  coldblast::common::clear_stop();
+  CHECK(fs::exists(dir / "block_0.txt"));
+  CHECK_FALSE(fs::exists(dir / "block_1.txt"));
+  options.resume = true;
+  long long ran = 0;
+  options.progress = [&](long long done, long long) { ran = done; };
+  const BlastResult resumed = run_blast(config, options);
+  CHECK(ran == 5);  // blocks 1, 2 (2 realizations each) and 3 (1)
+  REQUIRE(resumed.blocks.size() == full.blocks.size());
+  for (const auto& [b, s] : full.blocks) {
+    CHECK(resumed.blocks.at(b).sum == s.sum);
+    CHECK(resumed.blocks.at(b).sum_squares == s.sum_squares);
+  }
+  fs::remove_all(dir);
 }
