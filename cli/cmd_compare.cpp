@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "common/input.hpp"
 #include "common/validate.hpp"
 #include "compare/report.hpp"
 #include "compare/verdict.hpp"
@@ -26,10 +27,8 @@ struct CompareOptions {
 
 std::vector<std::string> split_list(const std::string& text) {
   std::vector<std::string> items;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
-    if (!item.empty()) items.push_back(item);
+  for (std::string& item : common::split_fields(text))
+    if (!item.empty()) items.push_back(std::move(item));
   return items;
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "common/input.hpp"
 #include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "hydro/tvns.hpp"
@@ -46,14 +47,6 @@ struct MdEquilibriumOptions {
   md::EquilibriumConfig config;
   Format format = Format::table;
 };
-
-std::string read_scene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("SCENE = " + path + " cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// Progress with ETA on stderr, at most twice a second.
 class Progress {
@@ -121,7 +114,7 @@ void run_md(const MdRunOptions& o) {
   }
   common::require_integer_in_range("--threads", o.threads, 1, 1024);
   const auto [shard_index, shard_count] = md::parse_shard(o.shard);
-  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : read_scene(o.scene_file);
+  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : common::read_text(o.scene_file, "SCENE");
   md::BlastConfig config = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
   // A_d = 0 means "not given": the hard-particle TvNS amplitude A_d(phi) from hydro (Henderson EOS
   // in 2D, Carnahan-Starling in 3D) sizes the box and is written to the outputs.

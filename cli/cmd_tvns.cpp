@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "common/input.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "hydro/tvns.hpp"
@@ -55,9 +56,9 @@ std::string number(double value, int digits = 17) {
 /// "0.1,0.5,1" -> {0.1, 0.5, 1}, each checked to lie in [0, 1].
 std::vector<double> parse_at(const std::string& text) {
   std::vector<double> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  std::vector<std::string> items = common::split_fields(text);
+  if (!items.empty() && items.back().empty()) items.pop_back();  // "0.1,0.5," as getline read it
+  for (const std::string& item : items) {
     std::size_t used = 0;
     double value = 0.0;
     try {

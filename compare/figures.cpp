@@ -176,9 +176,9 @@ std::string profile_figure(const RunData& run, const fs::path& folder) {
                     cT = table.column("temperature");
   double t_last = 0;
   for (const auto& row : table.rows) t_last = std::max(t_last, row[ct]);
-  // Ṙ from the MD's own R(t) (Eq. (1) form: Ṙ = 2R/((d+2)t)).
+  // Ṙ from the MD's own R(t) and the power law of Eq. (1).
   const double R = md_R_over_lambda(run, t_last) * run.summary["lambda"].get<double>();
-  const double Rdot = 2.0 * R / ((run.d + 2) * t_last);
+  const double Rdot = theory::shock_speed_at(run.d, R, t_last);
   std::ostringstream md_data, exact_data;
   md_data.precision(10);
   exact_data.precision(10);

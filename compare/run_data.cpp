@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "common/input.hpp"
 
 namespace coldblast::compare {
 
@@ -39,73 +40,26 @@ double BlockSeries::realizations_at(std::size_t k) const {
   return count;
 }
 
-namespace {
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("run directory: cannot read " + path.string());
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-std::vector<std::string> split(const std::string& line, char separator) {
-  std::vector<std::string> fields;
-  std::string field;
-  std::istringstream stream(line);
-  while (std::getline(stream, field, separator)) fields.push_back(field);
-  if (!line.empty() && line.back() == separator) fields.emplace_back();
-  return fields;
-}
-
-double parse_double(const std::string& text, const std::string& where) {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(value)) throw std::invalid_argument("");
-    return value;
-  } catch (const std::exception&) {
-    throw std::invalid_argument(where + ": '" + text + "' is not a finite number");
-  }
-}
-
-}  // namespace
-
 std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, const std::string& source) {
   // Collect (observable, block, t) -> (sum, count), then lay out dense arrays.
   struct Cell {
     double sum, count;
   };
   std::map<std::string, std::map<long, std::map<double, Cell>>> cells;
-  std::istringstream stream(text);
-  std::string line;
-  long line_number = 0;
-  bool header_seen = false;
-  while (std::getline(stream, line)) {
-    ++line_number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    const std::string where = source + " line " + std::to_string(line_number);
-    const auto fields = split(line, ',');
-    if (!header_seen) {
-      if (line != "block,t,observable,sum,count")
-        throw std::invalid_argument(where + ": header must be 'block,t,observable,sum,count', found '" + line + "'");
-      header_seen = true;
-      continue;
-    }
-    if (fields.size() != 5)
-      throw std::invalid_argument(where + ": expected 5 fields, found " + std::to_string(fields.size()));
-    const double block = parse_double(fields[0], where + " (block)");
+  const common::CsvTable table = common::parse_csv(text, source, "block,t,observable,sum,count");
+  for (const common::CsvRow& row : table.rows) {
+    const std::string where = table.where(row);
+    const auto& fields = row.fields;
+    const double block = common::parse_finite(fields[0], where + " (block)");
     if (block < 0 || block != std::floor(block))
       throw std::invalid_argument(where + ": block must be a non-negative integer");
-    const double t = parse_double(fields[1], where + " (t)");
+    const double t = common::parse_finite(fields[1], where + " (t)");
     transform_for(fields[2]);  // rejects unknown observables
-    const double sum = parse_double(fields[3], where + " (sum)");
-    const double count = parse_double(fields[4], where + " (count)");
+    const double sum = common::parse_finite(fields[3], where + " (sum)");
+    const double count = common::parse_finite(fields[4], where + " (count)");
     if (count < 0) throw std::invalid_argument(where + ": count must be >= 0");
     cells[fields[2]][static_cast<long>(block)][t] = Cell{sum, count};
   }
-  if (!header_seen) throw std::invalid_argument(source + ": empty, no header 'block,t,observable,sum,count'");
 
   std::map<std::string, BlockSeries> result;
   for (const auto& [observable, blocks] : cells) {
@@ -130,40 +84,6 @@ std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, con
     result.emplace(observable, std::move(series));
   }
   return result;
-}
-
-std::size_t CsvTable::column(const std::string& name) const {
-  for (std::size_t i = 0; i < columns.size(); ++i)
-    if (columns[i] == name) return i;
-  throw std::invalid_argument(source + ": no column '" + name + "'");
-}
-
-CsvTable read_numeric_csv(const std::filesystem::path& path) {
-  CsvTable table;
-  table.source = path.string();
-  std::istringstream stream(read_text(path));
-  std::string line;
-  long line_number = 0;
-  while (std::getline(stream, line)) {
-    ++line_number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    const auto fields = split(line, ',');
-    if (table.columns.empty()) {
-      table.columns = fields;
-      continue;
-    }
-    const std::string where = table.source + " line " + std::to_string(line_number);
-    if (fields.size() != table.columns.size())
-      throw std::invalid_argument(where + ": expected " + std::to_string(table.columns.size()) + " fields, found " +
-                                  std::to_string(fields.size()));
-    std::vector<double> row;
-    row.reserve(fields.size());
-    for (const auto& field : fields) row.push_back(parse_double(field, where));
-    table.rows.push_back(std::move(row));
-  }
-  if (table.columns.empty()) throw std::invalid_argument(table.source + ": empty, no header line");
-  return table;
 }
 
 void truncate_run(RunData& run, double until) {
@@ -192,7 +112,7 @@ RunData read_run(const std::filesystem::path& directory) {
   run.directory = directory;
   const auto summary_path = directory / "summary.json";
   try {
-    run.summary = common::Json::parse(read_text(summary_path));
+    run.summary = common::Json::parse(common::read_text(summary_path, "RUN_DIR file"));
   } catch (const common::Json::exception& e) {
     throw std::invalid_argument(summary_path.string() + ": malformed JSON (" + e.what() + ")");
   }
@@ -207,7 +127,7 @@ RunData read_run(const std::filesystem::path& directory) {
   if (run.d < 1 || run.d > 3)
     throw std::invalid_argument(summary_path.string() + ": d = " + std::to_string(run.d) + " is outside [1, 3]");
   const auto blocks_path = directory / "blocks.csv";
-  run.series = parse_blocks_csv(read_text(blocks_path), blocks_path.string());
+  run.series = parse_blocks_csv(common::read_text(blocks_path, "RUN_DIR file"), blocks_path.string());
   if (run.series.empty()) throw std::invalid_argument(blocks_path.string() + ": no data rows");
   return run;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/input.hpp"
 #include "common/output.hpp"
 
 namespace coldblast::compare {
@@ -53,18 +54,9 @@ RunData read_run(const std::filesystem::path& directory);
 /// --until and the allowed range [second recorded time, last recorded time] otherwise.
 void truncate_run(RunData& run, double until);
 
-/// A numeric CSV table: column names and rows (comment lines '#' skipped).
-struct CsvTable {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  /// Index of a column; throws std::invalid_argument naming the file and the column.
-  std::size_t column(const std::string& name) const;
-  std::string source;
-};
-
-/// Reads a CSV file whose fields are all numbers (after the header); throws
-/// std::invalid_argument naming the file and line on malformed input.
-CsvTable read_numeric_csv(const std::filesystem::path& path);
+/// A numeric CSV table (common/input.hpp), read by read_numeric_csv.
+using CsvTable = common::NumericTable;
+using common::read_numeric_csv;
 
 /// Parses the blocks.csv text (header `block,t,observable,sum,count`, '#' comment lines allowed).
 std::map<std::string, BlockSeries> parse_blocks_csv(const std::string& text, const std::string& source);

@@ -10,6 +10,7 @@
 #include <system_error>
 #include <vector>
 
+#include "common/input.hpp"
 #include "common/output.hpp"
 #include "md/observers.hpp"
 
@@ -24,14 +25,6 @@ std::string hex(double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%a", value);
   return buffer;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument("--resume: cannot read " + path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 fs::path block_path(const fs::path& directory, long long block) {
@@ -146,7 +139,7 @@ Checkpoint load_checkpoint(const fs::path& directory, const ResolvedScene& scene
   if (!fs::exists(scene_path))
     throw std::invalid_argument("--resume: no checkpoint in " + directory.string() +
                                 " (scene.toml missing); run without --resume to start");
-  const std::string saved = read_text(scene_path), current = scene.config.to_toml();
+  const std::string saved = common::read_text(scene_path, "--resume"), current = scene.config.to_toml();
   if (saved != current) {
     const auto a = toml_entries(saved), b = toml_entries(current);
     std::string key = "(formatting)", was = "", now = "";
@@ -176,14 +169,14 @@ Checkpoint load_checkpoint(const fs::path& directory, const ResolvedScene& scene
     const long long block = std::stoll(digits);
     const long long count = block_realizations(scene.config, block);
     if (count == 0) throw std::invalid_argument("--resume: " + entry.path().string() + " is beyond the scene's blocks");
-    checkpoint.blocks[block] =
-        parse_checkpoint_block(read_text(entry.path()), block, layout.size(), count, entry.path().string());
+    checkpoint.blocks[block] = parse_checkpoint_block(common::read_text(entry.path(), "--resume"), block, layout.size(),
+                                                      count, entry.path().string());
   }
   if (checkpoint.blocks.count(0) && fs::exists(directory / "realization0"))
     for (const auto& entry : fs::directory_iterator(directory / "realization0")) {
       const std::string name = entry.path().filename().string();
       if (name.find(".tmp.") == std::string::npos)
-        checkpoint.realization0_files.push_back({name, read_text(entry.path())});
+        checkpoint.realization0_files.push_back({name, common::read_text(entry.path(), "--resume")});
     }
   std::sort(checkpoint.realization0_files.begin(), checkpoint.realization0_files.end());
   return checkpoint;

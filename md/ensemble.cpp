@@ -7,12 +7,12 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <fstream>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
+#include "common/input.hpp"
 #include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "md/checkpoint.hpp"
@@ -135,45 +135,6 @@ RealizationOutput dispatch(const ResolvedScene& scene, const ObservableLayout& l
                 : run_realization<2, CalendarEventQueue>(scene, layout, index);
   return heap ? run_realization<3, HeapEventQueue>(scene, layout, index)
               : run_realization<3, CalendarEventQueue>(scene, layout, index);
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument("cannot read " + path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// Data lines of a CSV file (comments and the column header skipped), split at commas.
-std::vector<std::vector<std::string>> csv_rows(const std::string& content, const std::string& expected_header,
-                                               const std::string& name) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream in(content);
-  std::string line;
-  bool header_seen = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header_seen) {
-      if (line != expected_header) throw std::invalid_argument(name + ": unexpected header " + line);
-      header_seen = true;
-      continue;
-    }
-    std::vector<std::string> fields;
-    std::stringstream ls(line);
-    std::string f;
-    while (std::getline(ls, f, ',')) fields.push_back(f);
-    rows.push_back(fields);
-  }
-  return rows;
-}
-
-double to_double(const std::string& s) {
-  if (s == "nan") return std::nan("");
-  std::size_t used = 0;
-  const double v = std::stod(s, &used);
-  if (used != s.size()) throw std::invalid_argument("bad number " + s);
-  return v;
 }
 
 std::string number_or_nan(double v) {
@@ -513,7 +474,7 @@ BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& direct
   BlastResult merged;
   std::string scene_toml;
   for (const auto& dir : directories) {
-    const common::Json summary = common::Json::parse(read_text(dir / "summary.json"));
+    const common::Json summary = common::Json::parse(common::read_text(dir / "summary.json", "md merge DIR file"));
     const std::string toml_text = summary.at("scene_toml").get<std::string>();
     if (scene_toml.empty()) {
       scene_toml = toml_text;
@@ -528,22 +489,29 @@ BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& direct
     merged.threads = std::max(merged.threads, summary.at("threads").get<int>());
     const ObservableLayout layout(merged.scene);
     std::map<long long, BlockSums> blocks;
-    for (const auto& row : csv_rows(read_text(dir / "block_totals.csv"), block_totals_header, "block_totals.csv")) {
+    const common::CsvTable totals = common::parse_csv(common::read_text(dir / "block_totals.csv", "md merge DIR file"),
+                                                      (dir / "block_totals.csv").string(), block_totals_header);
+    for (const common::CsvRow& row : totals.rows) {
+      const std::string where = totals.where(row);
       BlockSums s;
-      s.count = std::stoll(row.at(0 + 1));
-      s.collisions = std::stoull(row.at(2));
-      s.energy_error_max = to_double(row.at(3));
+      s.count = common::parse_count(row.fields[1], where);
+      s.collisions = static_cast<std::uint64_t>(common::parse_count(row.fields[2], where));
+      s.energy_error_max = common::parse_number_or_nan(row.fields[3], where);
       s.sum.assign(layout.size(), 0.0);
       s.sum_squares.assign(layout.size(), 0.0);
-      blocks[std::stoll(row.at(0))] = s;
+      blocks[common::parse_count(row.fields[0], where)] = s;
     }
-    for (const auto& row : csv_rows(read_text(dir / "accumulators.csv"), accumulator_header, "accumulators.csv")) {
-      BlockSums& s = blocks.at(std::stoll(row.at(0)));
-      const std::size_t e = std::stoul(row.at(1));
-      if (e >= layout.size() || row.at(2) != layout.channel(e))
-        throw std::invalid_argument("md merge: " + dir.string() + "/accumulators.csv does not match the scene layout");
-      s.sum[e] = to_double(row.at(5));
-      s.sum_squares[e] = to_double(row.at(6));
+    const common::CsvTable accumulators =
+        common::parse_csv(common::read_text(dir / "accumulators.csv", "md merge DIR file"),
+                          (dir / "accumulators.csv").string(), accumulator_header);
+    for (const common::CsvRow& row : accumulators.rows) {
+      const std::string where = accumulators.where(row);
+      const auto block = blocks.find(common::parse_count(row.fields[0], where));
+      const auto e = static_cast<std::size_t>(common::parse_count(row.fields[1], where));
+      if (block == blocks.end() || e >= layout.size() || row.fields[2] != layout.channel(e))
+        throw std::invalid_argument("md merge: " + where + " does not match the scene layout");
+      block->second.sum[e] = common::parse_number_or_nan(row.fields[5], where);
+      block->second.sum_squares[e] = common::parse_number_or_nan(row.fields[6], where);
     }
     for (auto& [b, s] : blocks) {
       if (merged.blocks.count(b))
@@ -554,7 +522,7 @@ BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& direct
       const std::string name = entry.path().filename().string();
       if (name == "trajectories.csv" ||
           (name.rfind("snapshot_", 0) == 0 && name.size() > 4 && name.substr(name.size() - 4) == ".csv"))
-        merged.realization0_files.push_back({name, read_text(entry.path())});
+        merged.realization0_files.push_back({name, common::read_text(entry.path())});
     }
   }
   return merged;

@@ -185,12 +185,6 @@ const std::string& default_scene_toml() {
   return default_scene;
 }
 
-double ideal_gas_amplitude(int d) {
-  if (d == 2) return 0.351935906848599;  // Eq. (3), γ = 2 (hydro::solve_tvns, ±2.5e-14)
-  if (d == 3) return 0.493590149582568;  // γ = 5/3 (±3.7e-14); the paper's 0.0724 is wrong (docs/verification.md)
-  throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
-}
-
 BlastConfig parse_scene(const std::string& toml_text, const std::vector<std::string>& overrides,
                         const std::string& source) {
   toml::table table = parse_table(toml_text, source);
@@ -271,7 +265,7 @@ ResolvedScene resolve_scene(const BlastConfig& config) {
   ResolvedScene s;
   s.config = config;
   const BlastConfig& c = config;
-  s.A_d = c.A_d > 0.0 ? c.A_d : ideal_gas_amplitude(c.d);
+  s.A_d = c.A_d > 0.0 ? c.A_d : theory::ideal_gas_amplitude(c.d);
   s.A_d_source = c.A_d > 0.0 ? "scene" : "ideal gas (gamma = 1 + 2/d)";
   s.phi = theory::packing_fraction(c.d, c.n, c.a);
   s.lambda = theory::mean_free_path(c.d, c.n, c.a);

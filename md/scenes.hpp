@@ -57,10 +57,6 @@ const std::string& default_scene_toml();
 BlastConfig parse_scene(const std::string& toml_text, const std::vector<std::string>& overrides = {},
                         const std::string& source = "scene");
 
-/// Ideal-gas TvNS amplitudes (γ = 1 + 2/d): A_2 = 0.351935906848599, A_3 = 0.493590149582568 (not the paper's
-/// 0.0724; see docs/verification.md).
-double ideal_gas_amplitude(int d);
-
 /// Quantities derived from a validated scene.
 struct ResolvedScene {
   BlastConfig config;

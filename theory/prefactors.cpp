@@ -1,8 +1,11 @@
 #include "theory/prefactors.hpp"
 
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "common/validate.hpp"
 #include "theory/exponents.hpp"
@@ -20,6 +23,12 @@ void check_dimension(int d, int lo = min_dimension) {
 }
 void check_positive(const char* name, double value) {
   require_in_range(name, value, 0.0, inf);
+}
+/// Checks (name, value) pairs for value > 0 and finite; builds a message only on failure, so the
+/// Eq. (1) helpers stay cheap inside solver loops.
+void require_positive(std::initializer_list<std::pair<const char*, double>> values) {
+  for (const auto& [name, value] : values)
+    if (!(value > 0.0 && value < inf)) check_positive(name, value);
 }
 }  // namespace
 
@@ -62,20 +71,50 @@ void BlastParameters::validate() const {
   check_positive("A_d", A_d);
 }
 
+double ideal_gas_amplitude(int d) {
+  if (d == 2) return ideal_gas_A_2;
+  if (d == 3) return ideal_gas_A_3;
+  throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
+}
+
+double shock_radius(int d, double E, double n, double A_d, double t) {
+  if (d < min_dimension || d > max_dimension) check_dimension(d);
+  require_positive({{"E", E}, {"n", n}, {"A_d", A_d}, {"t", t}});
+  return std::pow(E * t * t / (A_d * n), 1.0 / (d + 2));  // Eq. (1) [R-shock]
+}
+
+double shock_time(int d, double E, double n, double A_d, double R) {
+  if (d < min_dimension || d > max_dimension) check_dimension(d);
+  require_positive({{"E", E}, {"n", n}, {"A_d", A_d}, {"R", R}});
+  return std::sqrt(A_d * n * std::pow(R, d + 2) / E);  // Eq. (1) solved for t
+}
+
+double shock_amplitude(int d, double E, double n, double t, double R) {
+  if (d < min_dimension || d > max_dimension) check_dimension(d);
+  require_positive({{"E", E}, {"n", n}, {"t", t}, {"R", R}});
+  return E * t * t / (n * std::pow(R, d + 2));  // Eq. (1) solved for A_d
+}
+
+double shock_speed_at(int d, double R, double t) {
+  if (d < min_dimension || d > max_dimension) check_dimension(d);
+  require_positive({{"R", R}, {"t", t}});
+  return 2.0 * R / ((d + 2) * t);  // d/dt of Eq. (1): R ∝ t^(2/(d+2))
+}
+
 double shock_radius(const BlastParameters& p, double t) {
   p.validate();
   check_positive("t", t);
-  return std::pow(p.E * t * t / (p.A_d * p.n), 1.0 / (p.d + 2));  // Eq. (1) [R-shock]
+  return shock_radius(p.d, p.E, p.n, p.A_d, t);
 }
 
 double shock_time(const BlastParameters& p, double R) {
   p.validate();
   check_positive("R", R);
-  return std::sqrt(p.A_d * p.n * std::pow(R, p.d + 2) / p.E);  // Eq. (1) solved for t
+  return shock_time(p.d, p.E, p.n, p.A_d, R);
 }
 
 double shock_speed(const BlastParameters& p, double t) {
-  return 2.0 * shock_radius(p, t) / ((p.d + 2) * t);  // d/dt of Eq. (1)
+  return shock_speed_at(p.d, shock_radius(p, t), t);
 }
 
 double core_radius(int d, double lambda, double R) {

@@ -16,6 +16,14 @@ double packing_fraction(int d, double n, double a);
 /// Inverse of Eq. (2): n = φ/(Ω_d a^d).
 double number_density(int d, double phi, double a);
 
+/// Eq. (3) (unlabelled, after [phi:def]): the ideal-gas TvNS amplitudes for γ = 1 + 2/d, computed by
+/// hydro::solve_tvns (A_2 ± 2.5e-14 matches the paper's 0.351 935 906...; A_3 ± 3.7e-14 does not match
+/// the paper's 0.0724, see docs/verification.md). hydro's tests check these constants against the solver.
+inline constexpr double ideal_gas_A_2 = 0.351935906848599;
+inline constexpr double ideal_gas_A_3 = 0.493590149582568;
+/// ideal_gas_A_2 or ideal_gas_A_3; throws std::invalid_argument for d outside [2, 3].
+double ideal_gas_amplitude(int d);
+
 /// Physical parameters of a blast: dimension, ambient density n (1/length^d), radius a
 /// (length), energy E (m = 1 units) and the TvNS amplitude A_d of Eq. (1).
 struct BlastParameters {
@@ -23,12 +31,22 @@ struct BlastParameters {
   double n = 0.15;
   double a = 0.5;
   double E = 1.0;
-  double A_d = 0.351935906;
+  double A_d = ideal_gas_A_2;
   /// Throws std::invalid_argument naming the first parameter out of range.
   void validate() const;
 };
 
-/// Eq. (1) [R-shock]: R(t) = (E t²/(A_d n))^(1/(d+2)); t > 0.
+/// Eq. (1) [R-shock]: R(t) = (E t²/(A_d n))^(1/(d+2)); E, n, A_d, t > 0 (std::invalid_argument
+/// otherwise). The one definition of Eq. (1): every R(t), t(R), Ṙ and A_d-from-R calls these.
+double shock_radius(int d, double E, double n, double A_d, double t);
+/// Inverse of Eq. (1): the time t = (A_d n R^(d+2)/E)^(1/2) at which the shock reaches radius R > 0.
+double shock_time(int d, double E, double n, double A_d, double R);
+/// Eq. (1) solved for the amplitude: A_d = E t²/(n R^(d+2)) of a shock at radius R at time t.
+double shock_amplitude(int d, double E, double n, double t, double R);
+/// Ṙ = 2R/((d+2)t) of a shock at radius R at time t > 0 obeying Eq. (1)'s power law.
+double shock_speed_at(int d, double R, double t);
+
+/// Eq. (1) [R-shock] for a blast's parameters; t > 0.
 double shock_radius(const BlastParameters& p, double t);
 /// Inverse of Eq. (1): the time at which the shock reaches radius R > 0.
 double shock_time(const BlastParameters& p, double R);

@@ -10,6 +10,7 @@
 #include "hydro/tvns.hpp"
 #include "hydro/tvns_closed_form.hpp"
 #include "hydro/tvns_ode.hpp"
+#include "theory/prefactors.hpp"
 
 using namespace coldblast::hydro;
 using Catch::Matchers::Contains;
@@ -55,6 +56,13 @@ TEST_CASE("A_3 at gamma = 5/3 and other anchors; the paper's A_3 = 0.0724 is not
   CHECK_THAT(ideal(3, 1.4).A(), WithinAbs(0.851072, 5e-7));
   // docs/verification.md, "A_2 and A_3": no convention consistent with A_2 gives 0.072401066.
   CHECK(std::abs(ideal(3).A() - 0.072401066) > 0.4);
+}
+
+TEST_CASE("theory's ideal-gas constants A_2, A_3 are the solver's values within its error", "[fast]") {
+  for (int d : {2, 3}) {
+    const TvnsSolution s = ideal(d);
+    CHECK(std::abs(coldblast::theory::ideal_gas_amplitude(d) - s.A()) <= s.A_error() + 1e-15);
+  }
 }
 
 TEST_CASE("Kamm & Timmes Table 4 (gamma = 1.4): kinetic energy integrals J1", "[fast]") {

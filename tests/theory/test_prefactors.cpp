@@ -50,6 +50,30 @@ TEST_CASE("shock radius, its inverse, its speed and the core radius", "[fast]") 
   CHECK_THROWS_WITH(shock_radius(bad, 1.0), Catch::Contains("E = -1"));
 }
 
+TEST_CASE("Eq. (1)'s forms agree with each other bit for bit and name bad arguments", "[fast]") {
+  for (int d : {1, 2, 3, 7}) {
+    const BlastParameters p{d, 0.2, 0.5, 3.0, 0.4};
+    for (double t : {0.5, 10.0, 4000.0}) {
+      const double R = shock_radius(d, p.E, p.n, p.A_d, t);
+      CHECK(R == shock_radius(p, t));  // the BlastParameters form calls the free form
+      CHECK(shock_speed_at(d, R, t) == shock_speed(p, t));
+      CHECK_THAT(shock_time(d, p.E, p.n, p.A_d, R), WithinRel(t, 1e-14));
+      CHECK_THAT(shock_amplitude(d, p.E, p.n, t, R), WithinRel(p.A_d, 1e-14));
+    }
+  }
+  CHECK_THROWS_WITH(shock_radius(2, 1.0, 0.1, 0.3, -2.0), "t = -2 is outside (0, inf)");
+  CHECK_THROWS_WITH(shock_amplitude(2, 1.0, 0.1, 1.0, 0.0), Catch::Contains("R = 0"));
+  CHECK_THROWS_WITH(shock_speed_at(2, 1.0, std::nan("")), Catch::Contains("t = nan"));
+}
+
+TEST_CASE("the ideal-gas amplitudes: A_2 is the paper's 0.351935906..., A_3 exists only for d = 3", "[fast]") {
+  CHECK(ideal_gas_amplitude(2) >= 0.351935906);
+  CHECK(ideal_gas_amplitude(2) < 0.351935907);
+  CHECK(ideal_gas_amplitude(3) == ideal_gas_A_3);
+  CHECK(BlastParameters{}.A_d == ideal_gas_A_2);
+  CHECK_THROWS_WITH(ideal_gas_amplitude(4), "d = 4 is outside [2, 3]");
+}
+
 TEST_CASE("scaling estimates follow their exponents in time", "[fast]") {
   for (int d : {2, 3}) {
     const BlastParameters p{d, 0.15, 0.5, 10.0, 0.5};
