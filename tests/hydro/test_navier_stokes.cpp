@@ -230,3 +230,39 @@ TEST_CASE("stress: every d and E over twelve decades keep n and T positive and c
       CHECK(std::isfinite(result.final_exponents().T0));
     }
 }
+
+TEST_CASE("ideal gas with dilute transport stays bit-for-bit the solver of commit d1eadfa", "[fast]") {
+  // Final samples (R/λ = until) recorded with `coldblast hydro core|euler ... --out` at commit d1eadfa,
+  // before the dense equation of state and Enskog transport were added (issue 12). A changed step
+  // sequence moves these numbers at the 1e-8 level (the integration error), so 1e-14 pins the bits.
+  struct Pin {
+    int d;
+    bool conduction, viscosity;
+    double until;
+    int cells;
+    double t, R, H, n0, T0;
+  };
+  const Pin pins[] = {
+      {2, true, false, 30, 48, 533.91767581469446, 30.6047235395407, 17.988478888161737, 0.19338688861443534,
+       0.00071165389496907479},
+      {3, true, true, 30, 48, 6335.2196264975628, 38.803985673851471, 22.423508110178258, 0.078775378201930396,
+       1.4771490735410085e-05},
+      {1, true, false, 30, 48, 61.902607159223273, 29.500638359192671, 29.775770466611299, 0.43156677594025195,
+       0.033678862911936211},
+      {2, false, false, 50, 64, 1483.104655040818, 50.052472168944249, 3.1959741661200232, 0.0029557589129093342,
+       0.017578054872434745},
+  };
+  for (const Pin& pin : pins) {
+    CAPTURE(pin.d, pin.conduction, pin.viscosity);
+    NavierStokesConfig config = core_config(pin.d, pin.until, pin.cells);
+    config.physics.heat_conduction = pin.conduction;
+    config.physics.viscosity = pin.viscosity;
+    const auto result = run_navier_stokes(config);
+    const auto& s = result.final_sample();
+    CHECK(s.t == Approx(pin.t).epsilon(1e-14));
+    CHECK(s.R == Approx(pin.R).epsilon(1e-14));
+    CHECK(s.H == Approx(pin.H).epsilon(1e-14));
+    CHECK(s.n0 == Approx(pin.n0).epsilon(1e-14));
+    CHECK(s.T0 == Approx(pin.T0).epsilon(1e-14));
+  }
+}
