@@ -24,6 +24,9 @@ struct HydroOptions {
   std::string viscosity = "off";
   double kappa_prefactor = -1;  // < 0: Chapman–Enskog default (only the flag's own value is range-checked)
   bool kappa_given = false;
+  std::string eos = "ideal";
+  double phi = 0;  // 0: the library's default for a hard-particle EOS
+  std::string transport = "dilute";
   std::string out;
   Format format = Format::table;
 };
@@ -50,6 +53,9 @@ hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
                            " (R/lambda at the end; must exceed the initial size R/lambda = " +
                                common::format_number(config.numerics.start_R_over_lambda) + ")");
   config.until_R_over_lambda = until;
+  config.physics.eos = hydro::eos_from_string(options.eos, "--eos");
+  config.physics.phi = options.phi;
+  config.physics.transport = hydro::transport_from_string(options.transport, "--transport");
   if (euler) {
     config.physics.heat_conduction = false;
     config.physics.viscosity = false;
@@ -82,6 +88,9 @@ std::string config_header(const hydro::NavierStokesResult& r) {
        {"E", number(c.physics.E)},
        {"n_inf", number(c.physics.n_inf)},
        {"a", number(c.physics.a)},
+       {"eos", hydro::to_string(c.physics.eos)},
+       {"phi", number(c.physics.phi)},
+       {"transport", hydro::to_string(c.physics.transport)},
        {"lambda", number(r.lambda)},
        {"kappa_prefactor", number(r.kappa_prefactor)},
        {"viscosity_prefactor", number(r.viscosity_prefactor)},
@@ -98,6 +107,18 @@ std::string config_header(const hydro::NavierStokesResult& r) {
        {"max_energy_error", number(r.max_energy_error, 3)}},
       "m = k_B = 1; lengths and times in the units of E, n_inf and a (lambda = 1/(n_inf Omega_{d-1} a^{d-1})); "
       "exponents are d ln X/d ln t (and d ln X/d ln(R/lambda) where marked _in_R)");
+}
+
+/// The physical model actually solved (phi resolved by the library).
+void print_model(const hydro::NavierStokesResult& r) {
+  const hydro::NavierStokesPhysics& p = r.config.physics;
+  std::printf("  model: eos = %s, phi = %.6g, transport = %s\n", hydro::to_string(p.eos).c_str(), p.phi,
+              hydro::to_string(p.transport).c_str());
+}
+
+common::Json model_json(const hydro::NavierStokesResult& r) {
+  const hydro::NavierStokesPhysics& p = r.config.physics;
+  return {{"eos", hydro::to_string(p.eos)}, {"phi", p.phi}, {"transport", hydro::to_string(p.transport)}};
 }
 
 void write_files(const hydro::NavierStokesResult& r, const std::string& directory) {
@@ -158,6 +179,7 @@ void run_core(const HydroOptions& options) {
                 {"exponents", exponents},
                 {"prefactors", {{"H", s.H_prefactor}, {"n0", s.n0_prefactor}, {"T0", s.T0_prefactor}}},
                 {"p0_scaled", s.p0_scaled},
+                {"model", model_json(r)},
                 {"kappa_prefactor", r.kappa_prefactor},
                 {"viscosity_prefactor", r.viscosity_prefactor},
                 {"energy_error", r.max_energy_error},
@@ -168,6 +190,7 @@ void run_core(const HydroOptions& options) {
   }
   std::printf("Navier-Stokes core, d = %d, R/lambda = %s, %d cells, c_kappa = %.6g, c_mu = %.6g\n", config.physics.d,
               number(s.R_over_lambda, 6).c_str(), config.numerics.cells, r.kappa_prefactor, r.viscosity_prefactor);
+  print_model(r);
   std::printf("running time exponents d ln X / d ln t at the end:\n  %-4s %10s %10s %10s\n", "X", "measured", "theory",
               "");
   for (const Row& row : rows)
@@ -189,6 +212,7 @@ void run_euler(const HydroOptions& options) {
   if (options.format == Format::json) {
     print_json(
         {{"d", config.physics.d},
+         {"model", model_json(r)},
          {"A_measured", c.A_measured},
          {"A_exact", c.A_exact},
          {"A_relative_error", c.A_relative_error},
@@ -203,6 +227,7 @@ void run_euler(const HydroOptions& options) {
   std::printf("Euler (kappa = mu = 0), d = %d, %d cells, R/(initial width) = %.4g\n", config.physics.d,
               config.numerics.cells,
               config.until_R_over_lambda / (config.numerics.start_R_over_lambda * config.numerics.initial_width));
+  print_model(r);
   std::printf("  A measured %.7f  exact %.7f  relative error %+.2e\n", c.A_measured, c.A_exact, c.A_relative_error);
   std::printf("  profile L1 errors: density %.2e  velocity %.2e  pressure %.2e\n", c.L1_density, c.L1_velocity,
               c.L1_pressure);
@@ -215,6 +240,10 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
       ->capture_default_str();
   command.add_option("--until", options.until, until_help);
   command.add_option("--cells", options.cells, "Finite-volume cells (>= 16)")->capture_default_str();
+  command.add_option("--eos", options.eos, "Equation of state: ideal, henderson (d = 2) or carnahan-starling (d = 3)")
+      ->capture_default_str();
+  command.add_option("--phi", options.phi,
+                     "Ambient packing fraction for a hard-particle --eos (default 0.118, the paper's MD)");
   command.add_option("--out", options.out, "Folder for samples.csv, exponents.csv, profile.csv (none if empty)");
   add_format_option(command, options.format);
 }
@@ -231,6 +260,9 @@ void add_hydro_command(CLI::App& app) {
       "core", "Heat-conducting blast: running exponents of H, n0, T0 and R beside the theory (Eqs. 4, 11, 12)");
   add_common_options(*core, *core_options, "Stop at R/lambda (default 1e4)");
   core->add_option("--viscosity", core_options->viscosity, "Shear viscosity mu = c_mu n_inf lambda sqrt(T): on or off")
+      ->capture_default_str();
+  core->add_option("--transport", core_options->transport,
+                   "dilute (Chapman-Enskog) or enskog (dense hard particles: needs a hard-particle --eos)")
       ->capture_default_str();
   core->add_option_function<double>(
       "--kappa-prefactor",

@@ -36,4 +36,10 @@ double strong_shock_compression(Eos eos, double phi);
 /// Squared adiabatic sound speed over T for hard particles: c^2/T = Z + phi Z' + (2/d) Z^2.
 double sound_speed_squared_over_temperature(Eos eos, double phi);
 
+/// Pair correlation at contact chi(phi) consistent with the EOS through the virial (contact) theorem
+/// Z = 1 + 2^(d-1) phi chi: henderson (1 - 7 phi/16)/(1 - phi)^2, carnahan_starling
+/// (1 - phi/2)/(1 - phi)^3; chi = 1 at phi = 0. The ideal gas (no excluded volume) returns 1, the
+/// Boltzmann limit. Throws std::invalid_argument naming phi outside [0, close_packing_fraction(eos)).
+double contact_value(Eos eos, double phi);
+
 }  // namespace coldblast::hydro

@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "common/validate.hpp"
+#include "hydro/enskog.hpp"
 #include "hydro/sundials_handles.hpp"
 #include "hydro/tvns.hpp"
 #include "theory/prefactors.hpp"
@@ -33,16 +34,18 @@ double van_leer(double left, double right) {
   return product > 0 ? 2 * product / (left + right) : 0.0;
 }
 
+/// Face state: density, velocity, pressure, then (complete_state) sound speed and total energy per volume.
 struct State {
   double n, u, p;
+  double c = 0, total = 0;
 };
 
-/// HLLC flux F(U) - w U through a face moving with speed w (Toro Sec. 10.4, Davis wave speeds).
-void hllc_flux(const State& L, const State& R, double w, double gamma, double flux[components]) {
-  const double cL = std::sqrt(gamma * L.p / L.n), cR = std::sqrt(gamma * R.p / R.n);
+/// HLLC flux F(U) - w U through a face moving with speed w (Toro Sec. 10.4, Davis wave speeds). The
+/// star states follow from the conservation laws alone, so only c and the total energy carry the EOS.
+void hllc_flux(const State& L, const State& R, double w, double flux[components]) {
+  const double cL = L.c, cR = R.c;
   const double SL = std::min(L.u - cL, R.u - cR), SR = std::max(L.u + cL, R.u + cR);
-  const double EL = L.p / (gamma - 1) + 0.5 * L.n * L.u * L.u;
-  const double ER = R.p / (gamma - 1) + 0.5 * R.n * R.u * R.u;
+  const double EL = L.total, ER = R.total;
   const double SM =
       (R.p - L.p + L.n * L.u * (SL - L.u) - R.n * R.u * (SR - R.u)) / (L.n * (SL - L.u) - R.n * (SR - R.u));
   auto physical = [&](const State& s, double total, double out[components]) {
@@ -76,6 +79,11 @@ class Blast {
         gamma_(1.0 + 2.0 / d_),
         E_(config.physics.E),
         n_inf_(config.physics.n_inf),
+        eos_(config.physics.eos),
+        enskog_(config.physics.transport == Transport::enskog),
+        phi_inf_(config.physics.resolved_phi()),
+        phi_close_packing_(close_packing_fraction(eos_)),
+        Z_inf_(compressibility(eos_, phi_inf_)),
         lambda_(theory::mean_free_path(d_, n_inf_, config.physics.a)),
         A_ref_(A_reference),
         margin_(config.numerics.outer_margin),
@@ -95,7 +103,6 @@ class Blast {
     flux_.assign(components * (cells_ + 1), 0.0);
     heat_.assign(cells_ + 1, 0.0);
     stress_.assign(cells_ + 1, 0.0);
-    face_velocity_.assign(cells_ + 1, 0.0);
   }
 
   int cells() const { return cells_; }
@@ -104,6 +111,30 @@ class Blast {
   /// Mach number stays 1/√(γ floor) at all times (the gas of the paper is at T = 0).
   double T_inf(double t) const { return floor_ * std::pow(shock_speed(t), 2); }
   double internal_energy_inf(double t) const { return 0.5 * d_ * n_inf_ * T_inf(t); }
+  /// Pressure of the cold gas: n∞ T∞ Z(φ∞) (Z = 1 for the ideal gas, written so that its bits are unchanged).
+  double pressure_inf(double t) const { return eos_ == Eos::ideal ? n_inf_ * T_inf(t) : n_inf_ * T_inf(t) * Z_inf_; }
+  /// Local packing fraction φ = φ∞ n/n∞.
+  double packing_fraction(double n) const { return phi_inf_ * n / n_inf_; }
+  /// Largest φ met by the last failed primitives() (0 if none): > close packing means the flow tried to pack the gas.
+  double packing_exceeded() const { return packing_exceeded_; }
+  double close_packing() const { return phi_close_packing_; }
+
+  /// Sound speed and total energy of a face state: ideal c² = γ p/n, e = p/(γ-1) + n u²/2; hard particles
+  /// c² = T (Z + φ Z' + (2/d) Z²) (hydro/equation_of_state.hpp) and internal energy (d/2) n T = (d/2) p/Z.
+  bool complete_state(State& s) const {
+    if (eos_ == Eos::ideal) {
+      s.c = std::sqrt(gamma_ * s.p / s.n);
+      s.total = s.p / (gamma_ - 1) + 0.5 * s.n * s.u * s.u;
+      return true;
+    }
+    const double phi = packing_fraction(s.n);
+    if (!(phi < phi_close_packing_)) return false;
+    const double Z = compressibility(eos_, phi);
+    const double T = s.p / (s.n * Z);
+    s.c = std::sqrt(T * sound_speed_squared_over_temperature(eos_, phi));
+    s.total = 0.5 * d_ * s.p / Z + 0.5 * s.n * s.u * s.u;
+    return true;
+  }
 
   /// Eq. (1) [R-shock] with the reference amplitude: R_ref(t) = (E t²/(A n∞))^(1/(d+2)).
   double reference_radius(double t) const { return std::pow(E_ * t * t / (A_ref_ * n_inf_), 1.0 / (d_ + 2)); }
@@ -165,7 +196,16 @@ class Blast {
       n_[i] = n;
       u_[i] = u;
       T_[i] = T;
-      p_[i] = n * T;
+      if (eos_ == Eos::ideal) {
+        p_[i] = n * T;
+      } else {
+        const double phi = packing_fraction(n);
+        if (!(phi < phi_close_packing_)) {
+          packing_exceeded_ = std::max(packing_exceeded_, phi);
+          return false;
+        }
+        p_[i] = n * T * compressibility(eos_, phi);
+      }
     }
     return true;
   }
@@ -183,7 +223,7 @@ class Blast {
     // Limited slopes of q = (ln n, u, ln p); ghosts: mirror at r = 0, cold gas at rest outside.
     auto q = [&](int i, int k) -> double {
       if (i < 0) return k == 0 ? std::log(n_[0]) : k == 1 ? -u_[0] : std::log(p_[0]);
-      if (i >= N) return k == 0 ? std::log(n_inf_) : k == 1 ? 0.0 : std::log(n_inf_ * T_inf(t));
+      if (i >= N) return k == 0 ? std::log(n_inf_) : k == 1 ? 0.0 : std::log(pressure_inf(t));
       return k == 0 ? std::log(n_[i]) : k == 1 ? u_[i] : std::log(p_[i]);
     };
     for (int i = 0; i < N; ++i)
@@ -205,9 +245,10 @@ class Blast {
         left = State{right.n, -right.u, right.p};
       } else {
         left = face_state(j - 1, r_[j]);
-        right = j == N ? State{n_inf_, 0.0, n_inf_ * T_inf(t)} : face_state(j, r_[j]);
+        right = j == N ? State{n_inf_, 0.0, pressure_inf(t)} : face_state(j, r_[j]);
       }
-      hllc_flux(left, right, w, gamma_, &flux_[components * j]);
+      if (!complete_state(left) || !complete_state(right)) return 1;  // a face state beyond close packing
+      hllc_flux(left, right, w, &flux_[components * j]);
     }
     // Eq. (13) [entropy-heat] right-hand side as a flux: q = -κ(T) ∂T/∂r at interior faces.
     std::fill(heat_.begin(), heat_.end(), 0.0);
@@ -215,13 +256,20 @@ class Blast {
     for (int j = 1; j < N; ++j) {
       const double dr = centre[j + 1] - centre[j];
       const double T_face = 0.5 * (T_[j - 1] + T_[j]);
-      if (kappa_ > 0) heat_[j] = -kappa_ * std::sqrt(T_face) * (T_[j] - T_[j - 1]) / dr;
+      const EnskogFactors f =
+          enskog_ ? enskog_factors(d_, packing_fraction(0.5 * (n_[j - 1] + n_[j]))) : EnskogFactors{};
+      if (kappa_ > 0) {
+        heat_[j] = -kappa_ * std::sqrt(T_face) * (T_[j] - T_[j - 1]) / dr;
+        if (enskog_) heat_[j] *= f.conductivity;
+      }
       if (mu_ > 0) {
-        // τ_rr = μ (2 ∂u/∂r - (2/d) ∇·u), ∇·u = ∂u/∂r + (d-1) u/r (zero bulk viscosity)
+        // τ_rr = μ (2 ∂u/∂r - (2/d) ∇·u) + ζ ∇·u, ∇·u = ∂u/∂r + (d-1) u/r (ζ = 0 for dilute transport)
         const double dudr = (u_[j] - u_[j - 1]) / dr;
         const double u_face = 0.5 * (u_[j - 1] + u_[j]);
         const double divergence = dudr + (d_ - 1) * u_face / r_[j];
         stress_[j] = mu_ * std::sqrt(T_face) * (2 * dudr - 2.0 / d_ * divergence);
+        if (enskog_)
+          stress_[j] = mu_ * std::sqrt(T_face) * (f.shear * (2 * dudr - 2.0 / d_ * divergence) + f.bulk * divergence);
       }
     }
     for (int i = 0; i < N; ++i) {
@@ -238,7 +286,12 @@ class Blast {
         const double u_out = i == N - 1 ? 0.5 * u_[i] : 0.5 * (u_[i] + u_[i + 1]);
         const double dudr = (u_out - u_in) / (r_[i + 1] - r_[i]);
         const double rc = centre[i + 1];
-        const double tau_tt = mu_ * std::sqrt(T_[i]) * (2 * u_[i] / rc - 2.0 / d_ * (dudr + (d_ - 1) * u_[i] / rc));
+        double tau_tt = mu_ * std::sqrt(T_[i]) * (2 * u_[i] / rc - 2.0 / d_ * (dudr + (d_ - 1) * u_[i] / rc));
+        if (enskog_) {
+          const EnskogFactors f = enskog_factors(d_, packing_fraction(n_[i]));
+          const double divergence = dudr + (d_ - 1) * u_[i] / rc;
+          tau_tt = mu_ * std::sqrt(T_[i]) * (f.shear * (2 * u_[i] / rc - 2.0 / d_ * divergence) + f.bulk * divergence);
+        }
         out[1] += A_out * stress_[i + 1] - A_in * stress_[i] - tau_tt * (A_out - A_in);
         const double u_face_out = i == N - 1 ? 0.0 : 0.5 * (u_[i] + u_[i + 1]);
         out[2] += A_out * u_face_out * stress_[i + 1] - A_in * u_in * stress_[i];
@@ -290,11 +343,21 @@ class Blast {
     xi_[cells_] = outer;
   }
 
+  /// Enskog factors at packing fraction phi with the EOS's contact value.
+  EnskogFactors enskog_factors(int d, double phi) const {
+    return hydro::enskog_factors(d, phi, contact_value(eos_, phi));
+  }
+
   int d_;
-  double gamma_, E_, n_inf_, lambda_, A_ref_, margin_, omega_;
+  double gamma_, E_, n_inf_;
+  Eos eos_;
+  bool enskog_;
+  double phi_inf_, phi_close_packing_, Z_inf_;
+  double lambda_, A_ref_, margin_, omega_;
   int cells_ = 0;
   double kappa_ = 0, mu_ = 0, floor_ = 0, t0_ = 0;
-  std::vector<double> xi_, r_, centre_, n_, u_, T_, p_, slope_, flux_, heat_, stress_, face_velocity_;
+  double packing_exceeded_ = 0;
+  std::vector<double> xi_, r_, centre_, n_, u_, T_, p_, slope_, flux_, heat_, stress_;
 };
 
 /// Error weights 1/(rtol |y| + atol): mass and energy totals are positive and purely relative;
@@ -437,9 +500,59 @@ double chapman_enskog_viscosity_prefactor(int d) {
          std::pow(2.0, d - 1);
 }
 
+std::string to_string(Transport transport) {
+  switch (transport) {
+    case Transport::dilute:
+      return "dilute";
+    case Transport::enskog:
+      return "enskog";
+  }
+  throw std::logic_error("to_string: unknown Transport");
+}
+
+Transport transport_from_string(const std::string& text, const std::string& option) {
+  if (text == "dilute") return Transport::dilute;
+  if (text == "enskog") return Transport::enskog;
+  throw std::invalid_argument(option + " = " + text + " is not one of dilute, enskog");
+}
+
+double NavierStokesPhysics::resolved_phi() const {
+  return eos != Eos::ideal && phi == 0 ? default_packing_fraction : phi;
+}
+
+namespace {
+
+/// The EOS and transport options of issue 12: dimension, range of φ∞, and combinations.
+void validate_dense_physics(const NavierStokesPhysics& physics) {
+  if (physics.eos == Eos::ideal) {
+    if (physics.phi != 0)
+      throw std::invalid_argument("phi = " + common::format_number(physics.phi) +
+                                  " needs a hard-particle eos (henderson for d = 2, carnahan-starling for d = 3); "
+                                  "with eos = ideal phi must be 0");
+    if (physics.transport == Transport::enskog)
+      throw std::invalid_argument(
+          "transport = enskog needs a hard-particle eos (henderson for d = 2, carnahan-starling for d = 3) for its "
+          "contact value; with eos = ideal transport must be dilute");
+    return;
+  }
+  if (eos_dimension(physics.eos) != physics.d)
+    throw std::invalid_argument("eos = " + to_string(physics.eos) + " is defined for d = " +
+                                std::to_string(eos_dimension(physics.eos)) + ", not d = " + std::to_string(physics.d) +
+                                " (allowed: ideal for any d, henderson for d = 2, carnahan-starling for d = 3)");
+  if (physics.phi != 0)
+    common::require_in_range(
+        "phi", physics.phi, 0.0, max_ambient_packing_fraction(physics.eos), common::Bound::open, common::Bound::open,
+        "for eos = " + to_string(physics.eos) + " (the shocked gas must stay below close packing " +
+            common::format_number(close_packing_fraction(physics.eos)) + "; 0 selects the default " +
+            common::format_number(default_packing_fraction) + ")");
+}
+
+}  // namespace
+
 void NavierStokesConfig::validate() const {
   using common::Bound;
   common::require_integer_in_range("d", physics.d, 1, 3);
+  validate_dense_physics(physics);
   common::require_in_range("E", physics.E, 0, std::numeric_limits<double>::infinity());
   common::require_in_range("n_inf", physics.n_inf, 0, std::numeric_limits<double>::infinity());
   common::require_in_range("a", physics.a, 0, std::numeric_limits<double>::infinity());
@@ -514,6 +627,7 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   input.validate();
   NavierStokesConfig config = input;
   const int d = config.physics.d;
+  config.physics.phi = config.physics.resolved_phi();
   if (!config.numerics.core_resolution) config.numerics.core_resolution = default_core_resolution(config);
   if (!config.numerics.shock_band_fraction) {
     // Euler mode has no core to resolve: most cells go to the shock, whose smearing sets A's error
@@ -529,6 +643,8 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
                                    : 0.0;
   TvnsConfig tvns_config;
   tvns_config.d = d;
+  tvns_config.eos = config.physics.eos;
+  tvns_config.phi = config.physics.phi;
   tvns_config.tolerance = 1e-10;
   result.A_reference = solve_tvns(tvns_config).A();  // sets the grid scale R_ref(t) only
 
@@ -591,13 +707,19 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     // Step exactly onto the output time: interpolated output would not keep the projected totals.
     sh::check_cvode(CVodeSetStopTime(memory, output.t), "CVodeSetStopTime");
     const int flag = CVode(memory, output.t, y.get(), &t, CV_NORMAL);
+    const std::string packing =
+        blast.packing_exceeded() >= blast.close_packing()
+            ? "; the flow tried to compress the gas to phi = " + common::format_number(blast.packing_exceeded()) +
+                  ", beyond close packing " + common::format_number(blast.close_packing())
+            : "";
     sh::check_cvode(flag, "CVode",
-                    " at t = " + common::format_number(t) +
-                        " (R_ref/lambda = " + common::format_number(blast.reference_radius(t) / lambda) + ")");
+                    " at t = " + common::format_number(t) + " (R_ref/lambda = " +
+                        common::format_number(blast.reference_radius(t) / lambda) + ")" + packing);
     const double* state = N_VGetArrayPointer(y.get());
     std::vector<double> derivative(size);
     if (blast.rhs(t, state, derivative.data()) != 0)
-      throw std::runtime_error("positivity lost at t = " + common::format_number(t) + ": a cell has n <= 0 or T <= 0");
+      throw std::runtime_error("positivity lost at t = " + common::format_number(t) +
+                               ": a cell has n <= 0 or T <= 0, or phi >= close packing" + packing);
     const std::vector<double>& radii = blast.radii();
     for (int i = 0; i < N; ++i) centres[i] = 0.5 * (radii[i] + radii[i + 1]);
     const std::vector<double>& n = blast.density();
@@ -619,7 +741,7 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     sample.R_over_lambda = sample.R / lambda;
     sample.n0 = n[0];
     sample.T0 = T[0];
-    sample.p0 = n[0] * T[0];
+    sample.p0 = blast.pressure()[0];  // n0 T0 Z(φ0); n0 T0 for the ideal gas
     sample.H = crossing_radius(centres, T, 0, 0.5 * T[0], true);
     sample.H_density = crossing_radius(centres, n, 0, 2.0 * n[0], false);
     double energy = 0, mass = 0;
@@ -716,6 +838,8 @@ TvnsComparison compare_to_tvns(const NavierStokesResult& result, double x_min) {
   const int d = physics.d;
   TvnsConfig tvns_config;
   tvns_config.d = d;
+  tvns_config.eos = physics.eos;
+  tvns_config.phi = physics.resolved_phi();
   const TvnsSolution exact = solve_tvns(tvns_config);
   const NavierStokesProfile& profile = result.profiles.back();
   TvnsComparison comparison;
@@ -752,8 +876,10 @@ TvnsComparison compare_to_tvns(const NavierStokesResult& result, double x_min) {
   return comparison;
 }
 
-NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells) {
+NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells,
+                                  const std::optional<NavierStokesPhysics>& physics) {
   NavierStokesConfig config;
+  if (physics) config.physics = *physics;
   config.physics.d = d;
   config.physics.E = 1.0;
   config.physics.n_inf = 1.0;
@@ -763,8 +889,13 @@ NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells) 
   return run_navier_stokes(config);
 }
 
-NavierStokesResult run_hydro_euler(int d, double until_R_over_lambda, int cells) {
+NavierStokesResult run_hydro_euler(int d, double until_R_over_lambda, int cells,
+                                   const std::optional<NavierStokesPhysics>& physics) {
   NavierStokesConfig config;
+  if (physics) {
+    config.physics.eos = physics->eos;
+    config.physics.phi = physics->phi;
+  }
   config.physics.d = d;
   config.physics.heat_conduction = false;
   config.physics.viscosity = false;

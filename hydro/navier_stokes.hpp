@@ -1,14 +1,30 @@
 #pragma once
 // Radially symmetric compressible Navier–Stokes blast (d = 1, 2, 3) of an ideal monatomic gas with
-// hard-sphere heat conduction κ = c_κ n∞ λ √T (paper Sec. III, Eqs. (13)-(20)): measures the core
-// radius H, central density n0 and temperature T0 and their running exponents from R/λ ≈ 2 upward.
+// hard-sphere heat conduction κ = c_κ n∞ λ √T (paper Sec. III, Eqs. (13)-(20)), or of the dense
+// hard-particle gas at the MD's packing fraction (Henderson / Carnahan–Starling EOS, Enskog transport;
+// issue 12): measures the core radius H, central density n0 and temperature T0 and their running
+// exponents from R/λ ≈ 2 upward.
 // Numerics (docs/hydro.md): finite volumes on a grid r = ξ R_ref(t), HLLC, CVODE BDF, banded Jacobian.
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "hydro/equation_of_state.hpp"
+
 namespace coldblast::hydro {
+
+/// Transport coefficients: dilute Chapman–Enskog (κ = c_κ n∞ λ √T, μ = c_μ n∞ λ √T, no bulk viscosity),
+/// or Enskog's dense gas (the same times the factors of hydro/enskog.hpp at the local φ, with bulk viscosity).
+enum class Transport { dilute, enskog };
+
+/// "dilute" or "enskog".
+std::string to_string(Transport transport);
+/// Inverse of to_string; throws std::invalid_argument naming `option` and the allowed values.
+Transport transport_from_string(const std::string& text, const std::string& option = "transport");
+
+/// φ∞ used when the EOS is a hard-particle one and phi is left at 0: the paper's MD value.
+constexpr double default_packing_fraction = 0.118;
 
 /// Physical model (units: m = 1, k_B = 1; a is the particle radius).
 struct NavierStokesPhysics {
@@ -20,6 +36,15 @@ struct NavierStokesPhysics {
   std::optional<double> kappa_prefactor;  ///< c_κ >= 0 in κ = c_κ n∞ λ √T; default chapman_enskog_kappa_prefactor(d)
   bool viscosity = false;                 ///< shear viscosity μ = c_μ n∞ λ √T (zero bulk viscosity)
   std::optional<double> viscosity_prefactor;  ///< c_μ >= 0; default chapman_enskog_viscosity_prefactor(d)
+  /// p = n T Z(φ), φ = φ∞ n/n∞; ideal (Z = 1), henderson (d = 2) or carnahan_starling (d = 3).
+  Eos eos = Eos::ideal;
+  /// Ambient packing fraction φ∞: 0 for the ideal gas; for a hard-particle EOS in
+  /// (0, max_ambient_packing_fraction(eos)), and 0 means default_packing_fraction (resolved_phi()).
+  /// An independent parameter: λ still follows from n∞ and a (Eq. (5)), as in `tvns --eos --phi`.
+  double phi = 0;
+  Transport transport = Transport::dilute;  ///< enskog needs a hard-particle EOS
+  /// φ∞ actually used: phi, or default_packing_fraction for a hard-particle EOS with phi = 0.
+  double resolved_phi() const;
 };
 
 /// Discretisation and integrator options; none of them changes the physics being solved.
@@ -61,7 +86,7 @@ struct NavierStokesSample {
   double R = 0;                   ///< shock radius: outermost r where n = (n∞ + n_max)/2
   double H = 0;                   ///< core radius: r where T falls to T0/2
   double H_density = 0;           ///< second core radius: r where n rises to 2 n0
-  double n0 = 0, T0 = 0, p0 = 0;  ///< centre-cell density, temperature, pressure
+  double n0 = 0, T0 = 0, p0 = 0;  ///< centre-cell density, temperature, pressure (n0 T0 Z(φ0))
   double energy = 0, mass = 0;    ///< totals over the grid, including the cold gas swept in
   double energy_error = 0;        ///< |energy - (E + energy that entered through the outer edge)|/E
   double mass_error = 0;          ///< |mass - n∞ V(grid)|/mass
@@ -113,7 +138,8 @@ struct NavierStokesResult {
   const NavierStokesSample& final_sample() const;
 };
 
-/// The final profile against the exact TvNS solution for γ = 1 + 2/d (hydro/tvns.hpp).
+/// The final profile against the exact TvNS solution for γ = 1 + 2/d, or for the run's hard-particle
+/// EOS at its φ∞ (hydro/tvns.hpp).
 struct TvnsComparison {
   double A_measured = 0, A_exact = 0, A_relative_error = 0;  ///< A_measured/A_exact - 1
   /// Σ|numerical - exact| Δx / Σ|exact| Δx over cells with x = r/R_exact in [x_min, 1), R_exact from
@@ -133,9 +159,14 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& config, const Nav
 
 /// Convenience for compare/: the conduction-only core run in scaled units (E = n∞ = λ = 1) up to
 /// R/λ = until (> 2, the start), default numerics; exponents_at(R/λ) then gives running exponents.
-NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells = 256);
+/// `physics`, if given, sets the model (eos, phi, transport, viscosity and the prefactors); its d is
+/// replaced by `d` and E, n∞, a by the scaled units.
+NavierStokesResult run_hydro_core(int d, double until_R_over_lambda, int cells = 256,
+                                  const std::optional<NavierStokesPhysics>& physics = std::nullopt);
 
-/// Euler mode (κ = μ = 0) with the same numerics, for comparison with the exact TvNS solution.
-NavierStokesResult run_hydro_euler(int d, double until_R_over_lambda, int cells = 512);
+/// Euler mode (κ = μ = 0) with the same numerics, for comparison with the exact TvNS solution;
+/// `physics`, if given, sets the EOS (eos, phi); conduction and viscosity are switched off.
+NavierStokesResult run_hydro_euler(int d, double until_R_over_lambda, int cells = 512,
+                                   const std::optional<NavierStokesPhysics>& physics = std::nullopt);
 
 }  // namespace coldblast::hydro

@@ -74,3 +74,22 @@ TEST_CASE("EOS names round-trip and unknown names are rejected", "[fast]") {
     CHECK(eos_from_string(to_string(eos)) == eos);
   CHECK_THROWS_WITH(eos_from_string("van-der-waals", "--eos"), Contains("--eos = van-der-waals"));
 }
+
+TEST_CASE("contact value chi is consistent with the EOS: Z = 1 + 2^(d-1) phi chi", "[fast]") {
+  for (const Eos eos : {Eos::henderson, Eos::carnahan_starling}) {
+    const int d = eos_dimension(eos);
+    CAPTURE(to_string(eos));
+    CHECK(contact_value(eos, 0.0) == 1.0);
+    for (double phi : {1e-8, 0.05, 0.118, 0.3, 0.5, 0.7}) {
+      CAPTURE(phi);
+      CHECK(compressibility(eos, phi) ==
+            Approx(1.0 + std::pow(2.0, d - 1) * phi * contact_value(eos, phi)).epsilon(1e-14));
+    }
+    CHECK_THROWS_WITH(contact_value(eos, close_packing_fraction(eos)), Contains("phi"));
+    CHECK_THROWS_AS(contact_value(eos, -0.1), std::invalid_argument);
+  }
+  // the textbook forms: Henderson chi = (1 - 7 phi/16)/(1 - phi)^2, Carnahan-Starling (1 - phi/2)/(1 - phi)^3
+  CHECK(contact_value(Eos::henderson, 0.118) == Approx((1 - 7 * 0.118 / 16) / std::pow(1 - 0.118, 2)).epsilon(1e-15));
+  CHECK(contact_value(Eos::carnahan_starling, 0.2) == Approx((1 - 0.1) / std::pow(0.8, 3)).epsilon(1e-15));
+  CHECK(contact_value(Eos::ideal, 0.0) == 1.0);
+}

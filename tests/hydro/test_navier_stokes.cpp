@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "hydro/navier_stokes.hpp"
+#include "hydro/tvns.hpp"
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
 
@@ -264,5 +265,81 @@ TEST_CASE("ideal gas with dilute transport stays bit-for-bit the solver of commi
     CHECK(s.H == Approx(pin.H).epsilon(1e-14));
     CHECK(s.n0 == Approx(pin.n0).epsilon(1e-14));
     CHECK(s.T0 == Approx(pin.T0).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("dense options: validation names the option and the allowed values", "[fast]") {
+  NavierStokesConfig config;
+  auto bad = config;
+  bad.physics.phi = 0.1;
+  check_throws_naming(bad, "phi = 0.1");
+  bad = config;
+  bad.physics.eos = hydro::Eos::carnahan_starling;  // d = 2
+  check_throws_naming(bad, "eos = carnahan-starling");
+  bad = config;
+  bad.physics.transport = hydro::Transport::enskog;  // ideal gas
+  check_throws_naming(bad, "transport = enskog");
+  bad = config;
+  bad.physics.eos = hydro::Eos::henderson;
+  bad.physics.phi = 0.9;
+  check_throws_naming(bad, "phi = 0.9");
+  bad.physics.phi = -0.1;
+  check_throws_naming(bad, "phi = -0.1");
+  bad.physics.phi = 0.0;  // the library's default
+  REQUIRE_NOTHROW(bad.validate());
+  CHECK(bad.physics.resolved_phi() == hydro::default_packing_fraction);
+  CHECK(config.physics.resolved_phi() == 0.0);
+  CHECK(hydro::transport_from_string("enskog") == hydro::Transport::enskog);
+  CHECK(hydro::transport_from_string(hydro::to_string(hydro::Transport::dilute)) == hydro::Transport::dilute);
+  CHECK_THROWS_WITH(hydro::transport_from_string("boltzmann", "--transport"),
+                    Catch::Contains("--transport = boltzmann") && Catch::Contains("dilute, enskog"));
+}
+
+TEST_CASE("dilute limit: the dense solver at phi = 1e-6 equals the ideal-gas solver", "[slow]") {
+  // Henderson/Carnahan–Starling and Enskog corrections are O(φ) = 1e-6; the two runs take different
+  // step sequences, so they agree to the global integration error (~1000 rtol, as for the scaling test).
+  for (int d : {2, 3}) {
+    CAPTURE(d);
+    NavierStokesConfig ideal = core_config(d, 30, 48);
+    ideal.physics.viscosity = true;
+    ideal.numerics.relative_tolerance = 1e-8;
+    NavierStokesConfig dense = ideal;
+    dense.physics.eos = d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    dense.physics.phi = 1e-6;
+    dense.physics.transport = hydro::Transport::enskog;
+    const auto a = run_navier_stokes(ideal);
+    const auto b = run_navier_stokes(dense);
+    REQUIRE(a.samples.size() == b.samples.size());
+    const double tolerance = 1000 * ideal.numerics.relative_tolerance;
+    for (std::size_t k = 0; k < a.samples.size(); ++k) {
+      CHECK(b.samples[k].R == Approx(a.samples[k].R).epsilon(tolerance));
+      CHECK(b.samples[k].H == Approx(a.samples[k].H).epsilon(tolerance));
+      CHECK(b.samples[k].n0 == Approx(a.samples[k].n0).epsilon(tolerance));
+      CHECK(b.samples[k].T0 == Approx(a.samples[k].T0).epsilon(tolerance));
+    }
+    CHECK(b.A_reference == Approx(a.A_reference).epsilon(1e-5));
+  }
+}
+
+TEST_CASE("Euler mode with a hard-particle EOS converges to the exact TvNS(phi) solution", "[slow]") {
+  // hydro euler --eos henderson --phi 0.1178 against tvns --eos henderson --phi 0.1178 (2D), and
+  // Carnahan–Starling in 3D; full-resolution numbers in docs/hydro.md.
+  hydro::NavierStokesPhysics physics;
+  physics.phi = 0.1178;
+  for (int d : {2, 3}) {
+    CAPTURE(d);
+    physics.eos = d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    const auto coarse = hydro::compare_to_tvns(hydro::run_hydro_euler(d, 100, 64, physics));
+    const auto fine = hydro::compare_to_tvns(hydro::run_hydro_euler(d, 100, 128, physics));
+    INFO("A errors " << coarse.A_relative_error << " -> " << fine.A_relative_error << "; L1 density "
+                     << coarse.L1_density << " -> " << fine.L1_density);
+    // the exact amplitude is the TvNS(φ) one, far from the ideal gas's (0.3519 in 2D)
+    CHECK(fine.A_exact == Approx(hydro::solve_tvns_for_md(d, 0.1178).A()).epsilon(1e-6));
+    CHECK(std::abs(fine.A_relative_error) < 5e-3);
+    CHECK(fine.L1_density < 0.01);
+    CHECK(fine.L1_velocity < 0.01);
+    CHECK(fine.L1_pressure < 0.01);
+    CHECK(std::log2(coarse.A_relative_error / fine.A_relative_error) > 0.5);
+    CHECK(std::log2(coarse.L1_density / fine.L1_density) > 0.5);
   }
 }
