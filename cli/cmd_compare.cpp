@@ -10,6 +10,7 @@
 #include "common/validate.hpp"
 #include "compare/report.hpp"
 #include "compare/verdict.hpp"
+#include "hydro/equation_of_state.hpp"
 
 namespace coldblast::cli {
 
@@ -23,6 +24,9 @@ struct CompareOptions {
   bool no_figures = false;
   Format format = Format::table;
   compare::CompareConfig config;
+  std::string hydro_eos, hydro_transport;
+  double hydro_phi = 0;
+  CLI::Option* hydro_phi_option = nullptr;
 };
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -63,6 +67,19 @@ void print_table(const compare::CompareResult& result) {
     std::printf("%-7s %-10s %-17s %-24s %-19s %s  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(), reference,
                 measured, window, deviation, v.pass ? "pass" : "FAIL");
   }
+  for (const auto& note : result.notes) std::printf("note: %s\n", note.c_str());
+  if (result.against == compare::Reference::hydro && result.continuum) {
+    std::printf("\namplitudes at t = %g (R/lambda = %.2f) against %s:\n",
+                result.amplitudes.empty() ? 0.0 : result.amplitudes[0].t, result.continuum->R_over_lambda_last,
+                result.continuum->model.describe().c_str());
+    std::printf("%-10s %-24s %-12s %9s %8s  %s\n", "quantity", "MD", "NS", "MD/NS-1", "dev/sig", "verdict");
+    for (const auto& a : result.amplitudes) {
+      char measured[64];
+      std::snprintf(measured, sizeof measured, "%.5g±%.2g", a.measured, a.error);
+      std::printf("%-10s %-24s %-12.5g %+8.1f%% %+8.2f  %s\n", a.name.c_str(), measured, a.reference,
+                  100 * a.relative_difference, a.deviation_sigma, a.pass ? "pass" : "FAIL");
+    }
+  }
   std::printf("\nverdict: %s\n", result.pass ? "PASS" : "FAIL");
 }
 
@@ -70,6 +87,11 @@ void run(CompareOptions& options) {
   options.config.run_dir = options.run_dir;
   options.config.against = compare::parse_reference(options.against);
   options.config.observables = split_list(options.observables);
+  if (!options.hydro_eos.empty())
+    options.config.hydro_model.eos = hydro::eos_from_string(options.hydro_eos, "--hydro-eos");
+  if (!options.hydro_transport.empty())
+    options.config.hydro_model.transport = compare::transport_from_string(options.hydro_transport, "--hydro-transport");
+  if (options.hydro_phi_option->count() > 0) options.config.hydro_model.phi = options.hydro_phi;
   const compare::CompareResult result = compare::run_compare(options.config);
   if (!options.out.empty()) {
     const auto files = compare::write_report(result, {options.out, !options.no_figures});
@@ -112,6 +134,14 @@ void add_compare_command(CLI::App& app) {
       ->add_option("--hydro-cells", options->config.hydro_cells,
                    "Navier–Stokes cells for --against hydro, [16, 100000]")
       ->capture_default_str();
+  command->add_option("--hydro-eos", options->hydro_eos,
+                      "NS equation of state for --against hydro: ideal, henderson (2D), carnahan-starling (3D); "
+                      "default: the run's hard-particle EOS");
+  options->hydro_phi_option =
+      command->add_option("--hydro-phi", options->hydro_phi,
+                          "NS ambient packing fraction (hard-particle EOS only); default: the run's phi");
+  command->add_option("--hydro-transport", options->hydro_transport,
+                      "NS transport: enskog (dense, needs a hard-particle EOS) or dilute; default enskog");
   command->add_option("--out", options->out, "Report directory (report.md, verdict.json, exponents.csv, figures/)");
   command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
   add_format_option(*command, options->format);

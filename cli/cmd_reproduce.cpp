@@ -24,6 +24,9 @@ void print_verdict(const char* name, const compare::CompareResult& result) {
     std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma)  %s\n", v.name.c_str(),
                 v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error, v.deviation_sigma,
                 v.pass ? "pass" : "FAIL");
+  for (const auto& a : result.amplitudes)
+    std::printf("  %-9s MD = %.4g ± %.2g  NS = %.4g  (%+.1f %%, %+.1f sigma)  %s\n", a.name.c_str(), a.measured,
+                a.error, a.reference, 100 * a.relative_difference, a.deviation_sigma, a.pass ? "pass" : "FAIL");
 }
 
 void run(ReproduceOptions& options) {
@@ -37,7 +40,8 @@ void run(ReproduceOptions& options) {
   }
   std::printf("A_2 = %.15g ± %.1e   A_3 = %.15g ± %.1e   A_2(phi = %.4f) = %.10g ± %.1e\n", r.A2, r.A2_error, r.A3,
               r.A3_error, r.phi_md, r.A2_md, r.A2_md_error);
-  std::printf("Navier–Stokes core at R/lambda = %.3g:", r.hydro["R_over_lambda"].get<double>());
+  std::printf("Navier–Stokes (%s) at R/lambda = %.3g:", r.hydro["model"].get<std::string>().c_str(),
+              r.hydro["R_over_lambda"].get<double>());
   for (const char* name : {"H", "n0", "T0"})
     std::printf("  %s %.4f (theory %s)", name, r.hydro["exponents"][name]["measured"].get<double>(),
                 r.hydro["exponents"][name]["theory_rational"].get<std::string>().c_str());

@@ -9,8 +9,6 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/report.hpp"
-#include "hydro/navier_stokes.hpp"
-#include "hydro/tvns.hpp"
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
 
@@ -169,93 +167,74 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
   return "p_imp.png";
 }
 
-std::string profile_figure(const RunData& run, const fs::path& folder) {
+// The MD's last profile (at the latest time <= t_profile): r/R, n/n∞ ± error, u/Ṙ, T/Ṙ², with
+// Ṙ = 2R/((d+2)t) from the MD's own R(t) (the Eq. (1) form). Bins reaching beyond the simulated
+// ball (region_radius, when the box margin is < 1.5 R) hold no particles by construction, not
+// vacuum: they are left out.
+std::pair<double, std::string> md_profile_data(const RunData& run, double t_profile) {
   const CsvTable table = read_numeric_csv(run.directory / "profiles.csv");
   const std::size_t ct = table.column("t"), lo = table.column("r_over_R_lo"), hi = table.column("r_over_R_hi"),
-                    cn = table.column("density_over_n"), cu = table.column("radial_velocity"),
-                    cT = table.column("temperature");
+                    cn = table.column("density_over_n"), ce = table.column("density_stderr"),
+                    cu = table.column("radial_velocity"), cT = table.column("temperature");
   double t_last = 0;
-  for (const auto& row : table.rows) t_last = std::max(t_last, row[ct]);
+  for (const auto& row : table.rows)
+    if (t_profile <= 0 || row[ct] <= t_profile * (1 + 1e-9)) t_last = std::max(t_last, row[ct]);
   // Ṙ from the MD's own R(t) and the power law of Eq. (1).
   const double R = md_R_over_lambda(run, t_last) * run.summary["lambda"].get<double>();
   const double Rdot = theory::shock_speed_at(run.d, R, t_last);
-  std::ostringstream md_data, exact_data;
-  md_data.precision(10);
-  exact_data.precision(10);
-  // Bins reaching beyond the simulated ball (region_radius, when the box margin is < 1.5 R) hold
-  // no particles by construction, not vacuum: they are left out of the figure.
   const double region = run.summary.contains("region_radius") && run.summary["region_radius"].is_number()
                             ? run.summary["region_radius"].get<double>() / R
                             : INFINITY;
+  std::ostringstream data;
+  data.precision(10);
   for (const auto& row : table.rows)
     if (row[ct] == t_last && row[hi] <= region)
-      md_data << 0.5 * (row[lo] + row[hi]) << ' ' << row[cn] << ' ' << row[cu] / Rdot << ' ' << row[cT] / (Rdot * Rdot)
-              << '\n';
-  const hydro::TvnsSolution exact = hydro::solve_tvns({run.d, 0.0, hydro::Eos::ideal, 0.0, 1e-10});
-  for (int i = 1; i <= 400; ++i) {
-    const hydro::TvnsPoint p = exact.at(i / 400.0);
-    exact_data << p.r_over_R << ' ' << p.density << ' ' << p.velocity << ' ' << std::min(p.temperature, 1e3) << '\n';
+      data << 0.5 * (row[lo] + row[hi]) << ' ' << row[cn] << ' ' << row[cu] / Rdot << ' ' << row[cT] / (Rdot * Rdot)
+           << ' ' << (std::isfinite(row[ce]) ? row[ce] : 0.0) << '\n';
+  return {t_last, data.str()};
+}
+
+std::string profile_figure(const RunData& run, const std::vector<ProfileCurve>& continuum, double t_profile,
+                           const fs::path& folder) {
+  const auto [t_last, md_data] = md_profile_data(run, t_profile);
+  common::write_file_atomic(folder / "profiles_md.dat", md_data);
+  // Continuum curves as given, one data block each; styles by kind: ideal TvNS grey dotted, TvNS(φ)
+  // blue dashed, dilute NS orange, the chosen (dense) NS model thick black.
+  static const char* styles[] = {"lw 2 dt 3 lc rgb '#7f7f7f'", "lw 3 dt 2 lc rgb '#1f77b4'",
+                                 "lw 3 dt 4 lc rgb '#ff7f0e'", "lw 4 lc rgb 'black'"};
+  std::ostringstream curves;
+  curves.precision(10);
+  for (const auto& c : continuum) {
+    for (std::size_t i = 0; i < c.r_over_R.size(); ++i)
+      curves << c.r_over_R[i] << ' ' << c.density[i] << ' ' << c.velocity[i] << ' ' << c.temperature[i] << '\n';
+    curves << "\n\n";
   }
-  exact_data << "1.0 1.0 0 0\n1.5 1.0 0 0\n";
-  // The same blast with the hard-particle equation of state at the run's packing fraction.
-  std::ostringstream dense_data;
-  dense_data.precision(10);
-  const double phi = run.summary.contains("phi") ? run.summary["phi"].get<double>() : 0.0;
-  const bool dense = phi > 0;
-  if (dense) {
-    const hydro::TvnsSolution solution =
-        hydro::solve_tvns({run.d, 0.0, run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling, phi, 1e-8});
-    std::vector<double> x;
-    for (int i = 1; i <= 400; ++i) x.push_back(i / 400.0);
-    for (const auto& p : solution.profile(x))
-      dense_data << p.r_over_R << ' ' << p.density << ' ' << p.velocity << ' ' << std::min(p.temperature, 1e3) << '\n';
-    dense_data << "1.0 1.0 0 0\n1.5 1.0 0 0\n";
-    common::write_file_atomic(folder / "profiles_tvns_phi.dat", dense_data.str());
-  }
-  // The Navier–Stokes blast (heat conduction, Chapman–Enskog κ, ideal gas) at the MD's own R/λ.
-  bool have_ns = false;
-  const double x_md = R / run.summary["lambda"].get<double>();
-  if (x_md > 4.0) {
-    const hydro::NavierStokesResult ns = hydro::run_hydro_core(run.d, x_md, 256);
-    const hydro::NavierStokesProfile& profile = ns.profiles.back();
-    const double ns_Rdot = 2.0 * profile.R / ((run.d + 2) * profile.t);
-    std::ostringstream ns_data;
-    ns_data.precision(10);
-    for (std::size_t i = 0; i < profile.r.size(); ++i)
-      ns_data << profile.r_over_R[i] << ' ' << profile.density[i] << ' ' << profile.velocity[i] / ns_Rdot << ' '
-              << profile.temperature[i] / (ns_Rdot * ns_Rdot) << '\n';
-    common::write_file_atomic(folder / "profiles_ns.dat", ns_data.str());
-    have_ns = true;
-  }
-  const std::string eos_name = run.d == 2 ? "Henderson" : "Carnahan-Starling";
-  const auto dense_curve = [&](int column) {
-    std::string curves;
-    if (dense)
-      curves += ", 'profiles_tvns_phi.dat' u 1:" + std::to_string(column) + " w l lw 2 dt 2 t 'TvNS, " + eos_name +
-                " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000) + "'";
-    if (have_ns)
-      curves += ", 'profiles_ns.dat' u 1:" + std::to_string(column) +
-                " w l lw 2 dt 4 lc rgb 'black' t 'Navier-Stokes, R/{/Symbol l} = " +
-                common::format_number(std::round(x_md * 10) / 10) + "'";
-    return curves;
+  common::write_file_atomic(folder / "profiles_continuum.dat", curves.str());
+  const auto plot = [&](int column, const std::string& md_using, bool key) {
+    std::string line =
+        "plot 'profiles_md.dat' u " + md_using + " pt 7 ps 1.3 lc rgb '#d62728' t " + (key ? "'MD'" : "''");
+    for (std::size_t i = 0; i < continuum.size(); ++i)
+      line += ", 'profiles_continuum.dat' index " + std::to_string(i) + " u 1:($" + std::to_string(column) +
+              (column == 4 ? ">0?$4:1/0)" : ")") + " w l " + styles[static_cast<int>(continuum[i].kind)] + " t " +
+              (key ? "'" + continuum[i].label + "'" : "''");
+    return line + "\n";
   };
-  common::write_file_atomic(folder / "profiles_md.dat", md_data.str());
-  common::write_file_atomic(folder / "profiles_tvns.dat", exact_data.str());
   std::ostringstream script;
-  script << "set terminal pngcairo size 1500,460 font 'Sans,11'\nset output 'profiles.png'\nset multiplot layout 1,3 "
-            "title "
-         << "'MD radial profiles at t = " << common::format_number(t_last)
-         << " against the exact TvNS solution and the Navier-Stokes blast'\n"
-         << "set xlabel 'r/R'\nset xrange [0:1.5]\nset key top left Left reverse font ',10'\n"
-         << "set ylabel 'n/n_{/Symbol \\245}'\nplot 'profiles_md.dat' u 1:2 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:2 "
-            "w l lw 2 t 'TvNS, ideal'"
-         << dense_curve(2) << "\n"
-         << "set ylabel 'u/(dR/dt)'\nplot 'profiles_md.dat' u 1:3 w p pt 7 t 'MD', 'profiles_tvns.dat' u 1:3 w l lw 2 "
-            "t 'TvNS, ideal'"
-         << dense_curve(3) << "\n"
-         << "set ylabel 'T/(dR/dt)^2'\nset logscale y\nset yrange [1e-3:*]\nplot 'profiles_md.dat' u 1:($4>0?$4:1/0) w "
-            "p pt 7 t 'MD', "
-         << "'profiles_tvns.dat' u 1:($4>0?$4:1/0) w l lw 2 t 'TvNS, ideal'" << dense_curve(4) << "\nunset multiplot\n";
+  script << "set terminal pngcairo size 1800,1000 font 'Sans,17'\nset output 'profiles.png'\n"
+         << "set multiplot title 'MD (d = " << run.d << ") at t = " << common::format_number(t_last)
+         << " against the continuum at the same R/{/Symbol l}'\n"
+         << "set xlabel 'r/R'\nset xrange [0:1.5]\nset grid\n"
+         << "set size 0.5,0.47\nset origin 0,0.47\nunset key\nset ylabel 'n/n_{/Symbol \\245}'\n"
+         << plot(2, "1:2:5 w yerrorbars", false) << "set origin 0.5,0.47\nset ylabel 'u/(dR/dt)'\n"
+         << plot(3, "1:3 w p", false)
+         << "set origin 0,0\nset ylabel 'T/(dR/dt)^2'\nset logscale y\nset yrange [1e-3:*]\n"
+         << plot(4, "1:($4>0?$4:1/0) w p", false) << "unset logscale y\nset yrange [*:*]\n"
+         << "set origin 0.5,0\nunset border\nunset tics\nunset xlabel\nunset ylabel\nunset grid\n"
+         << "set xrange [0:1]\nset yrange [0:1]\nset key at graph 0.05,0.95 left top Left reverse box spacing 1.3\n"
+         << "plot 2 w p pt 7 ps 1.3 lc rgb '#d62728' t 'MD (points; n with its standard error)'";
+  for (std::size_t i = 0; i < continuum.size(); ++i)
+    script << ", 2 w l " << styles[static_cast<int>(continuum[i].kind)] << " t '" << continuum[i].label << "'";
+  script << "\nunset multiplot\n";
   common::write_file_atomic(folder / "profiles.gp", script.str());
   run_gnuplot(folder, "profiles.gp");
   return "profiles.png";
@@ -331,11 +310,11 @@ std::string snapshot_figure(const RunData& run, const fs::path& folder) {
 }  // namespace
 
 ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
-                                 const fs::path& folder) {
+                                 const std::vector<ProfileCurve>& continuum, const fs::path& folder, double t_profile) {
   ExtraFigures figures;
   if (fit) figures.distribution = distribution_figure(run, *fit, folder);
   if (fs::exists(run.directory / "profiles.csv") && run.summary.contains("lambda"))
-    figures.profiles = profile_figure(run, folder);
+    figures.profiles = profile_figure(run, continuum, t_profile, folder);
   figures.snapshot = snapshot_figure(run, folder);
   return figures;
 }

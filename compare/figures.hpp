@@ -1,11 +1,13 @@
 #pragma once
 // Figures beyond the exponent panels, drawn from the optional files of an MD run: the Fig. 3-style
 // collapse of p_imp(r, t) with the fitted Gaussian of Eq. (39) [eq:pr], MD radial profiles against
-// the exact TvNS profile, and the Fig. 1-style snapshot of moving and resting particles.
+// continuum profiles computed beforehand (compare/continuum.hpp: no solver runs here), and the
+// Fig. 1-style snapshot of moving and resting particles.
 #include <filesystem>
 #include <optional>
 #include <string>
 
+#include "compare/continuum.hpp"
 #include "compare/run_data.hpp"
 
 namespace coldblast::compare {
@@ -37,8 +39,11 @@ struct ExtraFigures {
   std::string distribution, profiles, snapshot;
 };
 
-/// Draws every figure whose data the run holds; returns the file names written.
+/// Draws every figure whose data the run holds; returns the file names written. The profile figure
+/// shows the MD's profiles at its last profile time <= t_profile (0: the last one) beside the
+/// given continuum curves (n/n∞, u/Ṙ, T/Ṙ² against r/R), drawn as they are.
 ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
-                                 const std::filesystem::path& folder);
+                                 const std::vector<ProfileCurve>& continuum, const std::filesystem::path& folder,
+                                 double t_profile = 0.0);
 
 }  // namespace coldblast::compare

@@ -41,8 +41,33 @@ common::Json verdict_json(const CompareResult& result) {
                            {"pass", v.pass},
                            {"running", running}});
   }
+  common::Json amplitudes = common::Json::array();
+  for (const auto& a : result.amplitudes)
+    amplitudes.push_back({{"name", a.name},
+                          {"definition", a.definition},
+                          {"t", a.t},
+                          {"R_over_lambda", a.R_over_lambda},
+                          {"measured", a.measured},
+                          {"error", a.error},
+                          {"reference", a.reference},
+                          {"deviation_sigma", a.deviation_sigma},
+                          {"relative_difference", a.relative_difference},
+                          {"tolerance", a.tolerance},
+                          {"pass", a.pass}});
+  common::Json hydro_model = nullptr;
+  if (result.against == Reference::hydro && result.continuum) {
+    const HydroModel& m = result.continuum->model;
+    hydro_model = {{"description", m.describe()},
+                   {"eos", hydro::to_string(m.eos)},
+                   {"phi", m.phi},
+                   {"transport", to_string(m.transport)},
+                   {"cells", result.continuum->ns.config.numerics.cells}};
+  }
   return {{"d", result.d},
           {"against", to_string(result.against)},
+          {"hydro_model", hydro_model},
+          {"amplitudes", amplitudes},
+          {"notes", result.notes},
           {"sigma", result.sigma},
           {"allowance", result.allowance},
           {"until", result.until},
@@ -146,6 +171,40 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
   run_gnuplot(folder, "observables.gp");
 }
 
+// The amplitude verdicts with their residuals, and the core's Knudsen number as the first suspect
+// for what the continuum misses.
+std::string amplitude_markdown(const CompareResult& result) {
+  const ContinuumReference& c = *result.continuum;
+  std::ostringstream md;
+  md << "\n## Amplitudes against " << c.model.describe()
+     << " at the MD's R/λ = " << format_number(std::round(c.R_over_lambda_last * 100) / 100) << "\n\n"
+     << "Pass when |MD − NS| ≤ k δ_MD + " << format_number(amplitude_allowance)
+     << " |NS| (the NS grid error). Definitions (both sides alike): docs/compare.md, \"Amplitudes\".\n\n"
+     << "| quantity | MD ± error (t) | NS | MD/NS − 1 | (MD − NS)/δ_MD | verdict |\n|---|---|---|---|---|---|\n";
+  char row[400];
+  for (const auto& a : result.amplitudes) {
+    std::snprintf(row, sizeof row, "| %s | %.5g ± %.2g (t = %s) | %.5g | %+.1f %% | %+.1f | %s |\n", a.name.c_str(),
+                  a.measured, a.error, format_number(a.t).c_str(), a.reference, 100 * a.relative_difference,
+                  a.deviation_sigma, a.pass ? "pass" : "**fail**");
+    md << row;
+  }
+  // Kn = λ_core/H with the core's dilute mean free path λ n∞/n0: a continuum description of the
+  // core needs Kn ≪ 1 (docs/verification.md, "MD against the dense continuum").
+  double n0 = NAN, H = NAN;
+  for (const auto& a : result.amplitudes) {
+    if (a.name == "n0/n") n0 = a.measured;
+    if (a.name == "H/R") H = a.measured;
+  }
+  if (std::isfinite(n0) && std::isfinite(H))
+    md << "\nCore Knudsen number Kn = λ n∞/(n0 H) = "
+       << format_number(std::round(1000 / (n0 * H * c.R_over_lambda_last)) / 1000) << " (MD), "
+       << format_number(std::round(1000 / (c.amplitudes.n0_over_n * c.amplitudes.H_over_R * c.R_over_lambda_last)) /
+                        1000)
+       << " (NS); NS's temperature core radius (T = T0/2): H_T/R = "
+       << format_number(std::round(c.amplitudes.H_temperature_over_R * 1000) / 1000) << ".\n";
+  return md.str();
+}
+
 std::string markdown(const CompareResult& result, bool figures, const std::optional<DistributionFit>& fit,
                      const ExtraFigures& extra) {
   std::ostringstream md;
@@ -182,6 +241,8 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
                   v.pass ? "pass" : "**fail**");
     md << buffer;
   }
+  for (const auto& note : result.notes) md << "\n- " << note << "\n";
+  if (result.against == Reference::hydro && result.continuum) md << amplitude_markdown(result);
   if (figures) md << "\n![Observables with running exponents](figures/observables.png)\n";
   if (fit) {
     md << "\n## Impurity radial distribution (paper Fig. 3)\n\nAt t = " << format_number(fit->t)
@@ -204,10 +265,31 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
   }
   if (!extra.snapshot.empty()) md << "\n## Snapshots (paper Fig. 1)\n\n![snapshot](figures/" << extra.snapshot << ")\n";
   if (!extra.profiles.empty())
-    md << "\n## Radial profiles against TvNS\n\n![profiles](figures/" << extra.profiles << ")\n";
+    md << "\n## Radial profiles against the continuum\n\nMD at its last time against ideal-gas TvNS, TvNS with "
+          "the hard-particle EOS at the run's φ, and the Navier–Stokes blast(s) at the MD's own R/λ.\n\n"
+          "![profiles](figures/"
+       << extra.profiles << ")\n";
   md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
         "with errors at every recorded pair of times).\n";
   return md.str();
+}
+
+}  // namespace
+
+namespace {
+
+// The continuum curves of the profile figure: the comparison's own solve when it has one, else
+// (theory, paper) one solve of the default model for the figure; none if the run cannot have one.
+std::vector<ProfileCurve> profile_curves(const CompareResult& result) {
+  if (result.continuum) return result.continuum->profiles;
+  if (!fs::exists(result.run.directory / "profiles.csv") || !result.run.summary.contains("lambda")) return {};
+  try {
+    const HydroModel model = resolve_hydro_model({}, result.d, run_packing_fraction(result.run));
+    return solve_continuum(result.run, model, 256)->profiles;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "compare: no continuum curves in profiles.png: %s\n", e.what());
+    return {};
+  }
 }
 
 }  // namespace
@@ -224,7 +306,7 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
     ExtraFigures extra;
     if (config.figures) {
       write_observable_figure(result, staging / "figures");
-      extra = write_extra_figures(result.run, fit, staging / "figures");
+      extra = write_extra_figures(result.run, fit, profile_curves(result), staging / "figures", result.until);
     }
     if (fit)
       common::write_file_atomic(staging / "distribution_fit.json",

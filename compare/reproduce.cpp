@@ -85,9 +85,9 @@ std::string top_report(const ReproduceResult& r) {
                       r.A2_md, r.A2_md_error)
      << "\n"
      << "The paper prints A_3 = 0.072401066; see docs/verification.md.\n\n"
-     << "## Navier–Stokes core (d = 2, Chapman–Enskog κ)\n\nRunning time exponents at R/λ = "
-     << common::format_number(r.hydro["R_over_lambda"].get<double>()) << " (relative energy error "
-     << common::format_number(r.hydro["energy_error"].get<double>())
+     << "## Navier–Stokes blast: " << r.hydro["model"].get<std::string>()
+     << "\n\nRunning time exponents at R/λ = " << common::format_number(r.hydro["R_over_lambda"].get<double>())
+     << " (relative energy error " << common::format_number(r.hydro["energy_error"].get<double>())
      << "):\n\n| quantity | measured | theory |\n|---|---|---|\n";
   for (const char* name : {"H", "n0", "T0", "R"}) {
     const auto& e = r.hydro["exponents"][name];
@@ -107,8 +107,22 @@ std::string top_report(const ReproduceResult& r) {
     md << "## Against " << name << ": " << (result->pass ? "PASS" : "FAIL") << "\n\n"
        << "| observable | alpha_T | reference | alpha_S (last two times) | deviation / sigma | verdict |\n"
        << "|---|---|---|---|---|---|\n"
-       << verdict_rows(*result) << "\nFull report: [report-" << name << "/report.md](report-" << name
-       << "/report.md)\n\n";
+       << verdict_rows(*result);
+    for (const auto& note : result->notes) md << "\n- " << note << "\n";
+    if (!result->amplitudes.empty()) {
+      md << "\nAmplitudes at t = " << common::format_number(result->amplitudes[0].t) << " against "
+         << result->continuum->model.describe()
+         << " at the same R/λ:\n\n| quantity | MD ± error | NS | MD/NS − 1 | (MD − NS)/δ_MD | verdict |\n"
+            "|---|---|---|---|---|---|\n";
+      char row[300];
+      for (const auto& a : result->amplitudes) {
+        std::snprintf(row, sizeof row, "| %s | %.5g ± %.2g | %.5g | %+.1f %% | %+.1f | %s |\n", a.name.c_str(),
+                      a.measured, a.error, a.reference, 100 * a.relative_difference, a.deviation_sigma,
+                      a.pass ? "pass" : "**fail**");
+        md << row;
+      }
+    }
+    md << "\nFull report: [report-" << name << "/report.md](report-" << name << "/report.md)\n\n";
   }
   return md.str();
 }
@@ -127,7 +141,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   const hydro::TvnsSolution a3 = hydro::solve_tvns({3, 0.0, hydro::Eos::ideal, 0.0, 1e-13});
   md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
   r.phi_md = theory::packing_fraction(scene.d, scene.n, scene.a);
-  // the amplitude `md run` uses, so that step 3 equals `coldblast md run` of the scene bit for bit
+  // the amplitude `md run` uses, so that step 2 equals `coldblast md run` of the scene bit for bit
   const hydro::TvnsSolution a2_md = hydro::solve_tvns_for_md(2, r.phi_md);
   r.A2 = a2.A();
   r.A2_error = a2.A_error();
@@ -145,19 +159,13 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
                                                               .dump(2) +
                                                           "\n");
 
-  say(progress, "step 2/5: Navier–Stokes core run (d = 2, heat conduction, Chapman–Enskog kappa)");
-  const double until = config.hydro_until > 0 ? config.hydro_until : (quick ? 1e4 : 1e6);
-  const hydro::NavierStokesResult ns = hydro::run_hydro_core(2, until);
-  r.hydro = hydro_json(ns);
-  common::write_file_atomic(config.out / "hydro" / "core.json", r.hydro.dump(2) + "\n");
-
   fs::path md_dir = config.out / "md";
   if (!config.md_run.empty()) {
-    say(progress, "step 3/5: MD ensemble taken from " + config.md_run.string());
+    say(progress, "step 2/5: MD ensemble taken from " + config.md_run.string());
     md_dir = config.md_run;
     r.md = read_run(md_dir).summary;
   } else {
-    say(progress, "step 3/5: MD ensemble of the paper's 2D scene");
+    say(progress, "step 2/5: MD ensemble of the paper's 2D scene");
     scene.A_d = r.A2_md;
     scene.seed = config.seed;
     scene.realizations = config.realizations > 0 ? config.realizations : (quick ? 384 : 30000);
@@ -174,19 +182,28 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
     r.md = md::blast_summary(blast);
   }
 
+  // One continuum solve serves the NS exponent table, the hydro verdicts and all three reports' figures.
+  const RunData run = read_run(md_dir);
+  const HydroModel model = resolve_hydro_model({}, run.d, run_packing_fraction(run));
+  say(progress, "step 3/5: Navier–Stokes blast, " + model.describe() + ", at the MD's R/lambda and up to R/lambda = " +
+                    common::format_number(config.hydro_until > 0 ? config.hydro_until : (quick ? 1e4 : 1e6)));
+  const double until = config.hydro_until > 0 ? config.hydro_until : (quick ? 1e4 : 1e6);
+  const auto continuum = solve_continuum(run, model, 256, until);
+  r.hydro = hydro_json(continuum->ns);
+  r.hydro["model"] = model.describe();
+  common::write_file_atomic(config.out / "hydro" / "core.json", r.hydro.dump(2) + "\n");
+
   say(progress, "step 4/5: comparisons against theory, the paper's Table 1 and the Navier–Stokes prediction");
   CompareConfig compare_config;
   compare_config.run_dir = md_dir;
   compare_config.against = Reference::theory;
   r.against_theory = run_compare(compare_config);
+  r.against_theory.continuum = continuum;
   compare_config.against = Reference::paper;
   r.against_paper = run_compare(compare_config);
-  const HydroReference hydro_reference(ns);
+  r.against_paper.continuum = continuum;
   compare_config.against = Reference::hydro;
-  const RunData& run = r.against_theory.run;
-  r.against_hydro = run_compare(compare_config, [&](const std::string& observable, double t) {
-    return hydro_reference.exponent(observable, md_R_over_lambda(run, t));
-  });
+  r.against_hydro = run_compare(compare_config, continuum);
 
   say(progress, "step 5/5: reports");
   write_report(r.against_theory, {config.out / "report-theory", config.figures});
@@ -227,6 +244,7 @@ common::Json reproduce_summary(const ReproduceResult& r) {
           {"phi_md", r.phi_md},
           {"A_2_phi_md", r.A2_md},
           {"hydro", r.hydro},
+          {"hydro_model", r.hydro["model"]},
           {"md", r.md},
           {"against_theory", verdict_json(r.against_theory)},
           {"against_paper", verdict_json(r.against_paper)},

@@ -1,7 +1,8 @@
 #pragma once
 // `coldblast reproduce`: the paper end to end on one machine. A_2 and A_3 (exact TvNS), A_2 at the
-// MD's packing fraction, the Navier–Stokes core run, an MD ensemble of the paper's 2D scene, and
-// the comparison against theory, the paper's Table 1 and the hydro prediction, with reports.
+// MD's packing fraction, an MD ensemble of the paper's 2D scene, one Navier–Stokes solve (the dense
+// model at the MD's φ: exponents, amplitudes and profiles at the MD's R/λ), and the comparisons
+// against theory, the paper's Table 1 and the hydro prediction, with reports.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -32,7 +33,7 @@ struct ReproduceConfig {
 struct ReproduceResult {
   double A2 = 0, A2_error = 0, A3 = 0, A3_error = 0;  ///< ideal gas, γ = 1 + 2/d
   double A2_md = 0, A2_md_error = 0, phi_md = 0;      ///< A_2 at the MD's packing fraction (Henderson)
-  common::Json hydro;                                 ///< final NS exponents beside theory
+  common::Json hydro;                                 ///< final NS exponents beside theory, and "model"
   common::Json md;                                    ///< the MD summary.json
   CompareResult against_theory, against_paper, against_hydro;
   std::filesystem::path out;

@@ -4,9 +4,12 @@
 // exponent, the deviation in units of the error, and pass/fail.
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "compare/amplitudes.hpp"
+#include "compare/continuum.hpp"
 #include "compare/power_law.hpp"
 #include "compare/run_data.hpp"
 
@@ -46,6 +49,8 @@ struct CompareConfig {
   double until = 0.0;
   std::vector<std::string> observables;  ///< empty: every Table 1 observable present in the run
   int hydro_cells = 256;                 ///< Navier–Stokes cells for Reference::hydro, [16, 100000]
+  /// The NS model for Reference::hydro (unset: the dense model at the run's φ); only with hydro.
+  HydroModelOptions hydro_model;
   void validate() const;
   /// The allowance in force: `allowance` if >= 0, else the reference's default.
   double effective_allowance() const;
@@ -74,14 +79,31 @@ struct CompareResult {
   double sigma = 0, allowance = 0;
   double until = 0;  ///< the last recorded time used (the run's last one unless --until was given)
   std::vector<ObservableVerdict> observables;
-  bool pass = false;
+  /// Reference::hydro: the MD's core amplitudes against the NS model at the same R/λ.
+  std::vector<AmplitudeVerdict> amplitudes;
+  /// Observables recorded but deliberately not judged, with the reason (u_imp against theory/hydro).
+  std::vector<std::string> notes;
+  bool pass = false;  ///< every exponent and amplitude verdict passes
   RunData run;
+  /// The continuum solved for this run (hydro: always; else when a report drew the profiles);
+  /// shared so that the reports of one `reproduce` use one solve.
+  std::shared_ptr<const ContinuumReference> continuum;
 };
 
-/// Reads the run and compares every requested observable; for Reference::hydro it first runs the
-/// Navier–Stokes core solver up to 1.5 times the run's largest R/λ. Throws std::invalid_argument
-/// for a bad config or run directory (including --against paper for d != 2).
+/// Reads the run and compares every requested observable; for Reference::hydro it first solves the
+/// continuum once (solve_continuum, the model of config.hydro_model) and adds the amplitude
+/// verdicts. Throws std::invalid_argument for a bad config or run directory (including --against
+/// paper for d != 2, and an inconsistent NS model naming its option).
 CompareResult run_compare(const CompareConfig& config);
+
+/// Reference::hydro against an already solved continuum (e.g. `reproduce`'s one solve): exponent
+/// verdicts from its NS running exponents at the MD's R/λ, amplitude verdicts from its amplitudes.
+CompareResult run_compare(const CompareConfig& config, std::shared_ptr<const ContinuumReference> continuum);
+
+/// The observables judged by default: every Table 1 observable the run records, except that for
+/// theory and hydro the flow speed is judged by u_flow (unbiased) and u_imp is left out with a
+/// note (its thermal-noise bias, docs/verification.md); `paper` keeps u_imp and has no u_flow.
+std::vector<std::string> default_observables(const RunData& run, Reference against, std::vector<std::string>& notes);
 
 /// The MD's R/λ at time t: its recorded shock radius R (log-interpolated) over summary.json's
 /// lambda, or Eq. (1) with the run's E, n, a, A_d when R was not recorded.

@@ -22,7 +22,7 @@ TEST_CASE("MD profile figure data stop at the simulated region's edge", "[fast]"
   const fs::path folder = fs::temp_directory_path() / "coldblast_test_figures";
   fs::remove_all(folder);
   fs::create_directories(folder);
-  const ExtraFigures figures = write_extra_figures(run, std::nullopt, folder);
+  const ExtraFigures figures = write_extra_figures(run, std::nullopt, {}, folder);
   CHECK(figures.profiles == "profiles.png");
 
   // R at t_max from the run's own shock radius series.

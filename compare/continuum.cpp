@@ -1,0 +1,342 @@
+#include "compare/continuum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/output.hpp"
+#include "common/validate.hpp"
+#include "compare/verdict.hpp"
+#include "hydro/tvns.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::compare {
+
+HydroTransport transport_from_string(const std::string& text, const std::string& option) {
+  if (text == "dilute") return HydroTransport::dilute;
+  if (text == "enskog") return HydroTransport::enskog;
+  throw std::invalid_argument(option + " = " + text + " is not one of dilute, enskog");
+}
+
+std::string to_string(HydroTransport transport) {
+  return transport == HydroTransport::enskog ? "enskog" : "dilute";
+}
+
+std::string HydroModel::describe() const {
+  if (eos == hydro::Eos::ideal)
+    return std::string("dilute NS (ideal gas, ") +
+           (transport == HydroTransport::dilute ? "Chapman-Enskog transport)" : "enskog transport)");
+  return std::string(transport == HydroTransport::enskog ? "dense NS (" : "NS (") + hydro::to_string(eos) +
+         " EOS at phi = " + common::format_number(std::round(phi * 1e4) / 1e4) + ", " +
+         (transport == HydroTransport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport)";
+}
+
+HydroModel default_hydro_model(int d, double phi) {
+  HydroModel model;
+  if ((d == 2 || d == 3) && phi > 0) {
+    model.eos = d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    model.phi = phi;
+    model.transport = HydroTransport::enskog;
+  }
+  return model;
+}
+
+bool dense_navier_stokes_available() {
+  return false;
+}
+
+HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double run_phi) {
+  HydroModel model = dense_navier_stokes_available() ? default_hydro_model(d, run_phi) : HydroModel{};
+  if (options.eos) {
+    model.eos = *options.eos;
+    const int dimension = hydro::eos_dimension(model.eos);
+    if (dimension != 0 && dimension != d)
+      throw std::invalid_argument("--hydro-eos = " + hydro::to_string(model.eos) + " is for d = " +
+                                  std::to_string(dimension) + ", the run has d = " + std::to_string(d) +
+                                  "; allowed: ideal, " + (d == 2 ? "henderson" : "carnahan-starling"));
+    if (model.eos == hydro::Eos::ideal) {
+      model.phi = 0.0;
+      if (!options.transport) model.transport = HydroTransport::dilute;
+    } else if (model.phi <= 0) {
+      model.phi = run_phi;
+    }
+  }
+  if (options.phi) {
+    if (model.eos == hydro::Eos::ideal)
+      throw std::invalid_argument("--hydro-phi = " + common::format_number(*options.phi) +
+                                  " needs a hard-particle --hydro-eos (henderson in 2D, carnahan-starling in 3D); "
+                                  "the ideal gas has no packing fraction");
+    model.phi = *options.phi;
+  }
+  if (options.transport) model.transport = *options.transport;
+  if (model.eos == hydro::Eos::ideal && model.transport == HydroTransport::enskog)
+    throw std::invalid_argument(
+        "--hydro-transport = enskog needs a hard-particle --hydro-eos (its contact value chi comes from the EOS); "
+        "allowed with --hydro-eos ideal: dilute");
+  if (model.eos != hydro::Eos::ideal) {
+    const double top = hydro::max_ambient_packing_fraction(model.eos);
+    if (!(model.phi > 0 && model.phi < top))
+      throw std::invalid_argument("--hydro-phi = " + common::format_number(model.phi) + " is outside (0, " +
+                                  common::format_number(top) + ") for the " + hydro::to_string(model.eos) + " EOS");
+  }
+  return model;
+}
+
+double run_packing_fraction(const RunData& run) {
+  const auto& s = run.summary;
+  if (s.contains("phi") && s["phi"].is_number()) return s["phi"].get<double>();
+  if (s.contains("n") && s["n"].is_number() && s.contains("a") && s["a"].is_number())
+    return theory::packing_fraction(run.d, s["n"].get<double>(), s["a"].get<double>());
+  return 0.0;
+}
+
+hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
+                                            std::vector<double> profile_R_over_lambda) {
+  hydro::NavierStokesConfig config;
+  config.physics.d = d;
+  config.physics.E = 1.0;
+  config.physics.n_inf = 1.0;
+  config.physics.a = d == 1 ? 0.5 : std::pow(1.0 / theory::unit_ball_volume(d - 1), 1.0 / (d - 1));  // λ = 1
+  if (!model.dilute())
+    throw std::invalid_argument(
+        "--hydro-eos/--hydro-transport: the dense Navier-Stokes solver is not available in "
+        "this build; allowed: --hydro-eos ideal --hydro-transport dilute");
+  config.numerics.cells = cells;
+  config.numerics.profile_R_over_lambda = std::move(profile_R_over_lambda);
+  config.until_R_over_lambda = until;
+  return hydro::run_navier_stokes(config);
+}
+
+namespace {
+
+// Linear interpolation of a profile field at r (clamped at the ends).
+double interpolate(const std::vector<double>& r, const std::vector<double>& f, double x) {
+  if (x <= r.front()) return f.front();
+  if (x >= r.back()) return f.back();
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(r.begin(), r.end(), x) - r.begin());
+  const double w = (x - r[i - 1]) / (r[i] - r[i - 1]);
+  return (1 - w) * f[i - 1] + w * f[i];
+}
+
+// ∫_{lo}^{hi} f r^{d-1} dr by the midpoint rule on 64 sub-intervals of the interpolated profile.
+template <class F>
+double shell_integral(double lo, double hi, int d, F f) {
+  const int steps = 64;
+  double sum = 0;
+  for (int i = 0; i < steps; ++i) {
+    const double r = lo + (hi - lo) * (i + 0.5) / steps;
+    sum += f(r) * std::pow(r, d - 1);
+  }
+  return sum * (hi - lo) / steps;
+}
+
+// The MD's definitions (docs/compare.md, "Amplitudes") applied to one NS profile (E = n∞ = λ = 1).
+ContinuumAmplitudes profile_amplitudes(const hydro::NavierStokesProfile& p, int d, double ball_over_lambda,
+                                       const std::vector<double>& bin_edges) {
+  ContinuumAmplitudes a;
+  a.R_over_lambda = p.R;
+  const double Rdot = theory::shock_speed_at(d, p.R, p.t);  // Eq. (1) form, as for the MD
+  const auto n = [&](double r) { return interpolate(p.r, p.density, r); };
+  const auto u = [&](double r) { return interpolate(p.r, p.velocity, r); };
+  const auto T = [&](double r) { return interpolate(p.r, p.temperature, r); };
+  // n0: particles per volume in the ball; T0: (2/d) kinetic energy per particle there, i.e. the
+  // thermal T plus the flow's u²/d (the MD's T0 counts the flow's kinetic energy too).
+  const double particles = shell_integral(0, ball_over_lambda, d, n);
+  const double energy =
+      shell_integral(0, ball_over_lambda, d, [&](double r) { return n(r) * (T(r) + u(r) * u(r) / d); });
+  a.n0_over_n = particles * d / std::pow(ball_over_lambda, d);
+  a.T0_over_Rdot2 = energy / particles / (Rdot * Rdot);
+  a.A = theory::shock_amplitude(d, 1.0, 1.0, p.t, p.R);  // Eq. (1) with E = n∞ = 1
+  // Core size: the MD's bins (shell averages of n over r/R bins), then the shared crossing rule.
+  std::vector<double> centre, density, zero;
+  for (std::size_t b = 0; b + 1 < bin_edges.size(); ++b) {
+    const double lo = bin_edges[b] * p.R, hi = bin_edges[b + 1] * p.R;
+    centre.push_back(0.5 * (bin_edges[b] + bin_edges[b + 1]));
+    density.push_back(shell_integral(lo, hi, d, n) * d / (std::pow(hi, d) - std::pow(lo, d)));
+    zero.push_back(0.0);
+  }
+  a.H_over_R = binned_core_size(centre, density, zero).H_over_R;
+  const double T_centre = p.temperature.front();
+  a.H_temperature_over_R = NAN;
+  for (std::size_t i = 1; i < p.r.size(); ++i)
+    if (p.temperature[i] <= 0.5 * T_centre) {
+      const double w = (0.5 * T_centre - p.temperature[i - 1]) / (p.temperature[i] - p.temperature[i - 1]);
+      a.H_temperature_over_R = ((1 - w) * p.r[i - 1] + w * p.r[i]) / p.R;
+      break;
+    }
+  return a;
+}
+
+std::vector<double> md_bin_edges(const RunData& run) {
+  std::vector<double> edges;
+  const auto path = run.directory / "profiles.csv";
+  if (std::filesystem::exists(path)) {
+    const CsvTable table = read_numeric_csv(path);
+    const std::size_t ct = table.column("t"), lo = table.column("r_over_R_lo"), hi = table.column("r_over_R_hi");
+    const double t0 = table.rows.empty() ? 0 : table.rows.front()[ct];
+    for (const auto& row : table.rows)
+      if (row[ct] == t0) {
+        if (edges.empty()) edges.push_back(row[lo]);
+        edges.push_back(row[hi]);
+      }
+  }
+  if (edges.size() < 3)  // the default of md run: 30 bins over [0, 1.5)
+    for (int b = 0; b <= 30; ++b) edges.push_back(0.05 * b);
+  return edges;
+}
+
+ProfileCurve tvns_curve(const hydro::TvnsSolution& solution, ProfileCurve::Kind kind, const std::string& label) {
+  ProfileCurve c;
+  c.kind = kind;
+  c.label = label;
+  std::vector<double> x;
+  for (int i = 1; i <= 400; ++i) x.push_back(i / 400.0);
+  for (const auto& p : solution.profile(x)) {
+    c.r_over_R.push_back(p.r_over_R);
+    c.density.push_back(p.density);
+    c.velocity.push_back(p.velocity);
+    c.temperature.push_back(std::min(p.temperature, 1e3));
+  }
+  for (double r : {1.0, 1.5}) {  // the gas at rest ahead of the shock
+    c.r_over_R.push_back(r);
+    c.density.push_back(1.0);
+    c.velocity.push_back(0.0);
+    c.temperature.push_back(0.0);
+  }
+  return c;
+}
+
+ProfileCurve ns_curve(const hydro::NavierStokesProfile& p, int d, ProfileCurve::Kind kind, const std::string& label) {
+  ProfileCurve c;
+  c.kind = kind;
+  c.label = label;
+  const double Rdot = theory::shock_speed_at(d, p.R, p.t);
+  for (std::size_t i = 0; i < p.r.size(); ++i) {
+    c.r_over_R.push_back(p.r_over_R[i]);
+    c.density.push_back(p.density[i]);
+    c.velocity.push_back(p.velocity[i] / Rdot);
+    c.temperature.push_back(p.temperature[i] / (Rdot * Rdot));
+  }
+  return c;
+}
+
+// Profiles are requested at R_ref/λ = x e^{±0.03 k}; the measured R/λ of each differs slightly
+// from R_ref/λ, so amplitudes are interpolated linearly in ln(R/λ) at the MD's own x.
+const int profile_offsets = 3;
+const double profile_step = 0.03;
+
+std::vector<double> profile_targets(double x) {
+  std::vector<double> targets;
+  for (int k = -profile_offsets; k <= profile_offsets; ++k) targets.push_back(x * std::exp(profile_step * k));
+  return targets;
+}
+
+// The requested profiles (not the final one), in increasing R.
+std::vector<const hydro::NavierStokesProfile*> requested_profiles(const hydro::NavierStokesResult& ns) {
+  std::vector<const hydro::NavierStokesProfile*> profiles;
+  for (std::size_t i = 0; i + 1 < ns.profiles.size(); ++i) profiles.push_back(&ns.profiles[i]);
+  return profiles;
+}
+
+const hydro::NavierStokesProfile& nearest_profile(const hydro::NavierStokesResult& ns, double x) {
+  const hydro::NavierStokesProfile* best = &ns.profiles.back();
+  for (const auto* p : requested_profiles(ns))
+    if (std::abs(std::log(p->R / x)) < std::abs(std::log(best->R / x))) best = p;
+  return *best;
+}
+
+ContinuumAmplitudes interpolated_amplitudes(const hydro::NavierStokesResult& ns, int d, double x, double ball,
+                                            const std::vector<double>& edges) {
+  std::vector<ContinuumAmplitudes> list;
+  for (const auto* p : requested_profiles(ns)) list.push_back(profile_amplitudes(*p, d, ball, edges));
+  std::size_t i = 1;
+  while (i + 1 < list.size() && list[i].R_over_lambda < x) ++i;
+  const ContinuumAmplitudes &lo = list[i - 1], &hi = list[i];
+  const double w = std::log(x / lo.R_over_lambda) / std::log(hi.R_over_lambda / lo.R_over_lambda);
+  const auto mix = [w](double a, double b) { return (1 - w) * a + w * b; };
+  ContinuumAmplitudes a;
+  a.R_over_lambda = x;
+  a.n0_over_n = mix(lo.n0_over_n, hi.n0_over_n);
+  a.T0_over_Rdot2 = mix(lo.T0_over_Rdot2, hi.T0_over_Rdot2);
+  a.A = mix(lo.A, hi.A);
+  a.H_over_R = mix(lo.H_over_R, hi.H_over_R);
+  a.H_temperature_over_R = mix(lo.H_temperature_over_R, hi.H_temperature_over_R);
+  return a;
+}
+
+double ball_radius_over_lambda(const RunData& run) {
+  const auto number = [&](const char* key) {
+    if (!run.summary.contains(key) || !run.summary[key].is_number())
+      throw std::invalid_argument((run.directory / "summary.json").string() + ": no number '" + key + "'");
+    return run.summary[key].get<double>();
+  };
+  // The MD's n0/T0 ball held 100 particles at t = 0: radius (100/(n V_d))^{1/d} (md/observers.cpp).
+  return std::pow(100.0 / (number("n") * theory::unit_ball_volume(run.d)), 1.0 / run.d) / number("lambda");
+}
+
+}  // namespace
+
+CoreSize binned_core_size(const std::vector<double>& r_centre, const std::vector<double>& density,
+                          const std::vector<double>& density_error) {
+  CoreSize core{NAN, NAN};
+  if (density.size() < 2 || !(density[0] > 0)) return core;
+  std::size_t i = 1;
+  while (i < density.size() && density[i] < 2.0 * density[0]) ++i;
+  if (i == density.size()) return core;
+  // Linear between the centres of bins i-1 and i; its derivatives in the three bins it depends on
+  // (0, i-1, i) by central differences, so that the error holds when i - 1 = 0 as well.
+  const auto crossing = [&](double n_c, double n_a, double n_b) {
+    if (i == 1) n_a = n_c;
+    return r_centre[i - 1] + (2.0 * n_c - n_a) / (n_b - n_a) * (r_centre[i] - r_centre[i - 1]);
+  };
+  const double n_c = density[0], n_a = density[i - 1], n_b = density[i];
+  core.H_over_R = crossing(n_c, n_a, n_b);
+  const double h = 1e-6 * n_c;
+  const double d_c = (crossing(n_c + h, n_a, n_b) - crossing(n_c - h, n_a, n_b)) / (2 * h);
+  const double d_a = i == 1 ? 0.0 : (crossing(n_c, n_a + h, n_b) - crossing(n_c, n_a - h, n_b)) / (2 * h);
+  const double d_b = (crossing(n_c, n_a, n_b + h) - crossing(n_c, n_a, n_b - h)) / (2 * h);
+  core.error = std::sqrt(std::pow(d_c * density_error[0], 2) + std::pow(d_a * density_error[i - 1], 2) +
+                         std::pow(d_b * density_error[i], 2));
+  return core;
+}
+
+std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
+                                                          double until) {
+  auto reference = std::make_shared<ContinuumReference>();
+  reference->model = model;
+  const double t_last = run.series.begin()->second.t.back();
+  const double x = md_R_over_lambda(run, t_last);
+  if (!(x > 2.0 * std::exp(profile_step * profile_offsets)))
+    throw std::invalid_argument("RUN_DIR = " + run.directory.string() + ": R/lambda = " + common::format_number(x) +
+                                " at the last time; the Navier-Stokes blast starts at R/lambda = 2");
+  reference->R_over_lambda_last = x;
+  const double end = std::max({20.0, 1.5 * x, until});
+  const std::vector<double> targets = profile_targets(x);
+  reference->ns = solve_hydro_model(run.d, model, end, cells, targets);
+  const double ball = ball_radius_over_lambda(run);
+  const std::vector<double> edges = md_bin_edges(run);
+  reference->amplitudes = interpolated_amplitudes(reference->ns, run.d, x, ball, edges);
+
+  auto& curves = reference->profiles;
+  const std::string at = ", R/{/Symbol l} = " + common::format_number(std::round(x * 10) / 10);
+  curves.push_back(tvns_curve(hydro::solve_tvns({run.d, 0.0, hydro::Eos::ideal, 0.0, 1e-10}),
+                              ProfileCurve::Kind::tvns_ideal, "TvNS, ideal gas"));
+  const double phi = run_packing_fraction(run);
+  if ((run.d == 2 || run.d == 3) && phi > 0) {
+    const hydro::Eos eos = run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    curves.push_back(tvns_curve(
+        hydro::solve_tvns({run.d, 0.0, eos, phi, 1e-8}), ProfileCurve::Kind::tvns_phi,
+        "TvNS, " + hydro::to_string(eos) + " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000)));
+  }
+  if (!model.dilute()) {
+    reference->ns_dilute = solve_hydro_model(run.d, HydroModel{}, end, cells, targets);
+    curves.push_back(ns_curve(nearest_profile(*reference->ns_dilute, x), run.d, ProfileCurve::Kind::ns_dilute,
+                              "NS, dilute ideal gas" + at));
+  }
+  curves.push_back(ns_curve(nearest_profile(reference->ns, x), run.d,
+                            model.dilute() ? ProfileCurve::Kind::ns_dilute : ProfileCurve::Kind::ns_model,
+                            (model.dilute() ? "NS, dilute ideal gas" : "NS, " + model.describe()) + at));
+  return reference;
+}
+
+}  // namespace coldblast::compare

@@ -1,0 +1,108 @@
+#pragma once
+// The continuum predictions an MD run is compared with, computed once per comparison (or once per
+// `reproduce` for its three reports) and handed to the verdicts and the figures, which never run a
+// solver themselves: the Navier–Stokes blast of the chosen model at the MD's own R/λ (exponents,
+// core amplitudes, profile at the MD's last time), the dilute NS profile, and the exact TvNS
+// profiles for the ideal gas and for the hard-particle EOS at the run's packing fraction.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare/run_data.hpp"
+#include "hydro/equation_of_state.hpp"
+#include "hydro/navier_stokes.hpp"
+
+namespace coldblast::compare {
+
+/// Transport coefficients of the NS model: dilute Chapman–Enskog, or Enskog's dense-gas ones.
+enum class HydroTransport { dilute, enskog };
+/// "dilute" or "enskog"; throws std::invalid_argument naming `option` otherwise.
+HydroTransport transport_from_string(const std::string& text, const std::string& option);
+std::string to_string(HydroTransport transport);
+
+/// The Navier–Stokes model `--against hydro` solves.
+struct HydroModel {
+  hydro::Eos eos = hydro::Eos::ideal;
+  double phi = 0.0;  ///< ambient packing fraction (0 for the ideal gas)
+  HydroTransport transport = HydroTransport::dilute;
+  /// "dense NS (henderson EOS at phi = 0.1178, enskog transport)" or "dilute NS (ideal gas, ...)".
+  std::string describe() const;
+  bool dilute() const { return eos == hydro::Eos::ideal && transport == HydroTransport::dilute; }
+};
+
+/// What the user asked for (CLI --hydro-eos, --hydro-phi, --hydro-transport); unset fields take
+/// the run's defaults: the hard-particle EOS of the run's d at the run's φ with Enskog transport.
+struct HydroModelOptions {
+  std::optional<hydro::Eos> eos;
+  std::optional<double> phi;
+  std::optional<HydroTransport> transport;
+  bool any() const { return eos || phi || transport; }
+};
+
+/// The dense default for a run of dimension d at packing fraction phi: Henderson (d = 2) or
+/// Carnahan–Starling (d = 3) at phi, Enskog transport; the dilute ideal-gas model when d = 1 or
+/// phi = 0 (no hard-particle EOS applies).
+HydroModel default_hydro_model(int d, double phi);
+
+/// Whether hydro/ solves the dense model (EOS at φ, Enskog transport); while it does not, the
+/// default resolves to the dilute model and a dense choice is rejected naming its option.
+bool dense_navier_stokes_available();
+
+/// Resolves the options against a run of dimension d and packing fraction run_phi. Throws
+/// std::invalid_argument naming the option for an inconsistent combination: --hydro-phi with the
+/// ideal EOS, an EOS of another dimension, enskog transport with the ideal EOS, φ outside (0, φ_max).
+HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double run_phi);
+
+/// The run's packing fraction from summary.json ("phi", else n and a), 0 when absent.
+double run_packing_fraction(const RunData& run);
+
+/// One curve of the profile figure: n/n∞, u/Ṙ, T/Ṙ² against r/R.
+struct ProfileCurve {
+  enum class Kind { tvns_ideal, tvns_phi, ns_dilute, ns_model } kind = Kind::ns_model;
+  std::string label;
+  std::vector<double> r_over_R, density, velocity, temperature;
+};
+
+/// The MD run's core amplitudes as the continuum predicts them at the MD's R/λ, with the
+/// definitions of docs/compare.md ("Amplitudes") applied to the NS profile exactly as to the MD.
+struct ContinuumAmplitudes {
+  double R_over_lambda = 0;
+  double n0_over_n = 0;             ///< particles per volume in the MD's n0 ball, / n∞
+  double T0_over_Rdot2 = 0;         ///< (2/d) kinetic energy per particle in that ball / Ṙ²
+  double A = 0;                     ///< E t²/(n∞ R^{d+2}) of the NS blast at that R/λ
+  double H_over_R = 0;              ///< core size: binned density reaches twice its innermost bin
+  double H_temperature_over_R = 0;  ///< NS's own core radius (T falls to T0/2), for information
+};
+
+/// Everything continuum the comparison of one MD run needs.
+struct ContinuumReference {
+  HydroModel model;
+  double R_over_lambda_last = 0;                       ///< the MD's R/λ at its last recorded time
+  hydro::NavierStokesResult ns;                        ///< the model's blast, with a profile at R_over_lambda_last
+  std::optional<hydro::NavierStokesResult> ns_dilute;  ///< the dilute blast when `model` is not dilute
+  ContinuumAmplitudes amplitudes;                      ///< of `ns` at R_over_lambda_last
+  std::vector<ProfileCurve> profiles;  ///< TvNS ideal, TvNS(φ), NS dilute, NS model (absent ones left out)
+};
+
+/// Solves the continuum for `run`: the model's NS from R/λ = 2 to max(20, 1.5 R/λ_last, until),
+/// the dilute NS to the same end when the model is not dilute, and the TvNS profiles. `cells` as
+/// CompareConfig::hydro_cells. Throws std::invalid_argument if the run has no λ or R/λ ≤ 2.
+std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
+                                                          double until = 0.0);
+
+/// The NS blast of `model` in scaled units (E = n∞ = λ = 1) from R/λ = 2 to `until`, with extra
+/// profiles at `profile_R_over_lambda`.
+hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
+                                            std::vector<double> profile_R_over_lambda = {});
+
+/// Core size from a binned density profile (the MD's profiles.csv bins): the r/R at which the
+/// density first reaches twice its value in the innermost bin, linear between bin centres, with
+/// the error propagated from per-bin errors (bins taken as independent). NaN if never reached.
+struct CoreSize {
+  double H_over_R = 0, error = 0;
+};
+CoreSize binned_core_size(const std::vector<double>& r_centre, const std::vector<double>& density,
+                          const std::vector<double>& density_error);
+
+}  // namespace coldblast::compare

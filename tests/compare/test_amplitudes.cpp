@@ -1,0 +1,220 @@
+// Amplitude verdicts of `compare --against hydro` on synthetic runs with known amplitudes, the
+// shared core-size rule, the NS model chosen from the run's φ (and inconsistent choices rejected
+// naming the option), the flow speed judged by u_flow, and a figure API that draws given curves.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "compare/amplitudes.hpp"
+#include "compare/continuum.hpp"
+#include "compare/figures.hpp"
+#include "compare/verdict.hpp"
+#include "synthetic.hpp"
+
+using namespace coldblast::compare;
+using coldblast::compare::testing::synthetic_series;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A 2D run whose n0, T0 and R have the given constant ensemble means at every time (AR(1) noise
+// of relative size sigma per realization), n = 0.15, E = 5.7, λ = 6.67 in summary.json.
+fs::path amplitude_run(double n0, double T0, double R, double sigma) {
+  std::map<std::string, BlockSeries> series;
+  unsigned seed = 5;
+  for (const auto& [name, value] : std::map<std::string, double>{{"n0", n0}, {"T0", T0}, {"R", R}}) {
+    BlockSeries s = synthetic_series(seed++, 40, 4, 12, 0.0, sigma, 0.7);  // mean 3 t^0 = 3
+    s.observable = name;
+    for (auto& row : s.sums)
+      for (double& x : row) x *= value / 3.0;
+    series[name] = s;
+  }
+  const fs::path dir = fs::temp_directory_path() / ("coldblast_amplitudes_" + std::to_string(::getpid()));
+  coldblast::compare::testing::write_synthetic_run(dir, 2, series);
+  coldblast::common::write_file_atomic(
+      dir / "summary.json",
+      R"({"d": 2, "n": 0.15, "a": 0.5, "E": 5.7, "lambda": 6.666666666666667, "phi": 0.11780972450961724})");
+  return dir;
+}
+
+}  // namespace
+
+TEST_CASE("amplitude verdicts: known n0, T0/Rdot^2 and R pass against the same NS values, fail when NS differs",
+          "[fast]") {
+  const double n0 = 0.19, T0 = 0.011, R = 230.0, t_last = 10.0 * std::pow(2.0, 0.25 * 11);
+  const fs::path dir = amplitude_run(n0, T0, R, 1e-3);
+  const RunData run = read_run(dir);
+  const double Rdot = 2.0 * R / (4.0 * t_last);
+  ContinuumReference continuum;
+  continuum.R_over_lambda_last = R / 6.666666666666667;
+  continuum.amplitudes.n0_over_n = n0 / 0.15;
+  continuum.amplitudes.T0_over_Rdot2 = T0 / (Rdot * Rdot);
+  continuum.amplitudes.A = 5.7 * t_last * t_last / (0.15 * std::pow(R, 4));  // Eq. (1) solved for A at R
+  std::vector<AmplitudeVerdict> verdicts = amplitude_verdicts(run, continuum, 3.0);
+  REQUIRE(verdicts.size() == 3);  // no profiles.csv: no H
+  for (const auto& v : verdicts) {
+    INFO(v.name);
+    CHECK(v.t == Approx(t_last));
+    CHECK(v.error > 0.0);
+    CHECK(std::abs(v.measured - v.reference) < 4 * v.error);  // the noise is the only difference
+    CHECK(v.pass);
+  }
+  CHECK(verdicts[0].name == "n0/n");
+  CHECK(verdicts[0].measured == Approx(n0 / 0.15).epsilon(1e-3));
+  CHECK(verdicts[1].measured == Approx(T0 / (Rdot * Rdot)).epsilon(3e-3));
+  CHECK(verdicts[2].reference == Approx(R).epsilon(1e-12));
+  // An NS core 1.6 times hotter is many sigma off and fails; so does a 5 % larger n0.
+  continuum.amplitudes.T0_over_Rdot2 *= 1.6;
+  continuum.amplitudes.n0_over_n *= 1.05;
+  verdicts = amplitude_verdicts(run, continuum, 3.0);
+  CHECK_FALSE(verdicts[0].pass);
+  CHECK(verdicts[0].relative_difference == Approx(1 / 1.05 - 1).margin(2e-3));
+  CHECK_FALSE(verdicts[1].pass);
+  CHECK(verdicts[1].deviation_sigma < -100);
+  CHECK(verdicts[2].pass);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("jackknife of a ratio of two observables: exact for noise-free blocks, the delta method for noisy ones",
+          "[fast]") {
+  BlockSeries a = synthetic_series(1, 30, 5, 6, 0.0, 0.0, 0.5), b = synthetic_series(2, 30, 5, 6, 0.0, 0.0, 0.5);
+  const auto ratio = [](const std::vector<double>& x) { return x[0] / (x[1] * x[1]); };
+  JackknifedValue j = jackknife_last({&a, &b}, ratio);
+  CHECK(j.value == Approx(3.0 / 9.0).epsilon(1e-12));
+  CHECK(j.error == Approx(0.0).margin(1e-12));
+  // Independent noise of relative size s per realization: δ(a/b²)/(a/b²) = s √5 / √150 (150 realizations).
+  a = synthetic_series(3, 30, 5, 6, 0.0, 0.05, 0.5);
+  b = synthetic_series(4, 30, 5, 6, 0.0, 0.05, 0.5);
+  j = jackknife_last({&a, &b}, ratio);
+  CHECK(j.error / j.value == Approx(0.05 * std::sqrt(5.0 / 150.0)).epsilon(0.35));
+}
+
+TEST_CASE("core size: the density reaches twice its innermost bin, linear between bin centres, propagated errors",
+          "[fast]") {
+  // n = 0.2 + r on centres 0.025, 0.075, ...: 2 × 0.225 = 0.45 is reached at r = 0.25 exactly.
+  std::vector<double> r, n, e;
+  for (int b = 0; b < 30; ++b) {
+    r.push_back(0.05 * b + 0.025);
+    n.push_back(0.2 + r.back());
+    e.push_back(0.01);
+  }
+  const CoreSize core = binned_core_size(r, n, e);
+  CHECK(core.H_over_R == Approx(0.25).epsilon(1e-12));
+  // H = r_a + (2 n_c - n_a)/(n_b - n_a) Δr with Δr = n_b - n_a = 0.05, w = 0.5:
+  // ∂H/∂n_c = 2, ∂H/∂n_a = -(1 - w) = -0.5, ∂H/∂n_b = -w = -0.5, so δH = 0.01 √(4 + 0.25 + 0.25).
+  CHECK(core.error == Approx(0.01 * std::sqrt(4.5)).epsilon(1e-6));
+  n.assign(30, 1.0);  // flat: no core edge
+  CHECK(std::isnan(binned_core_size(r, n, e).H_over_R));
+}
+
+TEST_CASE("the NS model defaults to the dense one at the run's phi; inconsistent choices name the option", "[fast]") {
+  const HydroModel two = default_hydro_model(2, 0.1178), three = default_hydro_model(3, 0.2);
+  CHECK(two.eos == coldblast::hydro::Eos::henderson);
+  CHECK(two.phi == 0.1178);
+  CHECK(two.transport == HydroTransport::enskog);
+  CHECK(three.eos == coldblast::hydro::Eos::carnahan_starling);
+  CHECK(three.phi == 0.2);
+  CHECK(default_hydro_model(2, 0.0).dilute());  // no packing fraction recorded: the ideal gas
+  CHECK(default_hydro_model(1, 0.3).dilute());  // no hard-rod EOS
+  if (dense_navier_stokes_available()) {
+    CHECK(resolve_hydro_model({}, 2, 0.1178).eos == coldblast::hydro::Eos::henderson);
+  } else {
+    CHECK(resolve_hydro_model({}, 2, 0.1178).dilute());
+  }
+  HydroModelOptions options;
+  options.eos = coldblast::hydro::Eos::ideal;
+  CHECK(resolve_hydro_model(options, 2, 0.1178).dilute());
+  options.phi = 0.2;
+  CHECK_THROWS_WITH(resolve_hydro_model(options, 2, 0.1178), Catch::Contains("--hydro-phi"));
+  options = {};
+  options.eos = coldblast::hydro::Eos::carnahan_starling;
+  CHECK_THROWS_WITH(resolve_hydro_model(options, 2, 0.1178),
+                    Catch::Contains("--hydro-eos") && Catch::Contains("henderson"));
+  options = {};
+  options.eos = coldblast::hydro::Eos::ideal;
+  options.transport = HydroTransport::enskog;
+  CHECK_THROWS_WITH(resolve_hydro_model(options, 2, 0.1178), Catch::Contains("--hydro-transport"));
+  options = {};
+  options.eos = coldblast::hydro::Eos::henderson;
+  options.phi = 0.95;
+  CHECK_THROWS_WITH(resolve_hydro_model(options, 2, 0.1178), Catch::Contains("--hydro-phi = 0.95 is outside"));
+  CHECK_THROWS_WITH(transport_from_string("knudsen", "--hydro-transport"),
+                    Catch::Contains("--hydro-transport = knudsen"));
+  // A model option without --against hydro is a contradiction, not silently ignored.
+  CompareConfig config;
+  config.against = Reference::theory;
+  config.hydro_model.transport = HydroTransport::dilute;
+  CHECK_THROWS_WITH(config.validate(), Catch::Contains("--hydro-transport"));
+}
+
+TEST_CASE("the flow speed is judged by u_flow against theory and hydro, u_imp only against the paper", "[fast]") {
+  RunData run;
+  run.d = 2;
+  for (const char* name : {"R_imp", "u_imp", "u_flow", "T0"}) run.series[name] = BlockSeries{};
+  std::vector<std::string> notes;
+  const auto hydro = default_observables(run, Reference::hydro, notes);
+  CHECK(hydro == std::vector<std::string>{"R_imp", "T0", "u_flow"});
+  REQUIRE(notes.size() == 1);
+  CHECK_THAT(notes[0], Catch::Contains("u_imp is not judged against hydro"));
+  notes.clear();
+  CHECK(default_observables(run, Reference::theory, notes) == std::vector<std::string>{"R_imp", "T0", "u_flow"});
+  notes.clear();
+  CHECK(default_observables(run, Reference::paper, notes) == std::vector<std::string>{"R_imp", "u_imp", "T0"});
+  CHECK(notes.empty());
+  run.series.erase("u_flow");  // a run without u_flow: no flow-speed verdict at all, and the note says why
+  notes.clear();
+  CHECK(default_observables(run, Reference::hydro, notes) == std::vector<std::string>{"R_imp", "T0"});
+  CHECK_THAT(notes.at(0), Catch::Contains("did not record"));
+}
+
+TEST_CASE("the profile figure draws the continuum curves it is given and solves nothing", "[fast]") {
+  const RunData run = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "campaign3-3d");
+  const fs::path folder = fs::temp_directory_path() / ("coldblast_test_curves_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  // Curves no solver would produce: they must appear in the figure data exactly as given.
+  ProfileCurve fake;
+  fake.kind = ProfileCurve::Kind::ns_model;
+  fake.label = "made-up curve";
+  fake.r_over_R = {0.25, 0.5, 0.75};
+  fake.density = {0.125, 0.375, 1.625};
+  fake.velocity = {0.0625, 0.25, 0.5};
+  fake.temperature = {3.5, 2.5, 1.5};
+  const ExtraFigures figures = write_extra_figures(run, std::nullopt, {fake}, folder);
+  CHECK(figures.profiles == "profiles.png");
+  std::ifstream in(folder / "profiles_continuum.dat");
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(data == "0.25 0.125 0.0625 3.5\n0.5 0.375 0.25 2.5\n0.75 1.625 0.5 1.5\n\n\n");
+  std::ifstream script_in(folder / "profiles.gp");
+  const std::string script((std::istreambuf_iterator<char>(script_in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(script, Catch::Contains("made-up curve"));
+  fs::remove_all(folder);
+}
+
+TEST_CASE("continuum amplitudes at the MD's own R/lambda: the MD's definitions applied to the NS profile", "[fast]") {
+  // Campaign 1 (2D, R/λ = 34.8 at t = 4000) against the dilute NS: its n0 ball (radius 2.19 λ)
+  // average equals the centre value within the core's flatness, the R/λ is the MD's, and the
+  // dilute ideal gas blast has the ideal A_2 up to its finite-R/λ offset (-5.5 % at R/λ = 35).
+  const RunData run = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "campaign1-paper-2d");
+  const auto continuum = solve_continuum(run, HydroModel{}, 256);
+  const ContinuumAmplitudes& a = continuum->amplitudes;
+  CHECK(a.R_over_lambda == Approx(md_R_over_lambda(run, 4000)).epsilon(1e-12));
+  const auto sample_n0 = [&] {
+    const auto& s = continuum->ns.samples;
+    for (std::size_t i = 1; i < s.size(); ++i)
+      if (s[i].R_over_lambda >= a.R_over_lambda) return s[i - 1].n0;
+    return 0.0;
+  }();
+  CHECK(a.n0_over_n == Approx(sample_n0).epsilon(0.05));
+  CHECK(a.A == Approx(0.351935906848599).epsilon(0.08));
+  CHECK(a.H_over_R > 0.3);
+  CHECK(a.H_over_R < 0.7);
+  // The profile figure's curves: ideal TvNS, TvNS(φ), and the NS model (dilute: no second NS curve).
+  REQUIRE(continuum->profiles.size() == 3);
+  CHECK(continuum->profiles[2].kind == ProfileCurve::Kind::ns_dilute);
+  CHECK_FALSE(continuum->ns_dilute);
+}
