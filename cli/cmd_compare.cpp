@@ -90,7 +90,7 @@ void run(CompareOptions& options) {
   if (!options.hydro_eos.empty())
     options.config.hydro_model.eos = hydro::eos_from_string(options.hydro_eos, "--hydro-eos");
   if (!options.hydro_transport.empty())
-    options.config.hydro_model.transport = compare::transport_from_string(options.hydro_transport, "--hydro-transport");
+    options.config.hydro_model.transport = hydro::transport_from_string(options.hydro_transport, "--hydro-transport");
   if (options.hydro_phi_option->count() > 0) options.config.hydro_model.phi = options.hydro_phi;
   const compare::CompareResult result = compare::run_compare(options.config);
   if (!options.out.empty()) {

@@ -12,23 +12,13 @@
 
 namespace coldblast::compare {
 
-HydroTransport transport_from_string(const std::string& text, const std::string& option) {
-  if (text == "dilute") return HydroTransport::dilute;
-  if (text == "enskog") return HydroTransport::enskog;
-  throw std::invalid_argument(option + " = " + text + " is not one of dilute, enskog");
-}
-
-std::string to_string(HydroTransport transport) {
-  return transport == HydroTransport::enskog ? "enskog" : "dilute";
-}
-
 std::string HydroModel::describe() const {
   if (eos == hydro::Eos::ideal)
     return std::string("dilute NS (ideal gas, ") +
-           (transport == HydroTransport::dilute ? "Chapman-Enskog transport)" : "enskog transport)");
-  return std::string(transport == HydroTransport::enskog ? "dense NS (" : "NS (") + hydro::to_string(eos) +
+           (transport == hydro::Transport::dilute ? "Chapman-Enskog transport)" : "enskog transport)");
+  return std::string(transport == hydro::Transport::enskog ? "dense NS (" : "NS (") + hydro::to_string(eos) +
          " EOS at phi = " + common::format_number(std::round(phi * 1e4) / 1e4) + ", " +
-         (transport == HydroTransport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport)";
+         (transport == hydro::Transport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport)";
 }
 
 HydroModel default_hydro_model(int d, double phi) {
@@ -36,17 +26,13 @@ HydroModel default_hydro_model(int d, double phi) {
   if ((d == 2 || d == 3) && phi > 0) {
     model.eos = d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
     model.phi = phi;
-    model.transport = HydroTransport::enskog;
+    model.transport = hydro::Transport::enskog;
   }
   return model;
 }
 
-bool dense_navier_stokes_available() {
-  return false;
-}
-
 HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double run_phi) {
-  HydroModel model = dense_navier_stokes_available() ? default_hydro_model(d, run_phi) : HydroModel{};
+  HydroModel model = default_hydro_model(d, run_phi);
   if (options.eos) {
     model.eos = *options.eos;
     const int dimension = hydro::eos_dimension(model.eos);
@@ -56,7 +42,7 @@ HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double r
                                   "; allowed: ideal, " + (d == 2 ? "henderson" : "carnahan-starling"));
     if (model.eos == hydro::Eos::ideal) {
       model.phi = 0.0;
-      if (!options.transport) model.transport = HydroTransport::dilute;
+      if (!options.transport) model.transport = hydro::Transport::dilute;
     } else if (model.phi <= 0) {
       model.phi = run_phi;
     }
@@ -69,7 +55,7 @@ HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double r
     model.phi = *options.phi;
   }
   if (options.transport) model.transport = *options.transport;
-  if (model.eos == hydro::Eos::ideal && model.transport == HydroTransport::enskog)
+  if (model.eos == hydro::Eos::ideal && model.transport == hydro::Transport::enskog)
     throw std::invalid_argument(
         "--hydro-transport = enskog needs a hard-particle --hydro-eos (its contact value chi comes from the EOS); "
         "allowed with --hydro-eos ideal: dilute");
@@ -97,10 +83,9 @@ hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, doub
   config.physics.E = 1.0;
   config.physics.n_inf = 1.0;
   config.physics.a = d == 1 ? 0.5 : std::pow(1.0 / theory::unit_ball_volume(d - 1), 1.0 / (d - 1));  // λ = 1
-  if (!model.dilute())
-    throw std::invalid_argument(
-        "--hydro-eos/--hydro-transport: the dense Navier-Stokes solver is not available in "
-        "this build; allowed: --hydro-eos ideal --hydro-transport dilute");
+  config.physics.eos = model.eos;
+  config.physics.phi = model.phi;
+  config.physics.transport = model.transport;
   config.numerics.cells = cells;
   config.numerics.profile_R_over_lambda = std::move(profile_R_over_lambda);
   config.until_R_over_lambda = until;
@@ -333,9 +318,13 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
     curves.push_back(ns_curve(nearest_profile(*reference->ns_dilute, x), run.d, ProfileCurve::Kind::ns_dilute,
                               "NS, dilute ideal gas" + at));
   }
+  const std::string model_label =
+      model.dilute() ? "NS, dilute ideal gas"
+                     : "NS, " + hydro::to_string(model.eos) + " + " +
+                           (model.transport == hydro::Transport::enskog ? "Enskog" : "dilute transport");
   curves.push_back(ns_curve(nearest_profile(reference->ns, x), run.d,
                             model.dilute() ? ProfileCurve::Kind::ns_dilute : ProfileCurve::Kind::ns_model,
-                            (model.dilute() ? "NS, dilute ideal gas" : "NS, " + model.describe()) + at));
+                            model_label + at));
   return reference;
 }
 

@@ -15,20 +15,14 @@
 
 namespace coldblast::compare {
 
-/// Transport coefficients of the NS model: dilute Chapman–Enskog, or Enskog's dense-gas ones.
-enum class HydroTransport { dilute, enskog };
-/// "dilute" or "enskog"; throws std::invalid_argument naming `option` otherwise.
-HydroTransport transport_from_string(const std::string& text, const std::string& option);
-std::string to_string(HydroTransport transport);
-
 /// The Navier–Stokes model `--against hydro` solves.
 struct HydroModel {
   hydro::Eos eos = hydro::Eos::ideal;
   double phi = 0.0;  ///< ambient packing fraction (0 for the ideal gas)
-  HydroTransport transport = HydroTransport::dilute;
+  hydro::Transport transport = hydro::Transport::dilute;
   /// "dense NS (henderson EOS at phi = 0.1178, enskog transport)" or "dilute NS (ideal gas, ...)".
   std::string describe() const;
-  bool dilute() const { return eos == hydro::Eos::ideal && transport == HydroTransport::dilute; }
+  bool dilute() const { return eos == hydro::Eos::ideal && transport == hydro::Transport::dilute; }
 };
 
 /// What the user asked for (CLI --hydro-eos, --hydro-phi, --hydro-transport); unset fields take
@@ -36,7 +30,7 @@ struct HydroModel {
 struct HydroModelOptions {
   std::optional<hydro::Eos> eos;
   std::optional<double> phi;
-  std::optional<HydroTransport> transport;
+  std::optional<hydro::Transport> transport;
   bool any() const { return eos || phi || transport; }
 };
 
@@ -44,10 +38,6 @@ struct HydroModelOptions {
 /// Carnahan–Starling (d = 3) at phi, Enskog transport; the dilute ideal-gas model when d = 1 or
 /// phi = 0 (no hard-particle EOS applies).
 HydroModel default_hydro_model(int d, double phi);
-
-/// Whether hydro/ solves the dense model (EOS at φ, Enskog transport); while it does not, the
-/// default resolves to the dilute model and a dense choice is rejected naming its option.
-bool dense_navier_stokes_available();
 
 /// Resolves the options against a run of dimension d and packing fraction run_phi. Throws
 /// std::invalid_argument naming the option for an inconsistent combination: --hydro-phi with the

@@ -60,7 +60,7 @@ common::Json verdict_json(const CompareResult& result) {
     hydro_model = {{"description", m.describe()},
                    {"eos", hydro::to_string(m.eos)},
                    {"phi", m.phi},
-                   {"transport", to_string(m.transport)},
+                   {"transport", hydro::to_string(m.transport)},
                    {"cells", result.continuum->ns.config.numerics.cells}};
   }
   return {{"d", result.d},

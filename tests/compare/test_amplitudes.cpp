@@ -115,16 +115,14 @@ TEST_CASE("the NS model defaults to the dense one at the run's phi; inconsistent
   const HydroModel two = default_hydro_model(2, 0.1178), three = default_hydro_model(3, 0.2);
   CHECK(two.eos == coldblast::hydro::Eos::henderson);
   CHECK(two.phi == 0.1178);
-  CHECK(two.transport == HydroTransport::enskog);
+  CHECK(two.transport == coldblast::hydro::Transport::enskog);
   CHECK(three.eos == coldblast::hydro::Eos::carnahan_starling);
   CHECK(three.phi == 0.2);
-  CHECK(default_hydro_model(2, 0.0).dilute());  // no packing fraction recorded: the ideal gas
-  CHECK(default_hydro_model(1, 0.3).dilute());  // no hard-rod EOS
-  if (dense_navier_stokes_available()) {
-    CHECK(resolve_hydro_model({}, 2, 0.1178).eos == coldblast::hydro::Eos::henderson);
-  } else {
-    CHECK(resolve_hydro_model({}, 2, 0.1178).dilute());
-  }
+  CHECK(default_hydro_model(2, 0.0).dilute());                     // no packing fraction recorded: the ideal gas
+  CHECK(default_hydro_model(1, 0.3).dilute());                     // no hard-rod EOS
+  const HydroModel resolved = resolve_hydro_model({}, 2, 0.1178);  // no option: the dense default
+  CHECK(resolved.eos == coldblast::hydro::Eos::henderson);
+  CHECK(resolved.transport == coldblast::hydro::Transport::enskog);
   HydroModelOptions options;
   options.eos = coldblast::hydro::Eos::ideal;
   CHECK(resolve_hydro_model(options, 2, 0.1178).dilute());
@@ -136,18 +134,18 @@ TEST_CASE("the NS model defaults to the dense one at the run's phi; inconsistent
                     Catch::Contains("--hydro-eos") && Catch::Contains("henderson"));
   options = {};
   options.eos = coldblast::hydro::Eos::ideal;
-  options.transport = HydroTransport::enskog;
+  options.transport = coldblast::hydro::Transport::enskog;
   CHECK_THROWS_WITH(resolve_hydro_model(options, 2, 0.1178), Catch::Contains("--hydro-transport"));
   options = {};
   options.eos = coldblast::hydro::Eos::henderson;
   options.phi = 0.95;
   CHECK_THROWS_WITH(resolve_hydro_model(options, 2, 0.1178), Catch::Contains("--hydro-phi = 0.95 is outside"));
-  CHECK_THROWS_WITH(transport_from_string("knudsen", "--hydro-transport"),
+  CHECK_THROWS_WITH(coldblast::hydro::transport_from_string("knudsen", "--hydro-transport"),
                     Catch::Contains("--hydro-transport = knudsen"));
   // A model option without --against hydro is a contradiction, not silently ignored.
   CompareConfig config;
   config.against = Reference::theory;
-  config.hydro_model.transport = HydroTransport::dilute;
+  config.hydro_model.transport = coldblast::hydro::Transport::dilute;
   CHECK_THROWS_WITH(config.validate(), Catch::Contains("--hydro-transport"));
 }
 
