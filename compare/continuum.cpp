@@ -314,7 +314,8 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
         "TvNS, " + hydro::to_string(eos) + " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000)));
   }
   if (!model.dilute()) {
-    reference->ns_dilute = solve_hydro_model(run.d, HydroModel{}, end, cells, targets);
+    // only for the figure: no further than the MD's R/λ needs
+    reference->ns_dilute = solve_hydro_model(run.d, HydroModel{}, std::max(20.0, 1.5 * x), cells, targets);
     curves.push_back(ns_curve(nearest_profile(*reference->ns_dilute, x), run.d, ProfileCurve::Kind::ns_dilute,
                               "NS, dilute ideal gas" + at));
   }

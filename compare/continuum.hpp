@@ -76,7 +76,7 @@ struct ContinuumReference {
 };
 
 /// Solves the continuum for `run`: the model's NS from R/λ = 2 to max(20, 1.5 R/λ_last, until),
-/// the dilute NS to the same end when the model is not dilute, and the TvNS profiles. `cells` as
+/// the dilute NS to max(20, 1.5 R/λ_last) when the model is not dilute, and the TvNS profiles. `cells` as
 /// CompareConfig::hydro_cells. Throws std::invalid_argument if the run has no λ or R/λ ≤ 2.
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
                                                           double until = 0.0);

@@ -27,6 +27,16 @@ TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   CHECK(r.against_theory.observables.size() == 6);
   CHECK(r.against_paper.observables.size() == 6);
   CHECK(r.against_hydro.observables.size() == 6);
+  // The flow speed is judged by u_flow except against the paper; hydro is the dense NS at the
+  // scene's phi, solved once and shared by the three comparisons, with its amplitude verdicts.
+  CHECK(r.against_hydro.observables.back().name == "u_flow");
+  CHECK(r.against_paper.observables[3].name == "u_imp");
+  CHECK(r.hydro["model"].get<std::string>().find("dense NS (henderson EOS at phi = 0.1178") == 0);
+  REQUIRE(r.against_hydro.continuum);
+  CHECK(r.against_theory.continuum == r.against_hydro.continuum);
+  CHECK(r.against_hydro.continuum->ns_dilute.has_value());
+  CHECK(r.against_hydro.continuum->profiles.size() == 4);
+  CHECK(r.against_hydro.amplitudes.size() >= 3);  // H/R too unless 4 realizations leave no core edge
   for (const char* file : {"REPORT.md", "summary.json", "tvns.json", "hydro/core.json", "md/blocks.csv",
                            "report-theory/verdict.json", "report-paper/report.md", "report-hydro/exponents.csv"})
     CHECK(fs::exists(config.out / file));
