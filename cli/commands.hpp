@@ -14,6 +14,7 @@ void add_compare_command(CLI::App& app);
 void add_reproduce_command(CLI::App& app);
 void add_tvns_command(CLI::App& app);
 void add_hydro_command(CLI::App& app);
+void add_tracer_command(CLI::App& app);
 
 /// Output format shared by every subcommand (--format table|json).
 enum class Format { table, json };

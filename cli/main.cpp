@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   cli::add_reproduce_command(app);
   cli::add_tvns_command(app);
   cli::add_hydro_command(app);
+  cli::add_tracer_command(app);
 
   try {
     app.parse(argc, argv);

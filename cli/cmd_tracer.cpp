@@ -1,0 +1,108 @@
+// coldblast tracer: Monte Carlo of the impurity's Lorentz–Boltzmann equation (paper Eq. (36)
+// [LB-full]) in a Navier–Stokes, TvNS or equilibrium background. Maps flags onto a
+// kinetic::TracerConfig, calls kinetic::run_tracer and writes the `md run` run directory
+// (docs/kinetic.md). Shards are combined with `coldblast md merge`.
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "common/validate.hpp"
+#include "kinetic/tracer.hpp"
+#include "md/scenes.hpp"
+
+namespace coldblast::cli {
+
+namespace {
+
+struct TracerOptions {
+  std::string scene_file;
+  std::vector<std::string> set;
+  kinetic::TracerConfig config;
+  long long seed = -1;
+  std::optional<double> phi;
+  std::string shard = "0/1";
+  std::string out = "tracer-output";
+  Format format = Format::table;
+};
+
+std::string read_scene_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("SCENE = " + path + " cannot be read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void run(TracerOptions& o) {
+  std::vector<std::string> overrides = o.set;
+  if (o.seed != -1) {
+    common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
+    overrides.push_back("seed=" + std::to_string(o.seed));
+  }
+  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : read_scene_file(o.scene_file);
+  kinetic::TracerConfig config = o.config;
+  config.scene = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
+  config.phi = o.phi;
+  std::tie(config.shard_index, config.shard_count) = md::parse_shard(o.shard);
+  const auto progress = [](long long done, long long total) {
+    if (done == total || done % 16 == 0) std::fprintf(stderr, "\rtracer: %lld/%lld blocks   ", done, total);
+    if (done == total) std::fprintf(stderr, "\n");
+  };
+  const kinetic::TracerResult result = kinetic::run_tracer(config, progress);
+  kinetic::write_tracer_outputs(result, o.out);
+  common::Json summary = kinetic::tracer_summary(result);
+  summary.erase("scene_toml");
+  summary["out"] = o.out;
+  if (o.format == Format::json) {
+    print_json(summary);
+    return;
+  }
+  std::printf("tracer (%s background), scene %s (d = %d): %lld trajectories, %llu collisions in %.2f s\n",
+              config.background.c_str(), result.ensemble.scene.config.name.c_str(), result.ensemble.scene.config.d,
+              result.trajectories(), static_cast<unsigned long long>(result.collisions()), result.wall_seconds);
+  std::printf("  collision rate %.6g ± %.2g per impurity per time (chi = %.6g), null-collision rejection %.3f\n",
+              result.collision_rate(), result.collision_rate_error(), result.chi, result.rejection_rate());
+  std::printf("  impurity temperature at t_max %.6g ± %.2g; output in %s\n", result.temperature_final(),
+              result.temperature_final_error(), o.out.c_str());
+  const auto rows = md::estimate_observables(result.ensemble);
+  for (const auto& row : rows)
+    if (row.t == rows.back().t)
+      std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
+}
+
+}  // namespace
+
+void add_tracer_command(CLI::App& app) {
+  auto o = std::make_shared<TracerOptions>();
+  CLI::App* c = app.add_subcommand(
+      "tracer", "Monte Carlo of the impurity's Lorentz-Boltzmann equation (paper Eq. 36) in a hydrodynamic background");
+  c->add_option("SCENE", o->scene_file, "Scene file (TOML, the keys of md run); default: the embedded scene");
+  c->add_option("--set", o->set, "Override a scene key: key=value (repeatable)");
+  c->add_option("--background", o->config.background, "Host background: ns, tvns or equilibrium")
+      ->capture_default_str();
+  c->add_option("--transport", o->config.transport, "Contact factor: dilute (chi = 1) or enskog (equilibrium only)")
+      ->capture_default_str();
+  c->add_option("--trajectories", o->config.trajectories,
+                "Impurity trajectories (0 = the scene's realizations x impurities.count)")
+      ->capture_default_str();
+  c->add_option("--threads", o->config.threads, "Worker threads (results are identical for any count)")
+      ->capture_default_str();
+  c->add_option("--seed", o->seed, "Master seed (overrides the scene; >= 0)");
+  c->add_option("--shard", o->shard, "Run only blocks i, i+n, ... (combine with coldblast md merge): i/n")
+      ->capture_default_str();
+  c->add_option("--out", o->out, "Output directory")->capture_default_str();
+  c->add_option("--T", o->config.T, "Equilibrium background: bath temperature (> 0)")->capture_default_str();
+  c->add_option("--phi", o->phi, "Equilibrium background: packing fraction (default: the scene's)");
+  c->add_option("--start", o->config.start, "Initial velocity: kick (the MD's) or thermal (local Maxwellian)")
+      ->capture_default_str();
+  c->add_option("--start-time", o->config.start_time, "Start time (0 = the scene's t_min; 0 for equilibrium)")
+      ->capture_default_str();
+  c->add_option("--frames-per-decade", o->config.frames_per_decade, "ns: stored frames per decade of R/lambda")
+      ->capture_default_str();
+  c->add_option("--cells", o->config.cells, "ns: Navier-Stokes cells")->capture_default_str();
+  add_format_option(*c, o->format);
+  c->callback([o] { run(*o); });
+}
+
+}  // namespace coldblast::cli

@@ -1,0 +1,116 @@
+#pragma once
+// Host-gas backgrounds of the impurity's Lorentz–Boltzmann equation (paper Eq. (36) [LB-full]):
+// the local Maxwellian F(r, w, t) is fixed by n(r,t), the radial flow u(r,t) and T(r,t). A
+// background also gives, for each time window, upper bounds of n chi and n chi (|u| + c̄(T)) over
+// all space; they make the null-collision majorant of kinetic/tracer.hpp (docs/kinetic.md).
+// Grids (Navier–Stokes, TvNS) are stored on their self-similar coordinate x = r/s(t) and
+// interpolated bilinearly (x, and ln t between stored frames).
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coldblast::kinetic {
+
+/// Enskog factor of the impurity–host pair: 1 (dilute) or pair_contact_value at the local packing
+/// fraction n Ω_d a^d (dense).
+struct ContactModel {
+  int d = 2;
+  double a = 0.5;      ///< host radius
+  double a_imp = 0.5;  ///< impurity radius
+  bool enskog = false;
+  double chi(double n) const;
+};
+
+/// Host state at one point: density, radial flow speed, temperature, contact factor.
+struct HostState {
+  double n = 0.0, u = 0.0, T = 0.0, chi = 1.0;
+};
+
+/// Bounds over all space for the time window [t_begin, t_end) (one window holds t).
+struct WindowBound {
+  double t_begin = 0.0;
+  double t_end = std::numeric_limits<double>::infinity();
+  double n_chi_max = 0.0;  ///< >= n chi(n) everywhere in the window
+  double flux_max = 0.0;   ///< >= n chi(n) (|u| + c̄(T)) everywhere, c̄ the host mean thermal speed
+  int index = 0;           ///< window id, passed back to Background::at
+};
+
+/// Mean thermal speed of the host (mass 1) Maxwellian at temperature T (kinetic_theory.hpp).
+double host_mean_speed(int d, double T);
+
+class Background {
+ public:
+  virtual ~Background() = default;
+  virtual int dimension() const = 0;
+  /// Host state at radius r >= 0 and time t inside `window` (from bound(t)).
+  virtual HostState at(double r, double t, const WindowBound& window) const = 0;
+  /// The window holding t (t_begin <= t < t_end); throws std::runtime_error where the background
+  /// has no data.
+  virtual WindowBound bound(double t) const = 0;
+  /// Earliest and latest time with data (the start of a self-similar extension is 0, its end +inf).
+  virtual double t_first() const = 0;
+  virtual double t_last() const = 0;
+};
+
+/// Uniform host gas at rest (tests, `--background equilibrium`).
+class EquilibriumBackground final : public Background {
+ public:
+  EquilibriumBackground(int d, double n, double T, const ContactModel& contact);
+  int dimension() const override { return d_; }
+  HostState at(double, double, const WindowBound&) const override { return state_; }
+  WindowBound bound(double t) const override;
+  double t_first() const override { return 0.0; }
+  double t_last() const override { return std::numeric_limits<double>::infinity(); }
+
+ private:
+  int d_;
+  HostState state_;
+  double flux_;
+};
+
+/// Fields of one stored time on the common self-similar grid x_i = r_i / scale.
+struct BackgroundFrame {
+  double t = 0.0;
+  double scale = 0.0;  ///< length unit of x at this time (r = x scale)
+  std::vector<double> n, u, T;
+};
+
+/// Radial fields on a fixed self-similar grid x (ascending cell centres), stored at frame times.
+/// For x > edge the gas is ambient (n_inf, at rest, T = 0); between the last centre and `edge`
+/// the last cell's values hold; below the first centre, the first cell's. Before the first frame
+/// (and after the last if `self_similar_after`) the blast is continued self-similarly:
+/// s ∝ t^(2/(d+2)), u ∝ t^(-d/(d+2)), T ∝ t^(-2d/(d+2)), n(x) fixed (TvNS scaling, paper Eq. (1)).
+class GridBackground final : public Background {
+ public:
+  GridBackground(int d, std::vector<double> x, double edge, std::vector<BackgroundFrame> frames, double n_inf,
+                 const ContactModel& contact, bool self_similar_after);
+  int dimension() const override { return d_; }
+  HostState at(double r, double t, const WindowBound& window) const override;
+  WindowBound bound(double t) const override;
+  double t_first() const override { return 0.0; }
+  double t_last() const override;
+  std::size_t frame_count() const { return frames_.size(); }
+  const std::vector<BackgroundFrame>& frames() const { return frames_; }
+
+  /// Ratio of consecutive geometric windows in the self-similar extensions.
+  static constexpr double extension_window_ratio = 1.0905077326652577;  // 2^(1/8)
+
+ private:
+  /// Fields of frame k at x (with the ambient and hold rules), velocity and temperature times
+  /// the scale factors fu, fu².
+  HostState frame_at(std::size_t k, double x, double fu) const;
+  /// max over cell pairs of [max n chi] × [max (|u| + c̄)] over frames k0 and k1.
+  double pair_flux_bound(std::size_t k0, std::size_t k1) const;
+  int d_;
+  std::vector<double> x_;
+  double edge_, n_inf_;
+  std::vector<BackgroundFrame> frames_;
+  ContactModel contact_;
+  bool self_similar_after_;
+  double n_chi_max_ = 0.0;
+  std::vector<double> window_flux_;  // [k]: frames k, k+1
+  double first_flux_ = 0.0, last_flux_ = 0.0;
+};
+
+}  // namespace coldblast::kinetic

@@ -1,0 +1,86 @@
+#include "kinetic/hydro_backgrounds.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "common/validate.hpp"
+#include "hydro/navier_stokes.hpp"
+#include "hydro/tvns.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::kinetic {
+
+using common::format_number;
+
+std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastConfig& scene, const ContactModel& contact,
+                                                              int frames_per_decade, int cells,
+                                                              std::string* description) {
+  hydro::NavierStokesConfig ns;
+  ns.physics.d = scene.d;
+  ns.physics.E = scene.E;
+  ns.physics.n_inf = scene.n;
+  ns.physics.a = scene.a;
+  ns.numerics.cells = cells;
+  const double lambda = theory::mean_free_path(scene.d, scene.n, scene.a);
+  // R_ref(t) of the grid uses the ideal-gas A_d (hydro/navier_stokes.cpp); go 5 % beyond t_max.
+  const hydro::TvnsSolution ideal = hydro::solve_tvns(hydro::TvnsConfig{scene.d});
+  const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, ideal.A()};
+  const double start = ns.numerics.start_R_over_lambda;
+  const double until = theory::shock_radius(p, 1.05 * scene.t_max) / lambda;
+  if (!(until > start * 1.01))
+    throw std::invalid_argument("t_max = " + format_number(scene.t_max) + " is before the Navier–Stokes start (R/λ = " +
+                                format_number(start) + "): raise t_max for --background ns");
+  ns.until_R_over_lambda = until;
+  const double ratio = std::pow(10.0, 1.0 / frames_per_decade);
+  for (double R = start * ratio; R < until / std::sqrt(ratio); R *= ratio)
+    ns.numerics.profile_R_over_lambda.push_back(R);
+  const hydro::NavierStokesResult solution = hydro::run_navier_stokes(ns);
+
+  std::vector<double> x;
+  std::vector<BackgroundFrame> frames;
+  for (const hydro::NavierStokesProfile& profile : solution.profiles) {
+    const double scale = profile.r.back();
+    std::vector<double> xi(profile.r.size());
+    for (std::size_t i = 0; i < xi.size(); ++i) xi[i] = profile.r[i] / scale;
+    if (x.empty()) x = xi;
+    for (std::size_t i = 0; i < xi.size(); ++i)
+      if (std::abs(xi[i] - x[i]) > 1e-9)
+        throw std::runtime_error("Navier–Stokes profiles are not on one self-similar grid");
+    frames.push_back({profile.t, scale, profile.density, profile.velocity, profile.temperature});
+  }
+  std::sort(frames.begin(), frames.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+  if (frames.back().t < scene.t_max)
+    throw std::runtime_error("the Navier–Stokes background ends at t = " + format_number(frames.back().t) +
+                             " before t_max = " + format_number(scene.t_max));
+  if (description)
+    *description = "Navier-Stokes core (dilute, heat conduction, " + std::to_string(cells) + " cells), " +
+                   std::to_string(frames.size()) + " frames from R/lambda = " + format_number(start * ratio) + " to " +
+                   format_number(until) + ", t in [" + format_number(frames.front().t) + ", " +
+                   format_number(frames.back().t) + "]";
+  const double edge = x.back();
+  return std::make_unique<GridBackground>(scene.d, std::move(x), edge, std::move(frames), scene.n, contact, false);
+}
+
+std::unique_ptr<GridBackground> make_tvns_background(const md::BlastConfig& scene, const ContactModel& contact,
+                                                     std::string* description) {
+  const hydro::TvnsSolution tvns = hydro::solve_tvns(hydro::TvnsConfig{scene.d});
+  const int points = 8 * 256;
+  std::vector<double> x(points);
+  for (int i = 0; i < points; ++i) x[i] = (i + 0.5) / points;
+  // Frame at t = 1: R = (E/(A n))^(1/(d+2)), Ṙ = 2R/(d+2); n = n∞ ρ/ρ0, u = Ṙ V, T = Ṙ² θ.
+  const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, tvns.A()};
+  const double R = theory::shock_radius(p, 1.0), Rdot = theory::shock_speed(p, 1.0);
+  BackgroundFrame frame{1.0, R, {}, {}, {}};
+  for (const hydro::TvnsPoint& q : tvns.profile(x)) {
+    frame.n.push_back(scene.n * q.density);
+    frame.u.push_back(Rdot * q.velocity);
+    frame.T.push_back(std::isfinite(q.temperature) ? Rdot * Rdot * q.temperature : 0.0);
+  }
+  if (description)
+    *description = "TvNS (Euler, ideal gas gamma = 1 + 2/d, A_d = " + format_number(tvns.A()) + "), " +
+                   std::to_string(points) + " points in r/R";
+  return std::make_unique<GridBackground>(scene.d, std::move(x), 1.0, std::vector<BackgroundFrame>{frame}, scene.n,
+                                          contact, true);
+}
+
+}  // namespace coldblast::kinetic

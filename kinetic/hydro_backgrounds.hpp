@@ -1,0 +1,25 @@
+#pragma once
+// The blast backgrounds of the tracer: the radial Navier–Stokes solution (hydro/navier_stokes.hpp)
+// stored on its self-similar grid at frames_per_decade times per decade of R/λ, and the exact
+// TvNS (Euler) solution (hydro/tvns.hpp), both in the scene's physical units (E, n, a; m = 1).
+#include <memory>
+#include <string>
+
+#include "kinetic/background.hpp"
+#include "md/scenes.hpp"
+
+namespace coldblast::kinetic {
+
+/// Navier–Stokes core run (conduction only, as `coldblast hydro core`; dilute ideal gas) from
+/// R/λ = 2 to 1.05 × R(t_max)/λ; its profiles become the frames. Throws std::runtime_error when
+/// the solution does not reach t_max (the missing-background error of `coldblast tracer`).
+std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastConfig& scene, const ContactModel& contact,
+                                                              int frames_per_decade, int cells,
+                                                              std::string* description = nullptr);
+
+/// Exact ideal-gas TvNS blast (γ = 1 + 2/d) sampled at 8 × 256 points of r/R in (0, 1), continued
+/// self-similarly to any time.
+std::unique_ptr<GridBackground> make_tvns_background(const md::BlastConfig& scene, const ContactModel& contact,
+                                                     std::string* description = nullptr);
+
+}  // namespace coldblast::kinetic

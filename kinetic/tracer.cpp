@@ -1,0 +1,444 @@
+#include "kinetic/tracer.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "common/validate.hpp"
+#include "hydro/tvns.hpp"
+#include "kinetic/hydro_backgrounds.hpp"
+#include "kinetic/kinetic_theory.hpp"
+#include "kinetic/trajectory.hpp"
+#include "md/observers.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::kinetic {
+
+using common::Bound;
+using common::format_number;
+
+namespace {
+
+/// Largest packing fraction of the equilibrium background (the fluid range of the EOS used for chi).
+double max_equilibrium_phi(int d) {
+  return d == 2 ? 0.7 : 0.5;
+}
+
+double scene_phi(const md::BlastConfig& c) {
+  return theory::packing_fraction(c.d, c.n, c.a);
+}
+
+/// The scene as the md writers need it, without md::resolve_scene's particle-region sizing (the
+/// tracer has no particles, and R/λ = 1e6 would exceed its MD limits): A_d, φ, λ, radii, times.
+md::ResolvedScene tracer_scene(md::BlastConfig c, long long trajectories, double A_d, const std::string& A_d_source) {
+  c.observables = {"R_imp", "V_imp", "C_imp", "u_imp", "p_imp"};
+  c.realizations = trajectories;
+  // At most ~256 blocks: enough for jackknife errors, few enough for a small blocks.csv.
+  c.block_size = static_cast<int>(std::max<long long>(c.block_size, (trajectories + 255) / 256));
+  c.A_d = A_d;
+  c.validate();
+  md::ResolvedScene s;
+  s.config = c;
+  s.A_d = A_d;
+  s.A_d_source = A_d_source;
+  s.phi = scene_phi(c);
+  s.lambda = theory::mean_free_path(c.d, c.n, c.a);
+  s.impurity_radius = c.impurities.radius > 0.0 ? c.impurities.radius : c.a;
+  const theory::BlastParameters p{c.d, c.n, c.a, c.E, A_d};
+  s.shock_radius_at_t_max = theory::shock_radius(p, c.t_max);  // Eq. (1) [R-shock]
+  s.region_radius = s.shock_radius_at_t_max;
+  s.guard_radius = s.region_radius;
+  s.particle_count = 0;
+  for (int k = 0;; ++k) {
+    const double t = c.t_min * std::pow(2.0, k / 4.0);
+    if (t > c.t_max * (1.0 + 1e-12)) break;
+    s.times.push_back(t);
+  }
+  return s;
+}
+
+/// Initial velocity: the MD's kick (k Gaussian vectors shifted to zero mean and scaled to total
+/// kinetic energy E; this impurity is the first of them, md/initial_state.cpp) or the local
+/// Maxwellian at the origin.
+template <int D>
+md::Vec<D> initial_velocity(const TracerConfig& c, const Background& background, double t0, Random& rng) {
+  const double M = c.scene.impurities.mass;
+  md::Vec<D> v;
+  if (c.start == "kick") {
+    const int k = c.scene.impurities.count;
+    std::vector<md::Vec<D>> kicks(k);
+    md::Vec<D> mean = md::Vec<D>::Zero();
+    for (auto& x : kicks) {
+      for (int i = 0; i < D; ++i) x[i] = rng.normal();
+      mean += x;
+    }
+    mean /= static_cast<double>(k);
+    double energy = 0.0;
+    for (auto& x : kicks) {
+      x -= mean;
+      energy += 0.5 * M * x.squaredNorm();
+    }
+    return std::sqrt(c.scene.E / energy) * kicks[0];
+  }
+  const HostState h = background.at(0.0, t0, background.bound(t0));
+  for (int i = 0; i < D; ++i) v[i] = std::sqrt(h.T / M) * rng.normal();
+  return v;  // u = 0 at the centre of a radial flow
+}
+
+struct BlockOutput {
+  md::BlockSums sums;
+  TracerBlock tracer;
+};
+
+struct RunContext {
+  const TracerConfig& config;
+  const md::ResolvedScene& scene;
+  const md::ObservableLayout& layout;
+  const Background& background;
+  ImpurityModel impurity;
+  double start_time;
+};
+
+template <int D>
+void run_trajectory(const RunContext& ctx, long long index, std::vector<double>& record, TracerBlock& block) {
+  const md::BlastConfig& c = ctx.scene.config;
+  Random rng(c.seed, static_cast<std::uint64_t>(index));
+  TracerState<D> s;
+  s.t = ctx.start_time;
+  s.v = initial_velocity<D>(ctx.config, ctx.background, s.t, rng);
+  TracerCounters counters;
+  const theory::BlastParameters p{D, c.n, c.a, c.E, ctx.scene.A_d};
+  const int bins = c.p_imp_bins;
+  std::fill(record.begin(), record.end(), 0.0);
+  for (std::size_t k = 0; k < ctx.scene.times.size(); ++k) {
+    const double t = ctx.scene.times[k];
+    if (t > s.t) advance<D>(ctx.background, ctx.impurity, s, t, rng, counters);
+    const double r2 = s.r.squaredNorm(), v2 = s.v.squaredNorm();
+    const int kk = static_cast<int>(k);
+    record[ctx.layout.scalar("R_imp", kk)] = 0.5 * r2;
+    record[ctx.layout.scalar("V_imp", kk)] = 0.5 * v2;
+    record[ctx.layout.scalar("C_imp", kk)] = static_cast<double>(s.collisions);
+    const double time = std::max(t, s.t);
+    record[ctx.layout.scalar("u_imp", kk)] =
+        std::abs(ctx.background.at(std::sqrt(r2), time, ctx.background.bound(time)).u);
+    // Eq. (39) [eq:pr]: |Δr| in bins of width R(t)/bins, R(t) from Eq. (1), as md/observers.cpp.
+    const double width = theory::shock_radius(p, t) / bins;
+    const int b = static_cast<int>(std::sqrt(r2) / width);
+    if (b < bins) record[ctx.layout.p_imp(kk, b)] = 1.0;
+    double* m = &block.moments[4 * k];
+    m[0] += r2;
+    m[1] += r2 * r2;
+    m[2] += v2;
+    m[3] += v2 * v2;
+  }
+  if (c.t_max > s.t) advance<D>(ctx.background, ctx.impurity, s, c.t_max, rng, counters);
+  const double v2 = s.v.squaredNorm();
+  block.v2_final += v2;
+  block.v2_final_squares += v2 * v2;
+  block.collisions += counters.collisions;
+  block.candidates += counters.candidates;
+  block.collisions_squares += static_cast<double>(s.collisions) * static_cast<double>(s.collisions);
+  ++block.count;
+  for (const double x : record)
+    if (!std::isfinite(x)) throw std::runtime_error("non-finite observable in trajectory " + std::to_string(index));
+}
+
+BlockOutput run_block(const RunContext& ctx, long long block, const std::atomic<bool>& stop) {
+  const md::BlastConfig& c = ctx.scene.config;
+  BlockOutput out;
+  out.sums.sum.assign(ctx.layout.size(), 0.0);
+  out.sums.sum_squares.assign(ctx.layout.size(), 0.0);
+  out.tracer.moments.assign(4 * ctx.scene.times.size(), 0.0);
+  std::vector<double> record(ctx.layout.size(), 0.0);
+  const long long first = block * c.block_size, count = md::block_realizations(c, block);
+  for (long long i = first; i < first + count && !stop; ++i) {
+    if (c.d == 2)
+      run_trajectory<2>(ctx, i, record, out.tracer);
+    else
+      run_trajectory<3>(ctx, i, record, out.tracer);
+    for (std::size_t e = 0; e < record.size(); ++e) {
+      out.sums.sum[e] += record[e];
+      out.sums.sum_squares[e] += record[e] * record[e];
+    }
+    ++out.sums.count;
+  }
+  out.sums.collisions = out.tracer.collisions;
+  return out;
+}
+
+double resolved_A_d(const md::BlastConfig& c, std::string& source) {
+  if (c.A_d > 0.0) {
+    source = "scene";
+    return c.A_d;
+  }
+  // As `md run`: the hard-particle TvNS amplitude A_d(φ), so p_imp's bins match the MD's.
+  const hydro::TvnsSolution tvns = hydro::solve_tvns_for_md(c.d, scene_phi(c));
+  source = "hydro TvNS, " + hydro::to_string(tvns.config().eos) + " EOS at phi = " + format_number(scene_phi(c));
+  return tvns.A();
+}
+
+}  // namespace
+
+void TracerConfig::validate() const {
+  scene.validate();
+  if (background != "ns" && background != "tvns" && background != "equilibrium")
+    throw std::invalid_argument("--background = " + background + " is not one of: ns, tvns, equilibrium");
+  if (transport != "dilute" && transport != "enskog")
+    throw std::invalid_argument("--transport = " + transport + " is not one of: dilute, enskog");
+  if (transport == "enskog" && background != "equilibrium")
+    throw std::invalid_argument(
+        "--transport = enskog needs the dense Navier–Stokes background, which is not "
+        "available yet; allowed with --background " +
+        background + ": dilute");
+  if (start != "kick" && start != "thermal")
+    throw std::invalid_argument("--start = " + start + " is not one of: kick, thermal");
+  common::require_integer_in_range("--trajectories", trajectories, 0, 1000000000000LL, " (0 = scene default)");
+  common::require_integer_in_range("--threads", threads, 1, 1024);
+  common::require_integer_in_range("shard_count", shard_count, 1, 1000000);
+  common::require_integer_in_range("shard_index", shard_index, 0, shard_count - 1);
+  common::require_in_range("--T", T, 0.0, std::numeric_limits<double>::infinity());
+  if (phi)
+    common::require_in_range("--phi", *phi, 0.0, max_equilibrium_phi(scene.d), Bound::open, Bound::open,
+                             " for d = " + std::to_string(scene.d));
+  if (phi && background != "equilibrium")
+    throw std::invalid_argument("--phi is only for --background equilibrium (the blast uses the scene's n)");
+  common::require_in_range("--start-time", start_time, 0.0, scene.t_max, Bound::closed, Bound::open);
+  common::require_integer_in_range("--frames-per-decade", frames_per_decade, 4, 400);
+  common::require_integer_in_range("--cells", cells, 64, 4096);
+}
+
+double TracerConfig::resolved_start_time() const {
+  if (start_time > 0.0 || background == "equilibrium") return start_time;
+  return scene.t_min;
+}
+
+std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description) {
+  const md::BlastConfig& c = config.scene;
+  ContactModel contact{c.d, c.a, c.impurities.radius > 0.0 ? c.impurities.radius : c.a, config.transport == "enskog"};
+  if (config.background == "equilibrium") {
+    const double phi = config.phi ? *config.phi : scene_phi(c);
+    const double n = theory::number_density(c.d, phi, c.a);
+    if (description)
+      *description = "equilibrium: n = " + format_number(n) + " (phi = " + format_number(phi) +
+                     "), T = " + format_number(config.T) + ", u = 0, chi " + (contact.enskog ? "Enskog" : "= 1");
+    return std::make_unique<EquilibriumBackground>(c.d, n, config.T, contact);
+  }
+  if (config.background == "tvns") return make_tvns_background(c, contact, description);
+  return make_navier_stokes_background(c, contact, config.frames_per_decade, config.cells, description);
+}
+
+std::uint64_t TracerResult::collisions() const {
+  std::uint64_t total = 0;
+  for (const auto& [b, s] : blocks) total += s.collisions;
+  return total;
+}
+std::uint64_t TracerResult::candidates() const {
+  std::uint64_t total = 0;
+  for (const auto& [b, s] : blocks) total += s.candidates;
+  return total;
+}
+long long TracerResult::trajectories() const {
+  long long total = 0;
+  for (const auto& [b, s] : blocks) total += s.count;
+  return total;
+}
+double TracerResult::collision_rate() const {
+  const double N = static_cast<double>(trajectories());
+  return static_cast<double>(collisions()) / N / (config.scene.t_max - start_time);
+}
+double TracerResult::collision_rate_error() const {
+  const double N = static_cast<double>(trajectories());
+  double squares = 0.0;
+  for (const auto& [b, s] : blocks) squares += s.collisions_squares;
+  const double mean = static_cast<double>(collisions()) / N;
+  const double variance = std::max(0.0, (squares - N * mean * mean) / (N - 1));
+  return std::sqrt(variance / N) / (config.scene.t_max - start_time);
+}
+double TracerResult::temperature_final() const {
+  double sum = 0.0;
+  for (const auto& [b, s] : blocks) sum += s.v2_final;
+  return config.scene.impurities.mass * sum / trajectories() / config.scene.d;
+}
+double TracerResult::temperature_final_error() const {
+  const double N = static_cast<double>(trajectories());
+  double sum = 0.0, squares = 0.0;
+  for (const auto& [b, s] : blocks) {
+    sum += s.v2_final;
+    squares += s.v2_final_squares;
+  }
+  const double mean = sum / N;
+  const double variance = std::max(0.0, (squares - N * mean * mean) / (N - 1));
+  return config.scene.impurities.mass * std::sqrt(variance / N) / config.scene.d;
+}
+double TracerResult::rejection_rate() const {
+  const double candidates_total = static_cast<double>(candidates());
+  return candidates_total > 0 ? 1.0 - static_cast<double>(collisions()) / candidates_total : 0.0;
+}
+
+TracerResult run_tracer(const TracerConfig& config, const std::function<void(long long, long long)>& progress) {
+  config.validate();
+  const auto started = std::chrono::steady_clock::now();
+  TracerResult result;
+  result.config = config;
+  md::BlastConfig scene_config = config.scene;
+  const long long trajectories =
+      config.trajectories > 0 ? config.trajectories : scene_config.realizations * scene_config.impurities.count;
+  std::string A_d_source;
+  const double A_d = resolved_A_d(scene_config, A_d_source);
+  md::BlastResult& ensemble = result.ensemble;
+  ensemble.scene = tracer_scene(scene_config, trajectories, A_d, A_d_source);
+  ensemble.threads = config.threads;
+  ensemble.shard_index = config.shard_index;
+  ensemble.shard_count = config.shard_count;
+  const md::ResolvedScene& scene = ensemble.scene;
+  result.config.scene = scene.config;
+  result.start_time = config.resolved_start_time();
+
+  const std::unique_ptr<Background> background = make_background(config, &result.background_description);
+  if (const auto* grid = dynamic_cast<const GridBackground*>(background.get()))
+    result.background_frames = grid->frame_count();
+  const ImpurityModel impurity{scene.config.d, scene.config.impurities.mass, scene.config.a + scene.impurity_radius};
+  {
+    const HostState ambient = background->at(1e300, std::max(result.start_time, 1e-300),
+                                             background->bound(std::max(result.start_time, 1e-300)));
+    result.n = ambient.n;
+    result.chi = ambient.chi;
+  }
+  const md::ObservableLayout layout(scene);
+  const RunContext ctx{result.config, scene, layout, *background, impurity, result.start_time};
+
+  const long long block_count = (trajectories + scene.config.block_size - 1) / scene.config.block_size;
+  std::vector<long long> owned;
+  for (long long b = config.shard_index; b < block_count; b += config.shard_count) owned.push_back(b);
+  std::vector<BlockOutput> outputs(owned.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex mutex;
+  long long done = 0;
+  auto worker = [&] {
+    while (!failed) {
+      const std::size_t slot = next++;
+      if (slot >= owned.size()) return;
+      try {
+        outputs[slot] = run_block(ctx, owned[slot], failed);
+        std::lock_guard<std::mutex> lock(mutex);
+        ++done;
+        if (progress) progress(done, static_cast<long long>(owned.size()));
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < config.threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  for (std::size_t slot = 0; slot < owned.size(); ++slot) {
+    ensemble.blocks[owned[slot]] = std::move(outputs[slot].sums);
+    result.blocks[owned[slot]] = std::move(outputs[slot].tracer);
+  }
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  ensemble.wall_seconds = result.wall_seconds;
+  return result;
+}
+
+std::vector<MomentRow> moment_rows(const TracerResult& result) {
+  const auto& times = result.ensemble.scene.times;
+  std::vector<MomentRow> rows;
+  // Totals, then leave-one-block-out values for the jackknife.
+  const std::size_t K = times.size();
+  std::vector<double> total(4 * K, 0.0);
+  double N = 0.0;
+  for (const auto& [b, s] : result.blocks) {
+    for (std::size_t e = 0; e < total.size(); ++e) total[e] += s.moments[e];
+    N += static_cast<double>(s.count);
+  }
+  const auto values = [&](const std::vector<double>& sums, double count, std::size_t k) {
+    const double r2 = sums[4 * k] / count, r4 = sums[4 * k + 1] / count;
+    const double v2 = sums[4 * k + 2] / count, v4 = sums[4 * k + 3] / count;
+    return std::array<double, 4>{r2, r2 > 0 ? r4 / (r2 * r2) : 0.0, v2, v2 > 0 ? v4 / (v2 * v2) : 0.0};
+  };
+  const double B = static_cast<double>(result.blocks.size());
+  for (std::size_t k = 0; k < K; ++k) {
+    const auto full = values(total, N, k);
+    std::array<double, 4> mean{}, square{};
+    for (const auto& [b, s] : result.blocks) {
+      std::vector<double> rest(total);
+      for (std::size_t e = 4 * k; e < 4 * k + 4; ++e) rest[e] -= s.moments[e];
+      const auto leave = values(rest, N - static_cast<double>(s.count), k);
+      for (int q = 0; q < 4; ++q) {
+        mean[q] += leave[q] / B;
+        square[q] += leave[q] * leave[q] / B;
+      }
+    }
+    std::array<double, 4> error{};
+    for (int q = 0; q < 4; ++q)
+      error[q] = B > 1 ? std::sqrt(std::max(0.0, (B - 1) * (square[q] - mean[q] * mean[q]))) : std::nan("");
+    rows.push_back({times[k], full[0], error[0], full[1], error[1], full[2], error[2], full[3], error[3]});
+  }
+  return rows;
+}
+
+common::Json tracer_summary(const TracerResult& result) {
+  common::Json j = md::blast_summary(result.ensemble);
+  const TracerConfig& c = result.config;
+  j["engine"] = "tracer (Lorentz-Boltzmann Monte Carlo, paper Eq. (36))";
+  j["background"] = c.background;
+  j["background_description"] = result.background_description;
+  j["background_frames"] = result.background_frames;
+  j["transport"] = c.transport;
+  j["start"] = c.start;
+  j["start_time"] = result.start_time;
+  j["trajectories"] = result.trajectories();
+  j["impurity_mass"] = c.scene.impurities.mass;
+  j["impurity_radius"] = result.ensemble.scene.impurity_radius;
+  j["collision_rate"] = result.collision_rate();
+  j["collision_rate_error"] = result.collision_rate_error();
+  j["chi"] = result.chi;
+  j["temperature_final"] = result.temperature_final();
+  j["temperature_final_error"] = result.temperature_final_error();
+  j["candidates_total"] = result.candidates();
+  j["rejection_rate"] = result.rejection_rate();
+  j["trajectories_per_second"] =
+      result.wall_seconds > 0 ? static_cast<double>(result.trajectories()) / result.wall_seconds : 0.0;
+  if (c.background == "equilibrium") {
+    const auto& s = result.ensemble.scene;
+    j["T"] = c.T;
+    j["collision_rate_exact"] = equilibrium_collision_rate(
+        s.config.d, result.n, result.chi, s.config.a + s.impurity_radius, c.T, s.config.impurities.mass);
+  }
+  return j;
+}
+
+void write_tracer_outputs(const TracerResult& result, const std::filesystem::path& directory) {
+  md::write_blast_outputs(result.ensemble, directory);
+  std::ostringstream out;
+  out << common::provenance_header({{"scene", result.ensemble.scene.config.name},
+                                    {"seed", std::to_string(result.ensemble.scene.config.seed)},
+                                    {"background", result.background_description}},
+                                   "m = 1 (host mass), k_B = 1, lengths and times in the scene's units")
+      << "# r: impurity displacement from its start; errors: block jackknife\n"
+      << "t,r2,r2_stderr,r4_over_r2_squared,r4_over_r2_squared_stderr,v2,v2_stderr,v4_over_v2_squared,"
+         "v4_over_v2_squared_stderr\n";
+  for (const MomentRow& m : moment_rows(result))
+    out << format_number(m.t) << ',' << format_number(m.r2) << ',' << format_number(m.r2_error) << ','
+        << format_number(m.r_ratio) << ',' << format_number(m.r_ratio_error) << ',' << format_number(m.v2) << ','
+        << format_number(m.v2_error) << ',' << format_number(m.v_ratio) << ',' << format_number(m.v_ratio_error)
+        << '\n';
+  common::write_file_atomic(directory / "moments.csv", out.str());
+  common::write_file_atomic(directory / "summary.json", tracer_summary(result).dump(2) + "\n");
+}
+
+}  // namespace coldblast::kinetic

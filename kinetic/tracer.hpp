@@ -1,0 +1,99 @@
+#pragma once
+// `coldblast tracer`: ensembles of impurity trajectories of the paper's Lorentz–Boltzmann equation,
+// Eq. (36) [LB-full], in a Navier–Stokes, TvNS (Euler) or uniform equilibrium host background, by
+// exact null-collision Monte Carlo (kinetic/trajectory.hpp). Trajectory i is seeded from (seed, i)
+// and trajectories are summed in blocks in index order, so every number is bit-identical for any
+// thread count and sharding; the run directory is the one of `md run` (docs/md-output.md), so
+// `coldblast compare` reads it unchanged. Method, start and error budget: docs/kinetic.md.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/output.hpp"
+#include "kinetic/background.hpp"
+#include "md/ensemble.hpp"
+#include "md/scenes.hpp"
+
+namespace coldblast::kinetic {
+
+/// One tracer run: the MD scene (d, n, a, E, impurities.*, t_min, t_max, seed, block_size,
+/// p_imp_bins) plus the background and the Monte Carlo options.
+struct TracerConfig {
+  md::BlastConfig scene;
+  std::string background = "ns";         ///< "ns" (Navier–Stokes core), "tvns" (exact Euler) or "equilibrium"
+  std::string transport = "dilute";      ///< "dilute" (chi = 1) or "enskog" (chi(n) at contact; equilibrium only)
+  long long trajectories = 0;            ///< impurity trajectories, >= 1; 0 = scene realizations × impurities.count
+  int threads = 1;                       ///< worker threads, [1, 1024]
+  int shard_index = 0, shard_count = 1;  ///< this shard runs blocks shard_index, shard_index + shard_count, ...
+  double T = 1.0;                        ///< equilibrium: bath temperature, > 0
+  std::optional<double> phi;   ///< equilibrium: packing fraction (default: the scene's), (0, 0.7) 2D, (0, 0.5) 3D
+  std::string start = "kick";  ///< "kick" (the MD's kick: E shared by k impurities) or "thermal"
+  double start_time = 0.0;     ///< start time, >= 0 (> 0 for ns/tvns); 0 = scene t_min (ns, tvns)
+  int frames_per_decade = 40;  ///< ns: stored background frames per decade of R/λ, [4, 400]
+  int cells = 256;             ///< ns: finite-volume cells, [64, 4096]; tvns: x samples = 8 × cells
+  /// Throws std::invalid_argument naming the option, its value and the allowed range.
+  void validate() const;
+  /// start_time with 0 resolved.
+  double resolved_start_time() const;
+};
+
+/// Sums over the trajectories of one block beyond the md layout: per recording time k the sums of
+/// |Δr|², |Δr|⁴, |v|², |v|⁴ (moments[4k + 0..3]); the end state at t_max; work counters.
+struct TracerBlock {
+  std::vector<double> moments;
+  double collisions_squares = 0.0;  ///< Σ (collisions of the trajectory in [start, t_max])²
+  double v2_final = 0.0, v2_final_squares = 0.0;
+  std::uint64_t candidates = 0, collisions = 0;
+  long long count = 0;
+};
+
+/// A finished tracer ensemble.
+struct TracerResult {
+  TracerConfig config;
+  md::BlastResult ensemble;  ///< scene and md-layout block sums (R_imp, V_imp, C_imp, u_imp, p_imp)
+  std::map<long long, TracerBlock> blocks;
+  std::string background_description;
+  std::size_t background_frames = 0;
+  double n = 0.0, chi = 1.0;  ///< ambient (equilibrium: bath) density and its contact value
+  double start_time = 0.0;
+  double wall_seconds = 0.0;
+
+  std::uint64_t collisions() const;
+  std::uint64_t candidates() const;
+  long long trajectories() const;
+  /// Collisions per unit time per impurity over [start_time, t_max] and its standard error.
+  double collision_rate() const;
+  double collision_rate_error() const;
+  /// M ⟨v²⟩/d of the impurity at t_max and its standard error.
+  double temperature_final() const;
+  double temperature_final_error() const;
+  /// Share of majorant candidates that were not collisions.
+  double rejection_rate() const;
+};
+
+/// The background of a config (built once per run; `ns` integrates the Navier–Stokes blast).
+std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description = nullptr);
+
+/// Runs the trajectories of this shard; progress(done, total) after each block (may be empty).
+TracerResult run_tracer(const TracerConfig& config, const std::function<void(long long, long long)>& progress = {});
+
+/// Rows of moments.csv: at each recording time ⟨r²⟩, ⟨r⁴⟩/⟨r²⟩², ⟨v²⟩, ⟨v⁴⟩/⟨v²⟩² with block
+/// jackknife errors (r = displacement from the start).
+struct MomentRow {
+  double t;
+  double r2, r2_error, r_ratio, r_ratio_error, v2, v2_error, v_ratio, v_ratio_error;
+};
+std::vector<MomentRow> moment_rows(const TracerResult& result);
+
+/// summary.json: md::blast_summary's keys plus the tracer's (docs/kinetic.md).
+common::Json tracer_summary(const TracerResult& result);
+/// Writes the run directory: the md files (observables.csv, blocks.csv, p_imp.csv, ...), then
+/// moments.csv and the tracer's summary.json.
+void write_tracer_outputs(const TracerResult& result, const std::filesystem::path& directory);
+
+}  // namespace coldblast::kinetic

@@ -1,0 +1,119 @@
+#include "kinetic/trajectory.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "common/validate.hpp"
+#include "kinetic/kinetic_theory.hpp"
+#include "md/collision.hpp"
+
+namespace coldblast::kinetic {
+
+namespace {
+constexpr double two_pi = 6.283185307179586476925;
+
+template <int D>
+md::Vec<D> normal_vector(Random& rng) {
+  md::Vec<D> x;
+  for (int k = 0; k < D; ++k) x[k] = rng.normal();
+  return x;
+}
+
+/// Thermal velocity c = w − u of the host partner from the mixture (|v−u| F + |c| F)/(|v−u| + c̄):
+/// with probability |v−u|/(|v−u| + c̄) Maxwellian, else speed-biased Maxwellian (speed ~ chi with
+/// d+1 degrees of freedom, uniform direction).
+template <int D>
+md::Vec<D> mixture_velocity(double relative_speed, double mean_speed, double T, Random& rng) {
+  const double sqrt_T = std::sqrt(T);
+  if (rng.uniform() * (relative_speed + mean_speed) < relative_speed) return sqrt_T * normal_vector<D>(rng);
+  md::Vec<D> direction = normal_vector<D>(rng);
+  while (direction.squaredNorm() == 0.0) direction = normal_vector<D>(rng);
+  double chi2 = 0.0;
+  for (int k = 0; k <= D; ++k) {
+    const double z = rng.normal();
+    chi2 += z * z;
+  }
+  return (sqrt_T * std::sqrt(chi2) / direction.norm()) * direction;
+}
+}  // namespace
+
+double ImpurityModel::cross_section() const {
+  return total_cross_section(d, sigma_c);
+}
+
+template <int D>
+md::Vec<D> sample_impact_direction(const md::Vec<D>& g_hat, Random& rng) {
+  if constexpr (D == 2) {
+    const double b = 2.0 * rng.uniform() - 1.0;
+    const md::Vec<2> perpendicular(-g_hat[1], g_hat[0]);
+    return std::sqrt(1.0 - b * b) * g_hat + b * perpendicular;
+  } else {
+    const double b2 = rng.uniform();
+    const double b = std::sqrt(b2), angle = two_pi * rng.uniform();
+    // Orthonormal pair perpendicular to g_hat (Frisvad-style choice of the helper axis).
+    const md::Vec<3> helper = std::abs(g_hat[0]) < 0.6 ? md::Vec<3>(1, 0, 0) : md::Vec<3>(0, 1, 0);
+    const md::Vec<3> e1 = g_hat.cross(helper).normalized();
+    const md::Vec<3> e2 = g_hat.cross(e1);
+    return std::sqrt(1.0 - b2) * g_hat + b * (std::cos(angle) * e1 + std::sin(angle) * e2);
+  }
+}
+
+template <int D>
+void binary_collision(const md::Vec<D>& e, md::Vec<D>& v, md::Vec<D>& w, double M) {
+  md::collide<D>(e, v, w, M, 1.0);  // dr = r_host − r_impurity ∥ e
+}
+
+template <int D>
+void advance(const Background& background, const ImpurityModel& impurity, TracerState<D>& s, double t_target,
+             Random& rng, TracerCounters& counters) {
+  const double S = impurity.cross_section();
+  WindowBound window = background.bound(s.t);
+  double majorant = S * (window.n_chi_max * s.v.norm() + window.flux_max);
+  while (true) {
+    const double t_stop = std::min(t_target, window.t_end);
+    const double dt = majorant > 0.0 ? rng.exponential() / majorant : std::numeric_limits<double>::infinity();
+    if (s.t + dt >= t_stop) {  // memoryless: stop at the window edge or target and redraw there
+      s.r += s.v * (t_stop - s.t);
+      s.t = t_stop;
+      if (t_stop >= t_target) return;
+      window = background.bound(s.t);
+      majorant = S * (window.n_chi_max * s.v.norm() + window.flux_max);
+      continue;
+    }
+    s.t += dt;
+    s.r += s.v * dt;
+    ++counters.candidates;
+    const double radius = s.r.norm();
+    const HostState h = background.at(radius, s.t, window);
+    const md::Vec<D> u = radius > 0.0 ? md::Vec<D>((h.u / radius) * s.r) : md::Vec<D>::Zero();
+    const double relative_speed = (s.v - u).norm();
+    const double mean_speed = host_mean_speed(D, h.T);
+    const double dominating = S * h.n * h.chi * (relative_speed + mean_speed);
+    if (dominating > majorant * (1.0 + 1e-12))
+      throw std::runtime_error("null-collision majorant violated at t = " + common::format_number(s.t) +
+                               ", r = " + common::format_number(radius) + ": rate " +
+                               common::format_number(dominating) + " > " + common::format_number(majorant));
+    if (rng.uniform() * majorant >= dominating) continue;
+    const md::Vec<D> c = mixture_velocity<D>(relative_speed, mean_speed, h.T, rng);
+    md::Vec<D> w = u + c;
+    const md::Vec<D> g = s.v - w;
+    const double g_norm = g.norm();
+    if (rng.uniform() * (relative_speed + c.norm()) >= g_norm) continue;
+    const md::Vec<D> e = sample_impact_direction<D>(g / g_norm, rng);
+    binary_collision<D>(e, s.v, w, impurity.M);
+    ++s.collisions;
+    ++counters.collisions;
+    majorant = S * (window.n_chi_max * s.v.norm() + window.flux_max);
+  }
+}
+
+template md::Vec<2> sample_impact_direction<2>(const md::Vec<2>&, Random&);
+template md::Vec<3> sample_impact_direction<3>(const md::Vec<3>&, Random&);
+template void binary_collision<2>(const md::Vec<2>&, md::Vec<2>&, md::Vec<2>&, double);
+template void binary_collision<3>(const md::Vec<3>&, md::Vec<3>&, md::Vec<3>&, double);
+template void advance<2>(const Background&, const ImpurityModel&, TracerState<2>&, double, Random&, TracerCounters&);
+template void advance<3>(const Background&, const ImpurityModel&, TracerState<3>&, double, Random&, TracerCounters&);
+
+}  // namespace coldblast::kinetic

@@ -1,0 +1,81 @@
+// Grid backgrounds: exact interpolation of fields linear in x and ln t, the self-similar
+// continuation, the ambient gas beyond the edge, and the majorant bounds at random points.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "kinetic/background.hpp"
+#include "kinetic/random.hpp"
+
+using namespace coldblast::kinetic;
+
+namespace {
+/// Frames with n = 1 + x + ln t, u = 2x, T = 1 + x (scale = t^(1/2)).
+GridBackground linear_background(bool self_similar_after, bool enskog = false) {
+  std::vector<double> x;
+  for (int i = 0; i < 50; ++i) x.push_back(0.01 + 0.02 * i);
+  std::vector<BackgroundFrame> frames;
+  for (const double t : {1.0, 2.0, 4.0, 8.0}) {
+    BackgroundFrame f{t, std::sqrt(t), {}, {}, {}};
+    for (const double xi : x) {
+      f.n.push_back(1 + xi + std::log(t));
+      f.u.push_back(2 * xi);
+      f.T.push_back(1 + xi);
+    }
+    frames.push_back(f);
+  }
+  return GridBackground(2, x, 1.0, frames, 0.5, ContactModel{2, 0.2, 0.2, enskog}, self_similar_after);
+}
+}  // namespace
+
+TEST_CASE("grid background: bilinear interpolation in x and ln t is exact for linear fields") {
+  const GridBackground bg = linear_background(false);
+  for (const double t : {1.0, 1.5, 3.0, 7.9}) {
+    const WindowBound w = bg.bound(t);
+    REQUIRE(w.t_begin <= t);
+    REQUIRE(t < w.t_end);
+    for (const double x : {0.02, 0.5, 0.97}) {
+      const HostState h = bg.at(x * std::sqrt(t), t, w);
+      CHECK(h.n == Approx(1 + x + std::log(t)).epsilon(1e-12));
+      CHECK(h.u == Approx(2 * x).epsilon(1e-12));
+      CHECK(h.T == Approx(1 + x).epsilon(1e-12));
+    }
+    const HostState ambient = bg.at(1.01 * std::sqrt(t), t, w);
+    CHECK(ambient.n == 0.5);
+    CHECK(ambient.u == 0.0);
+    CHECK(ambient.T == 0.0);
+  }
+  CHECK_THROWS_AS(bg.bound(8.5), std::runtime_error);
+}
+
+TEST_CASE("grid background: self-similar continuation before the first frame") {
+  const GridBackground bg = linear_background(true);
+  const double t = 0.25;  // first frame at t = 1: u × (t)^(-1/2), T × t^(-1), scale × t^(1/2)
+  const WindowBound w = bg.bound(t);
+  CHECK(w.index == -1);
+  CHECK(w.t_begin <= t);
+  CHECK(t < w.t_end);
+  const double x = 0.5, scale = std::pow(t, 0.5);
+  const HostState h = bg.at(x * scale, t, w);
+  CHECK(h.n == Approx(1 + x).epsilon(1e-12));
+  CHECK(h.u == Approx(2 * x / std::sqrt(t)).epsilon(1e-12));
+  CHECK(h.T == Approx((1 + x) / t).epsilon(1e-12));
+  const WindowBound after = bg.bound(100.0);
+  CHECK(after.index == -2);
+  CHECK(after.t_begin <= 100.0);
+  CHECK(100.0 < after.t_end);
+}
+
+TEST_CASE("grid background: the majorant bounds hold at random points of every window") {
+  for (const bool enskog : {false, true}) {
+    const GridBackground bg = linear_background(true, enskog);
+    Random rng(1, enskog);
+    for (int i = 0; i < 20000; ++i) {
+      const double t = std::exp(-3 + 6 * rng.uniform());
+      const WindowBound w = bg.bound(t);
+      const double r = 1.2 * std::sqrt(t) * rng.uniform() * 3;
+      const HostState h = bg.at(r, t, w);
+      REQUIRE(h.n * h.chi <= w.n_chi_max * (1 + 1e-14));
+      REQUIRE(h.n * h.chi * (std::abs(h.u) + host_mean_speed(2, h.T)) <= w.flux_max * (1 + 1e-14));
+    }
+  }
+}
