@@ -62,27 +62,79 @@ GridBackground::GridBackground(int d, std::vector<double> x, double edge, std::v
   n_chi_max_ = n_inf_ * contact_.chi(n_inf_);
   for (const BackgroundFrame& f : frames_)
     for (const double n : f.n) n_chi_max_ = std::max(n_chi_max_, n * contact_.chi(n));
-  for (std::size_t k = 0; k + 1 < frames_.size(); ++k) window_flux_.push_back(pair_flux_bound(k, k + 1));
-  first_flux_ = pair_flux_bound(0, 0);
-  last_flux_ = pair_flux_bound(frames_.size() - 1, frames_.size() - 1);
+  band_width_ = std::max<std::size_t>(1, x_.size() / 64);
+  for (std::size_t k = 0; k + 1 < frames_.size(); ++k) window_bands_.push_back(band_bounds(k, k + 1));
+  first_bands_ = band_bounds(0, 0);
+  last_bands_ = band_bounds(frames_.size() - 1, frames_.size() - 1);
 }
 
 double GridBackground::t_last() const {
   return self_similar_after_ ? std::numeric_limits<double>::infinity() : frames_.back().t;
 }
 
-double GridBackground::pair_flux_bound(std::size_t k0, std::size_t k1) const {
+GridBackground::BandBounds GridBackground::band_bounds(std::size_t k0, std::size_t k1) const {
   const BackgroundFrame& a = frames_[k0];
   const BackgroundFrame& b = frames_[k1];
-  double bound = 0.0;
+  const std::size_t bands = (x_.size() + band_width_ - 1) / band_width_;
+  BandBounds out{std::vector<double>(bands + 1, 0.0), std::vector<double>(bands + 1, 0.0)};
   for (std::size_t i = 0; i < x_.size(); ++i) {
-    const std::size_t j = std::min(i + 1, x_.size() - 1);
+    const std::size_t j = std::min(i + 1, x_.size() - 1), band = i / band_width_;
     const double n = std::max({a.n[i], a.n[j], b.n[i], b.n[j]});
     const double u = std::max({std::abs(a.u[i]), std::abs(a.u[j]), std::abs(b.u[i]), std::abs(b.u[j])});
     const double T = std::max({a.T[i], a.T[j], b.T[i], b.T[j]});
-    bound = std::max(bound, n * contact_.chi(n) * (u + host_mean_speed(d_, T)));
+    const double n_chi = n * contact_.chi(n);
+    out.n_chi[band] = std::max(out.n_chi[band], n_chi);
+    out.flux[band] = std::max(out.flux[band], n_chi * (u + host_mean_speed(d_, T)));
   }
-  return bound;
+  out.n_chi[bands] = *std::max_element(out.n_chi.begin(), out.n_chi.end() - 1);
+  out.flux[bands] = *std::max_element(out.flux.begin(), out.flux.end() - 1);
+  return out;
+}
+
+double GridBackground::scale_at(const WindowBound& window, double t) const {
+  if (window.index >= 0) {
+    const BackgroundFrame& a = frames_[static_cast<std::size_t>(window.index)];
+    const BackgroundFrame& b = frames_[static_cast<std::size_t>(window.index) + 1];
+    const double w = std::log(t / a.t) / std::log(b.t / a.t);
+    return std::exp((1 - w) * std::log(a.scale) + w * std::log(b.scale));
+  }
+  const BackgroundFrame& f = window.index == -1 ? frames_.front() : frames_.back();
+  return f.scale * std::pow(t / f.t, 2.0 / (d_ + 2));
+}
+
+double GridBackground::bound_length(const WindowBound& window, double t) const {
+  return 2.0 * scale_at(window, t) * x_.back() * static_cast<double>(band_width_) / static_cast<double>(x_.size());
+}
+
+WindowBound GridBackground::local_bound(const WindowBound& window, double t, double t_end, double r_lo,
+                                        double r_hi) const {
+  const BandBounds& bands = window.index >= 0 ? window_bands_[static_cast<std::size_t>(window.index)]
+                            : window.index == -1 ? first_bands_
+                                                 : last_bands_;
+  // s(t) is monotone in t inside a window, so x = r/s over [t, t_end] lies in [r_lo/s_max, r_hi/s_min].
+  const double s0 = scale_at(window, t), s1 = scale_at(window, t_end);
+  const double x_lo = r_lo / std::max(s0, s1), x_hi = r_hi / std::min(s0, s1);
+  const auto pair_of = [&](double x) {
+    const auto upper = std::upper_bound(x_.begin(), x_.end(), x);
+    return upper == x_.begin() ? std::size_t{0} : static_cast<std::size_t>(upper - x_.begin()) - 1;
+  };
+  WindowBound local = window;
+  double n_chi = 0.0, flux = 0.0;
+  if (x_lo <= edge_) {
+    const std::size_t b0 = pair_of(x_lo) / band_width_, b1 = pair_of(std::min(x_hi, edge_)) / band_width_;
+    for (std::size_t b = b0; b <= b1; ++b) {
+      n_chi = std::max(n_chi, bands.n_chi[b]);
+      flux = std::max(flux, bands.flux[b]);
+    }
+  }
+  if (x_hi > edge_) n_chi = std::max(n_chi, n_inf_ * contact_.chi(n_inf_));  // ambient gas at rest, T = 0
+  // Self-similar continuation: u, c̄ scale by (t/t_frame)^(-d/(d+2)), largest at t.
+  const double fu = window.index >= 0 ? 1.0
+                                      : std::pow(t / (window.index == -1 ? frames_.front().t : frames_.back().t),
+                                                 -static_cast<double>(d_) / (d_ + 2));
+  local.n_chi_max = std::min(window.n_chi_max, n_chi);
+  local.flux_max = std::min(window.flux_max, fu * flux);
+  return local;
 }
 
 HostState GridBackground::frame_at(std::size_t k, double x, double fu) const {
@@ -138,7 +190,7 @@ WindowBound GridBackground::bound(double t) const {
     while (j > 1 && t0 * std::pow(q, -(j - 1)) <= t) --j;
     w.t_begin = t0 * std::pow(q, -j);
     w.t_end = j == 1 ? t0 : t0 * std::pow(q, -(j - 1));
-    w.flux_max = std::pow(w.t_begin / t0, exponent) * first_flux_;
+    w.flux_max = std::pow(w.t_begin / t0, exponent) * first_bands_.flux.back();
     w.index = -1;
     return w;
   }
@@ -147,7 +199,7 @@ WindowBound GridBackground::bound(double t) const {
       if (frames_.size() > 1 && t == tL) {  // the last instant of the data: the last pair's window
         w.t_begin = frames_[frames_.size() - 2].t;
         w.t_end = std::nextafter(tL, std::numeric_limits<double>::infinity());
-        w.flux_max = window_flux_.back();
+        w.flux_max = window_bands_.back().flux.back();
         w.index = static_cast<int>(frames_.size()) - 2;
         return w;
       }
@@ -159,7 +211,7 @@ WindowBound GridBackground::bound(double t) const {
     while (tL * std::pow(q, j + 1) <= t) ++j;
     w.t_begin = tL * std::pow(q, j);
     w.t_end = tL * std::pow(q, j + 1);
-    w.flux_max = std::pow(w.t_begin / tL, exponent) * last_flux_;
+    w.flux_max = std::pow(w.t_begin / tL, exponent) * last_bands_.flux.back();
     w.index = -2;
     return w;
   }
@@ -168,7 +220,7 @@ WindowBound GridBackground::bound(double t) const {
   const std::size_t k = static_cast<std::size_t>(upper - frames_.begin()) - 1;
   w.t_begin = frames_[k].t;
   w.t_end = frames_[k + 1].t;
-  w.flux_max = window_flux_[k];
+  w.flux_max = window_bands_[k].flux.back();
   w.index = static_cast<int>(k);
   return w;
 }

@@ -48,6 +48,16 @@ class Background {
   /// The window holding t (t_begin <= t < t_end); throws std::runtime_error where the background
   /// has no data.
   virtual WindowBound bound(double t) const = 0;
+  /// Tighter bounds for radii in [r_lo, r_hi] during [t, t_end] inside `window` (same t_end and
+  /// index as `window`); by default the window's own.
+  virtual WindowBound local_bound(const WindowBound& window, double /*t*/, double /*t_end*/, double /*r_lo*/,
+                                  double /*r_hi*/) const {
+    return window;
+  }
+  /// Radial reach worth one local bound at time t (a few bands of the grid); +inf if uniform.
+  virtual double bound_length(const WindowBound& /*window*/, double /*t*/) const {
+    return std::numeric_limits<double>::infinity();
+  }
   /// Earliest and latest time with data (the start of a self-similar extension is 0, its end +inf).
   virtual double t_first() const = 0;
   virtual double t_last() const = 0;
@@ -88,6 +98,9 @@ class GridBackground final : public Background {
   int dimension() const override { return d_; }
   HostState at(double r, double t, const WindowBound& window) const override;
   WindowBound bound(double t) const override;
+  WindowBound local_bound(const WindowBound& window, double t, double t_end, double r_lo,
+                          double r_hi) const override;
+  double bound_length(const WindowBound& window, double t) const override;
   double t_first() const override { return 0.0; }
   double t_last() const override;
   std::size_t frame_count() const { return frames_.size(); }
@@ -100,8 +113,14 @@ class GridBackground final : public Background {
   /// Fields of frame k at x (with the ambient and hold rules), velocity and temperature times
   /// the scale factors fu, fu².
   HostState frame_at(std::size_t k, double x, double fu) const;
-  /// max over cell pairs of [max n chi] × [max (|u| + c̄)] over frames k0 and k1.
-  double pair_flux_bound(std::size_t k0, std::size_t k1) const;
+  /// Per band of cell pairs (i, i+1): [max n chi] and [max n chi] × [max (|u| + c̄)] over the
+  /// four nodes of frames k0 and k1; the last entry of each is the maximum over all bands.
+  struct BandBounds {
+    std::vector<double> n_chi, flux;
+  };
+  BandBounds band_bounds(std::size_t k0, std::size_t k1) const;
+  /// Scale s(t) of window `window` (frame pair or self-similar continuation) and the velocity factor.
+  double scale_at(const WindowBound& window, double t) const;
   int d_;
   std::vector<double> x_;
   double edge_, n_inf_;
@@ -109,8 +128,9 @@ class GridBackground final : public Background {
   ContactModel contact_;
   bool self_similar_after_;
   double n_chi_max_ = 0.0;
-  std::vector<double> window_flux_;  // [k]: frames k, k+1
-  double first_flux_ = 0.0, last_flux_ = 0.0;
+  std::size_t band_width_ = 1;         // cell pairs per band
+  std::vector<BandBounds> window_bands_;  // [k]: frames k, k+1
+  BandBounds first_bands_, last_bands_;   // frame 0 alone, the last frame alone
 };
 
 }  // namespace coldblast::kinetic

@@ -70,16 +70,23 @@ void advance(const Background& background, const ImpurityModel& impurity, Tracer
              Random& rng, TracerCounters& counters) {
   const double S = impurity.cross_section();
   WindowBound window = background.bound(s.t);
-  double majorant = S * (window.n_chi_max * s.v.norm() + window.flux_max);
   while (true) {
-    const double t_stop = std::min(t_target, window.t_end);
+    // A segment: until the target, the window's end, or a radial reach of a few grid bands; its
+    // majorant bounds the rate over every radius the impurity can reach in it (predictable, so
+    // recomputing it after every candidate keeps the thinning exact).
+    const double speed = s.v.norm();
+    double t_segment = std::min(t_target, window.t_end);
+    if (speed > 0.0) t_segment = std::min(t_segment, s.t + background.bound_length(window, s.t) / speed);
+    const double radius0 = s.r.norm(), reach = speed * (t_segment - s.t);
+    const WindowBound local =
+        background.local_bound(window, s.t, t_segment, std::max(0.0, radius0 - reach), radius0 + reach);
+    const double majorant = S * (local.n_chi_max * speed + local.flux_max);
     const double dt = majorant > 0.0 ? rng.exponential() / majorant : std::numeric_limits<double>::infinity();
-    if (s.t + dt >= t_stop) {  // memoryless: stop at the window edge or target and redraw there
-      s.r += s.v * (t_stop - s.t);
-      s.t = t_stop;
-      if (t_stop >= t_target) return;
-      window = background.bound(s.t);
-      majorant = S * (window.n_chi_max * s.v.norm() + window.flux_max);
+    if (s.t + dt >= t_segment) {  // memoryless: stop at the segment's end and redraw there
+      s.r += s.v * (t_segment - s.t);
+      s.t = t_segment;
+      if (t_segment >= t_target) return;
+      if (t_segment >= window.t_end) window = background.bound(s.t);
       continue;
     }
     s.t += dt;
@@ -105,7 +112,6 @@ void advance(const Background& background, const ImpurityModel& impurity, Tracer
     binary_collision<D>(e, s.v, w, impurity.M);
     ++s.collisions;
     ++counters.collisions;
-    majorant = S * (window.n_chi_max * s.v.norm() + window.flux_max);
   }
 }
 

@@ -79,3 +79,23 @@ TEST_CASE("grid background: the majorant bounds hold at random points of every w
     }
   }
 }
+
+TEST_CASE("grid background: local bounds hold for every radius reachable in the segment") {
+  for (const bool enskog : {false, true}) {
+    const GridBackground bg = linear_background(true, enskog);
+    Random rng(2, enskog);
+    for (int i = 0; i < 20000; ++i) {
+      const double t = std::exp(-3 + 6 * rng.uniform());
+      const WindowBound w = bg.bound(t);
+      const double t_end = std::min(w.t_end, t * (1 + 0.3 * rng.uniform()));
+      const double r_lo = 1.2 * std::sqrt(t) * rng.uniform(), r_hi = r_lo + 0.3 * std::sqrt(t) * rng.uniform();
+      const WindowBound local = bg.local_bound(w, t, t_end, r_lo, r_hi);
+      REQUIRE(local.n_chi_max <= w.n_chi_max);
+      REQUIRE(local.flux_max <= w.flux_max);
+      const double tp = t + (t_end - t) * rng.uniform(), r = r_lo + (r_hi - r_lo) * rng.uniform();
+      const HostState h = bg.at(r, tp, w);
+      REQUIRE(h.n * h.chi <= local.n_chi_max * (1 + 1e-14));
+      REQUIRE(h.n * h.chi * (std::abs(h.u) + host_mean_speed(2, h.T)) <= local.flux_max * (1 + 1e-14));
+    }
+  }
+}
