@@ -3,10 +3,9 @@
 // kinetic::TracerConfig, calls kinetic::run_tracer and writes the `md run` run directory
 // (docs/kinetic.md). Shards are combined with `coldblast md merge`.
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "cli/commands.hpp"
+#include "common/input.hpp"
 #include "common/validate.hpp"
 #include "kinetic/tracer.hpp"
 #include "md/scenes.hpp"
@@ -26,21 +25,13 @@ struct TracerOptions {
   Format format = Format::table;
 };
 
-std::string read_scene_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("SCENE = " + path + " cannot be read");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 void run(TracerOptions& o) {
   std::vector<std::string> overrides = o.set;
   if (o.seed != -1) {
     common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
     overrides.push_back("seed=" + std::to_string(o.seed));
   }
-  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : read_scene_file(o.scene_file);
+  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : common::read_text(o.scene_file, "SCENE");
   kinetic::TracerConfig config = o.config;
   config.scene = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
   config.phi = o.phi;
@@ -81,7 +72,9 @@ void add_tracer_command(CLI::App& app) {
   c->add_option("--set", o->set, "Override a scene key: key=value (repeatable)");
   c->add_option("--background", o->config.background, "Host background: ns, tvns or equilibrium")
       ->capture_default_str();
-  c->add_option("--transport", o->config.transport, "Contact factor: dilute (chi = 1) or enskog (equilibrium only)")
+  c->add_option(
+       "--transport", o->config.transport,
+       "dilute (chi = 1; ideal-gas Navier-Stokes) or enskog (chi(n) at contact; dense Navier-Stokes; not with tvns)")
       ->capture_default_str();
   c->add_option("--trajectories", o->config.trajectories,
                 "Impurity trajectories (0 = the scene's realizations x impurities.count)")

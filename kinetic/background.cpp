@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/validate.hpp"
+#include "hydro/equation_of_state.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "theory/prefactors.hpp"
 
@@ -15,7 +16,11 @@ using common::format_number;
 
 double ContactModel::chi(double n) const {
   if (!enskog) return 1.0;
-  return pair_contact_value(d, n * theory::unit_ball_volume(d) * std::pow(a, d), a, a_imp);
+  const double phi = n * theory::unit_ball_volume(d) * std::pow(a, d);
+  // Equal radii: hydro's contact value, the one the dense Navier–Stokes solver uses (consistent
+  // with Z = 1 + 2^(d-1) φ χ); unequal radii: the mixture contact value of kinetic_theory.hpp.
+  if (a_imp == a) return hydro::contact_value(d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling, phi);
+  return pair_contact_value(d, phi, a, a_imp);
 }
 
 double host_mean_speed(int d, double T) {
@@ -108,7 +113,7 @@ double GridBackground::bound_length(const WindowBound& window, double t) const {
 
 WindowBound GridBackground::local_bound(const WindowBound& window, double t, double t_end, double r_lo,
                                         double r_hi) const {
-  const BandBounds& bands = window.index >= 0 ? window_bands_[static_cast<std::size_t>(window.index)]
+  const BandBounds& bands = window.index >= 0    ? window_bands_[static_cast<std::size_t>(window.index)]
                             : window.index == -1 ? first_bands_
                                                  : last_bands_;
   // s(t) is monotone in t inside a window, so x = r/s over [t, t_end] lies in [r_lo/s_max, r_hi/s_min].

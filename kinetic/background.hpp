@@ -98,8 +98,7 @@ class GridBackground final : public Background {
   int dimension() const override { return d_; }
   HostState at(double r, double t, const WindowBound& window) const override;
   WindowBound bound(double t) const override;
-  WindowBound local_bound(const WindowBound& window, double t, double t_end, double r_lo,
-                          double r_hi) const override;
+  WindowBound local_bound(const WindowBound& window, double t, double t_end, double r_lo, double r_hi) const override;
   double bound_length(const WindowBound& window, double t) const override;
   double t_first() const override { return 0.0; }
   double t_last() const override;
@@ -128,7 +127,7 @@ class GridBackground final : public Background {
   ContactModel contact_;
   bool self_similar_after_;
   double n_chi_max_ = 0.0;
-  std::size_t band_width_ = 1;         // cell pairs per band
+  std::size_t band_width_ = 1;            // cell pairs per band
   std::vector<BandBounds> window_bands_;  // [k]: frames k, k+1
   BandBounds first_bands_, last_bands_;   // frame 0 alone, the last frame alone
 };

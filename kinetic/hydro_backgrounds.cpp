@@ -21,10 +21,20 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   ns.physics.n_inf = scene.n;
   ns.physics.a = scene.a;
   ns.numerics.cells = cells;
+  if (contact.enskog) {  // the dense gas of issue 12: hard-particle EOS at the scene's φ, Enskog transport
+    ns.physics.eos = scene.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    ns.physics.phi = theory::packing_fraction(scene.d, scene.n, scene.a);
+    ns.physics.transport = hydro::Transport::enskog;
+  }
   const double lambda = theory::mean_free_path(scene.d, scene.n, scene.a);
-  // R_ref(t) of the grid uses the ideal-gas A_d (hydro/navier_stokes.cpp); go 5 % beyond t_max.
-  const hydro::TvnsSolution ideal = hydro::solve_tvns(hydro::TvnsConfig{scene.d});
-  const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, ideal.A()};
+  // R_ref(t) of the grid uses the TvNS A_d of the same EOS (hydro/navier_stokes.cpp); go 5 % beyond t_max.
+  hydro::TvnsConfig tvns_config;
+  tvns_config.d = scene.d;
+  tvns_config.eos = ns.physics.eos;
+  tvns_config.phi = ns.physics.phi;
+  tvns_config.tolerance = 1e-10;
+  const hydro::TvnsSolution reference = hydro::solve_tvns(tvns_config);
+  const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, reference.A()};
   const double start = ns.numerics.start_R_over_lambda;
   const double until = theory::shock_radius(p, 1.05 * scene.t_max) / lambda;
   if (!(until > start * 1.01))
@@ -53,10 +63,13 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
     throw std::runtime_error("the Navier–Stokes background ends at t = " + format_number(frames.back().t) +
                              " before t_max = " + format_number(scene.t_max));
   if (description)
-    *description = "Navier-Stokes core (dilute, heat conduction, " + std::to_string(cells) + " cells), " +
-                   std::to_string(frames.size()) + " frames from R/lambda = " + format_number(start * ratio) + " to " +
-                   format_number(until) + ", t in [" + format_number(frames.front().t) + ", " +
-                   format_number(frames.back().t) + "]";
+    *description = std::string("Navier-Stokes core (") +
+                   (contact.enskog ? "dense: " + hydro::to_string(ns.physics.eos) +
+                                         " EOS at phi = " + format_number(ns.physics.phi) + ", Enskog transport"
+                                   : std::string("dilute")) +
+                   ", heat conduction, " + std::to_string(cells) + " cells), " + std::to_string(frames.size()) +
+                   " frames from R/lambda = " + format_number(start * ratio) + " to " + format_number(until) +
+                   ", t in [" + format_number(frames.front().t) + ", " + format_number(frames.back().t) + "]";
   const double edge = x.back();
   return std::make_unique<GridBackground>(scene.d, std::move(x), edge, std::move(frames), scene.n, contact, false);
 }

@@ -10,9 +10,10 @@
 
 namespace coldblast::kinetic {
 
-/// Navier–Stokes core run (conduction only, as `coldblast hydro core`; dilute ideal gas) from
-/// R/λ = 2 to 1.05 × R(t_max)/λ; its profiles become the frames. Throws std::runtime_error when
-/// the solution does not reach t_max (the missing-background error of `coldblast tracer`).
+/// Navier–Stokes core run (conduction only, as `coldblast hydro core`) from R/λ = 2 to
+/// 1.05 × R(t_max)/λ; its profiles become the frames. Dilute ideal gas, or with contact.enskog the
+/// dense gas of issue 12 (Henderson / Carnahan–Starling EOS at the scene's φ, Enskog transport). Throws
+/// std::runtime_error when the solution does not reach t_max (the missing-background error of `coldblast tracer`).
 std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastConfig& scene, const ContactModel& contact,
                                                               int frames_per_decade, int cells,
                                                               std::string* description = nullptr);

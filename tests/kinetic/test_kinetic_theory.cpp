@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "hydro/equation_of_state.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "md/equilibrium.hpp"
 
@@ -59,6 +60,10 @@ TEST_CASE("pair contact value: Henderson and Carnahan-Starling through Z = 1 + 2
     CHECK(1 + 2 * phi * pair_contact_value(2, phi, 0.5, 0.5) == Approx(coldblast::md::henderson_Z(phi)).epsilon(1e-14));
     CHECK(1 + 4 * phi * pair_contact_value(3, phi, 0.5, 0.5) ==
           Approx(coldblast::md::carnahan_starling_Z(phi)).epsilon(1e-14));
+    CHECK(pair_contact_value(2, phi, 0.5, 0.5) ==
+          Approx(coldblast::hydro::contact_value(coldblast::hydro::Eos::henderson, phi)).epsilon(1e-14));
+    CHECK(pair_contact_value(3, phi, 0.5, 0.5) ==
+          Approx(coldblast::hydro::contact_value(coldblast::hydro::Eos::carnahan_starling, phi)).epsilon(1e-14));
     // A point impurity (a_imp -> 0) sees the wall contact value 1/(1-phi) of scaled-particle theory's first term.
     CHECK(pair_contact_value(3, phi, 0.5, 0.0) == Approx(1 / (1 - phi)).epsilon(1e-14));
     // Larger impurities see a larger contact value.

@@ -106,7 +106,7 @@ TEST_CASE("tracer: bad input names the option") {
   c.T = 1.0;
   c.phi = 0.8;
   CHECK(message(c).find("--phi") != std::string::npos);
-  c = small_config("ns");
+  c = small_config("tvns");
   c.transport = "enskog";
   CHECK(message(c).find("--transport") != std::string::npos);
   c = small_config("ns");
