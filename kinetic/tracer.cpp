@@ -193,11 +193,10 @@ void TracerConfig::validate() const {
     throw std::invalid_argument("--background = " + background + " is not one of: ns, tvns, equilibrium");
   if (transport != "dilute" && transport != "enskog")
     throw std::invalid_argument("--transport = " + transport + " is not one of: dilute, enskog");
-  if (transport == "enskog" && background != "equilibrium")
+  if (transport == "enskog" && background == "tvns")
     throw std::invalid_argument(
-        "--transport = enskog needs the dense Navier–Stokes background, which is not "
-        "available yet; allowed with --background " +
-        background + ": dilute");
+        "--transport = enskog is not available with --background tvns (the ideal-gas "
+        "Euler solution); allowed: dilute");
   if (start != "kick" && start != "thermal")
     throw std::invalid_argument("--start = " + start + " is not one of: kick, thermal");
   common::require_integer_in_range("--trajectories", trajectories, 0, 1000000000000LL, " (0 = scene default)");
