@@ -183,6 +183,7 @@ void run_core(const HydroOptions& options) {
                 {"kappa_prefactor", r.kappa_prefactor},
                 {"viscosity_prefactor", r.viscosity_prefactor},
                 {"energy_error", r.max_energy_error},
+                {"energy_drift_before_projection", r.energy_projected},
                 {"cells", config.numerics.cells},
                 {"wall_seconds", r.statistics.wall_seconds},
                 {"rhs_evaluations", r.statistics.rhs_evaluations}});
@@ -200,8 +201,10 @@ void run_core(const HydroOptions& options) {
       "prefactors: H/(lambda x^h_d) = %.4f, n0/(n_inf x^-2d^2/(8+3d^2)) = %.4f, T0/(Rdot^2 x^2d^2/(8+3d^2)) = "
       "%.4f (x = R/lambda)\n",
       s.H_prefactor, s.n0_prefactor, s.T0_prefactor);
-  std::printf("central pressure p0/(n_inf Rdot^2) = %.4f; energy error %.2e; %.2f s, %ld RHS evaluations\n",
-              s.p0_scaled, r.max_energy_error, r.statistics.wall_seconds, r.statistics.rhs_evaluations);
+  std::printf(
+      "central pressure p0/(n_inf Rdot^2) = %.4f; energy error %.2e (drift before projection %.2e); %.2f s, "
+      "%ld RHS evaluations\n",
+      s.p0_scaled, r.max_energy_error, r.energy_projected, r.statistics.wall_seconds, r.statistics.rhs_evaluations);
 }
 
 void run_euler(const HydroOptions& options) {
@@ -221,6 +224,7 @@ void run_euler(const HydroOptions& options) {
           config.until_R_over_lambda / (config.numerics.start_R_over_lambda * config.numerics.initial_width)},
          {"cells", config.numerics.cells},
          {"energy_error", r.max_energy_error},
+         {"energy_drift_before_projection", r.energy_projected},
          {"wall_seconds", r.statistics.wall_seconds}});
     return;
   }
@@ -231,8 +235,8 @@ void run_euler(const HydroOptions& options) {
   std::printf("  A measured %.7f  exact %.7f  relative error %+.2e\n", c.A_measured, c.A_exact, c.A_relative_error);
   std::printf("  profile L1 errors: density %.2e  velocity %.2e  pressure %.2e\n", c.L1_density, c.L1_velocity,
               c.L1_pressure);
-  std::printf("  energy error %.2e; %.2f s, %ld RHS evaluations\n", r.max_energy_error, r.statistics.wall_seconds,
-              r.statistics.rhs_evaluations);
+  std::printf("  energy error %.2e (drift before projection %.2e); %.2f s, %ld RHS evaluations\n", r.max_energy_error,
+              r.energy_projected, r.statistics.wall_seconds, r.statistics.rhs_evaluations);
 }
 
 void add_common_options(CLI::App& command, HydroOptions& options, const char* until_help) {

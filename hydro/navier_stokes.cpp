@@ -4,11 +4,7 @@
 // Toro, "Riemann Solvers and Numerical Methods for Fluid Dynamics" (2009), Sec. 10.4 (HLLC).
 #include "hydro/navier_stokes.hpp"
 
-#include <cvode/cvode.h>
-#include <cvode/cvode_proj.h>
 #include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_band.h>
-#include <sunmatrix/sunmatrix_band.h>
 
 #include <algorithm>
 #include <chrono>
@@ -17,9 +13,10 @@
 #include <stdexcept>
 
 #include "common/validate.hpp"
+#include "hydro/cvode_bdf.hpp"
 #include "hydro/enskog.hpp"
-#include "hydro/sundials_handles.hpp"
 #include "hydro/tvns.hpp"
+#include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::hydro {
@@ -81,6 +78,7 @@ class Blast {
         n_inf_(config.physics.n_inf),
         eos_(config.physics.eos),
         enskog_(config.physics.transport == Transport::enskog),
+        frozen_(config.physics.frozen_flow),
         phi_inf_(config.physics.resolved_phi()),
         phi_close_packing_(close_packing_fraction(eos_)),
         Z_inf_(compressibility(eos_, phi_inf_)),
@@ -136,10 +134,10 @@ class Blast {
     return true;
   }
 
-  /// Eq. (1) [R-shock] with the reference amplitude: R_ref(t) = (E t²/(A n∞))^(1/(d+2)).
-  double reference_radius(double t) const { return std::pow(E_ * t * t / (A_ref_ * n_inf_), 1.0 / (d_ + 2)); }
-  double time_of(double R) const { return std::sqrt(A_ref_ * n_inf_ * std::pow(R, d_ + 2) / E_); }
-  double shock_speed(double t) const { return 2.0 * reference_radius(t) / ((d_ + 2) * t); }
+  /// Eq. (1) [R-shock] with the reference amplitude: R_ref(t) = (E t²/(A n∞))^(1/(d+2)), its inverse and Ṙ_ref.
+  double reference_radius(double t) const { return theory::shock_radius(d_, E_, n_inf_, A_ref_, t); }
+  double time_of(double R) const { return theory::shock_time(d_, E_, n_inf_, A_ref_, R); }
+  double shock_speed(double t) const { return theory::shock_speed_at(d_, reference_radius(t), t); }
   /// Outer grid edge L(t) = margin R_ref(t); faces sit at r = ξ L(t).
   double outer_radius(double t) const { return margin_ * reference_radius(t); }
   double ball_volume(double r) const { return omega_ * std::pow(r, d_); }
@@ -210,51 +208,91 @@ class Blast {
     return true;
   }
 
-  /// d/dt of the cell totals; returns 1 (recoverable) when a trial state is not positive.
+  /// d/dt of the cell totals; returns 1 (recoverable) when a trial state is not positive or packs
+  /// the gas beyond close packing.
   int rhs(double t, const double* y, double* ydot) {
     if (!primitives(t, y)) return 1;
+    if (!hydrodynamic_fluxes(t)) return 1;
+    transport_fluxes();
+    assemble(ydot);
+    return 0;
+  }
+
+  const std::vector<double>& radii() const { return r_; }
+  const std::vector<double>& density() const { return n_; }
+  const std::vector<double>& velocity() const { return u_; }
+  const std::vector<double>& temperature() const { return T_; }
+  const std::vector<double>& pressure() const { return p_; }
+  /// Heat flux at cell centres (average of the two face fluxes), valid after rhs().
+  double heat_flux(int i) const { return 0.5 * (heat_[i] + heat_[i + 1]); }
+  bool frozen_flow() const { return frozen_; }
+
+ private:
+  /// Reconstructed variable k of q = (ln n, u, ln p) in cell i; ghosts: mirror at r = 0, cold gas at rest outside.
+  double q(double t, int i, int k) const {
+    if (i < 0) return k == 0 ? std::log(n_[0]) : k == 1 ? -u_[0] : std::log(p_[0]);
+    if (i >= cells_) return k == 0 ? std::log(n_inf_) : k == 1 ? 0.0 : std::log(pressure_inf(t));
+    return k == 0 ? std::log(n_[i]) : k == 1 ? u_[i] : std::log(p_[i]);
+  }
+
+  /// Cell centres with ghosts (centre_[i + 1] is cell i) and van Leer limited slopes of q.
+  void reconstruct(double t) {
     const int N = cells_;
-    const double Ldot = shock_speed(t);  // face j moves with ξ_j dR_ref/dt
     std::vector<double>& centre = centre_;
-    centre.resize(N + 2);  // centre[i + 1] is cell i; ghosts at both ends
+    centre.resize(N + 2);
     for (int i = 0; i < N; ++i) centre[i + 1] = 0.5 * (r_[i] + r_[i + 1]);
     centre[0] = -centre[1];
     centre[N + 1] = 2 * r_[N] - centre[N];
-    // Limited slopes of q = (ln n, u, ln p); ghosts: mirror at r = 0, cold gas at rest outside.
-    auto q = [&](int i, int k) -> double {
-      if (i < 0) return k == 0 ? std::log(n_[0]) : k == 1 ? -u_[0] : std::log(p_[0]);
-      if (i >= N) return k == 0 ? std::log(n_inf_) : k == 1 ? 0.0 : std::log(pressure_inf(t));
-      return k == 0 ? std::log(n_[i]) : k == 1 ? u_[i] : std::log(p_[i]);
-    };
     for (int i = 0; i < N; ++i)
       for (int k = 0; k < 3; ++k) {
-        const double left = (q(i, k) - q(i - 1, k)) / (centre[i + 1] - centre[i]);
-        const double right = (q(i + 1, k) - q(i, k)) / (centre[i + 2] - centre[i + 1]);
+        const double left = (q(t, i, k) - q(t, i - 1, k)) / (centre[i + 1] - centre[i]);
+        const double right = (q(t, i + 1, k) - q(t, i, k)) / (centre[i + 2] - centre[i + 1]);
         slope_[3 * i + k] = van_leer(left, right);
       }
-    auto face_state = [&](int i, double r) {
-      const double dr = r - centre[i + 1];
-      return State{std::exp(q(i, 0) + slope_[3 * i] * dr), q(i, 1) + slope_[3 * i + 1] * dr,
-                   std::exp(q(i, 2) + slope_[3 * i + 2] * dr)};
-    };
+  }
+
+  State face_state(double t, int i, double r) const {
+    const double dr = r - centre_[i + 1];
+    return State{std::exp(q(t, i, 0) + slope_[3 * i] * dr), q(t, i, 1) + slope_[3 * i + 1] * dr,
+                 std::exp(q(t, i, 2) + slope_[3 * i + 2] * dr)};
+  }
+
+  /// HLLC fluxes F - wU through the faces moving with w = ξ_j dR_ref/dt; frozen flow (u ≡ 0, the
+  /// heat-wave verification) keeps only the faces' sweep -wU of the upwind (outer) state.
+  bool hydrodynamic_fluxes(double t) {
+    const int N = cells_;
+    const double Ldot = shock_speed(t);
+    reconstruct(t);
     for (int j = 0; j <= N; ++j) {
       const double w = xi_[j] * Ldot;
       State left, right;
       if (j == 0) {
-        right = face_state(0, 0.0);
+        right = face_state(t, 0, 0.0);
         left = State{right.n, -right.u, right.p};
       } else {
-        left = face_state(j - 1, r_[j]);
-        right = j == N ? State{n_inf_, 0.0, pressure_inf(t)} : face_state(j, r_[j]);
+        left = face_state(t, j - 1, r_[j]);
+        right = j == N ? State{n_inf_, 0.0, pressure_inf(t)} : face_state(t, j, r_[j]);
       }
-      if (!complete_state(left) || !complete_state(right)) return 1;  // a face state beyond close packing
-      hllc_flux(left, right, w, &flux_[components * j]);
+      if (!complete_state(left) || !complete_state(right)) return false;  // a face state beyond close packing
+      double* F = &flux_[components * j];
+      if (frozen_) {
+        F[0] = -w * right.n;
+        F[1] = 0.0;
+        F[2] = -w * right.total;  // u ≡ 0: internal energy only
+      } else {
+        hllc_flux(left, right, w, F);
+      }
     }
-    // Eq. (13) [entropy-heat] right-hand side as a flux: q = -κ(T) ∂T/∂r at interior faces.
+    return true;
+  }
+
+  /// Eq. (13) [entropy-heat] right-hand side as a flux, q = -κ(T) ∂T/∂r, and the viscous stress τ_rr
+  /// at interior faces (Enskog factors at the face's mean density).
+  void transport_fluxes() {
     std::fill(heat_.begin(), heat_.end(), 0.0);
     std::fill(stress_.begin(), stress_.end(), 0.0);
-    for (int j = 1; j < N; ++j) {
-      const double dr = centre[j + 1] - centre[j];
+    for (int j = 1; j < cells_; ++j) {
+      const double dr = centre_[j + 1] - centre_[j];
       const double T_face = 0.5 * (T_[j - 1] + T_[j]);
       const EnskogFactors f =
           enskog_ ? enskog_factors(d_, packing_fraction(0.5 * (n_[j - 1] + n_[j]))) : EnskogFactors{};
@@ -272,6 +310,21 @@ class Blast {
           stress_[j] = mu_ * std::sqrt(T_face) * (f.shear * (2 * dudr - 2.0 / d_ * divergence) + f.bulk * divergence);
       }
     }
+  }
+
+  /// Hoop stress τ_θθ at the centre of cell i, from the face-averaged velocities.
+  double hoop_stress(int i, double u_in, double u_out) const {
+    const double dudr = (u_out - u_in) / (r_[i + 1] - r_[i]);
+    const double rc = centre_[i + 1];
+    if (!enskog_) return mu_ * std::sqrt(T_[i]) * (2 * u_[i] / rc - 2.0 / d_ * (dudr + (d_ - 1) * u_[i] / rc));
+    const EnskogFactors f = enskog_factors(d_, packing_fraction(n_[i]));
+    const double divergence = dudr + (d_ - 1) * u_[i] / rc;
+    return mu_ * std::sqrt(T_[i]) * (f.shear * (2 * u_[i] / rc - 2.0 / d_ * divergence) + f.bulk * divergence);
+  }
+
+  /// d/dt of the cell totals from the face fluxes, the geometric pressure term and the stresses.
+  void assemble(double* ydot) const {
+    const int N = cells_;
     for (int i = 0; i < N; ++i) {
       const double A_in = face_area(r_[i]), A_out = face_area(r_[i + 1]);
       const double* F_in = &flux_[components * i];
@@ -279,36 +332,19 @@ class Blast {
       double* out = ydot + components * i;
       out[0] = A_in * F_in[0] - A_out * F_out[0];
       // ∫ (d-1) p/r dV over the cell = p (A_out - A_in): uniform pressure at rest stays at rest
-      out[1] = A_in * F_in[1] - A_out * F_out[1] + p_[i] * (A_out - A_in);
+      out[1] = frozen_ ? 0.0 : A_in * F_in[1] - A_out * F_out[1] + p_[i] * (A_out - A_in);
       out[2] = A_in * F_in[2] - A_out * F_out[2] + A_in * heat_[i] - A_out * heat_[i + 1];
       if (mu_ > 0) {
         const double u_in = i == 0 ? 0.0 : 0.5 * (u_[i - 1] + u_[i]);
         const double u_out = i == N - 1 ? 0.5 * u_[i] : 0.5 * (u_[i] + u_[i + 1]);
-        const double dudr = (u_out - u_in) / (r_[i + 1] - r_[i]);
-        const double rc = centre[i + 1];
-        double tau_tt = mu_ * std::sqrt(T_[i]) * (2 * u_[i] / rc - 2.0 / d_ * (dudr + (d_ - 1) * u_[i] / rc));
-        if (enskog_) {
-          const EnskogFactors f = enskog_factors(d_, packing_fraction(n_[i]));
-          const double divergence = dudr + (d_ - 1) * u_[i] / rc;
-          tau_tt = mu_ * std::sqrt(T_[i]) * (f.shear * (2 * u_[i] / rc - 2.0 / d_ * divergence) + f.bulk * divergence);
-        }
+        const double tau_tt = hoop_stress(i, u_in, u_out);
         out[1] += A_out * stress_[i + 1] - A_in * stress_[i] - tau_tt * (A_out - A_in);
         const double u_face_out = i == N - 1 ? 0.0 : 0.5 * (u_[i] + u_[i + 1]);
         out[2] += A_out * u_face_out * stress_[i + 1] - A_in * u_in * stress_[i];
       }
     }
-    return 0;
   }
 
-  const std::vector<double>& radii() const { return r_; }
-  const std::vector<double>& density() const { return n_; }
-  const std::vector<double>& velocity() const { return u_; }
-  const std::vector<double>& temperature() const { return T_; }
-  const std::vector<double>& pressure() const { return p_; }
-  /// Heat flux at cell centres (average of the two face fluxes), valid after rhs().
-  double heat_flux(int i) const { return 0.5 * (heat_[i] + heat_[i + 1]); }
-
- private:
   /// Faces in ξ = r/R_ref ∈ [0, margin] equidistributing the cell density
   ///   φ(ξ) = 1/(ξ_c + ξ) + B + S b(ξ),
   /// logarithmic for ξ_c ≲ ξ ≲ 1/B (the core), uniform beyond, and refined by S in the band
@@ -351,7 +387,7 @@ class Blast {
   int d_;
   double gamma_, E_, n_inf_;
   Eos eos_;
-  bool enskog_;
+  bool enskog_, frozen_;
   double phi_inf_, phi_close_packing_, Z_inf_;
   double lambda_, A_ref_, margin_, omega_;
   int cells_ = 0;
@@ -478,8 +514,8 @@ double default_core_resolution(const NavierStokesConfig& config) {
   const int d = config.physics.d;
   const bool euler = !config.physics.heat_conduction && !config.physics.viscosity;
   if (euler) return 0.02;
-  // H/R ≈ (R/λ)^(-4/(8+3d²)) (Eq. (4) [size-dim]); a tenth of it keeps ~20 cells inside the core.
-  const double H_over_R = std::pow(config.until_R_over_lambda, -4.0 / (8.0 + 3.0 * d * d));
+  // H/R ≈ (R/λ)^(h_d - 1) = (R/λ)^(-4/(8+3d²)) (Eq. (4) [size-dim]); a tenth of it keeps ~20 cells in the core.
+  const double H_over_R = std::pow(config.until_R_over_lambda, theory::to_double(theory::h_d(d) - 1));
   return std::clamp(0.1 * H_over_R, 1e-4, 0.05);
 }
 
@@ -553,6 +589,9 @@ void NavierStokesConfig::validate() const {
   using common::Bound;
   common::require_integer_in_range("d", physics.d, 1, 3);
   validate_dense_physics(physics);
+  if (physics.frozen_flow && (!physics.heat_conduction || physics.viscosity))
+    throw std::invalid_argument(
+        "frozen_flow = true is the heat-wave check: it needs heat_conduction = true and viscosity = false");
   common::require_in_range("E", physics.E, 0, std::numeric_limits<double>::infinity());
   common::require_in_range("n_inf", physics.n_inf, 0, std::numeric_limits<double>::infinity());
   common::require_in_range("a", physics.a, 0, std::numeric_limits<double>::infinity());
@@ -622,10 +661,15 @@ RunningExponents NavierStokesResult::final_exponents() const {
   return *closest;
 }
 
-NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const NavierStokesProgress& progress) {
-  namespace sh = sundials_handles;
+namespace {
+
+/// The library's policy for the options left unset: φ∞ (resolved_phi), the grid's core resolution
+/// and shock band, the transport prefactors; and the TvNS amplitude that scales the grid.
+NavierStokesResult resolve_defaults(const NavierStokesConfig& input) {
   input.validate();
-  NavierStokesConfig config = input;
+  NavierStokesResult result;
+  NavierStokesConfig& config = result.config;
+  config = input;
   const int d = config.physics.d;
   config.physics.phi = config.physics.resolved_phi();
   if (!config.numerics.core_resolution) config.numerics.core_resolution = default_core_resolution(config);
@@ -634,8 +678,6 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     const bool euler = !config.physics.heat_conduction && !config.physics.viscosity;
     config.numerics.shock_band_fraction = euler ? 0.75 : 0.25;
   }
-  NavierStokesResult result;
-  result.config = config;
   result.kappa_prefactor =
       config.physics.heat_conduction ? config.physics.kappa_prefactor.value_or(chapman_enskog_kappa_prefactor(d)) : 0.0;
   result.viscosity_prefactor = config.physics.viscosity
@@ -647,169 +689,154 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
   tvns_config.phi = config.physics.phi;
   tvns_config.tolerance = 1e-10;
   result.A_reference = solve_tvns(tvns_config).A();  // sets the grid scale R_ref(t) only
+  return result;
+}
 
-  Blast blast(config, result.kappa_prefactor, result.viscosity_prefactor, result.A_reference);
-  const double lambda = blast.lambda();
-  result.lambda = lambda;
-  const int N = blast.cells();
-  const int size = components * N;
+struct Output {
+  double t;
+  bool sample, profile;
+};
 
-  // Output times: samples log-spaced in R_ref/λ ending exactly at `until` plus two beyond it (for the
-  // centred differences), and the requested profile times.
+/// Output times: samples log-spaced in R_ref/λ ending exactly at `until` plus two beyond it (for the
+/// centred differences), and the requested profile times, in increasing order.
+std::vector<Output> output_plan(const Blast& blast, const NavierStokesConfig& config) {
   const int per_decade = config.numerics.samples_per_decade;
   const double start = config.numerics.start_R_over_lambda, until = config.until_R_over_lambda;
-  struct Output {
-    double t;
-    bool sample, profile;
-  };
+  const double lambda = blast.lambda();
   std::vector<Output> outputs;
   const int before = static_cast<int>(std::floor(per_decade * std::log10(until / start) - 1e-9));
   for (int k = -before; k <= 2; ++k)
     outputs.push_back({blast.time_of(until * std::pow(10.0, double(k) / per_decade) * lambda), true, k == 0});
   for (double R : config.numerics.profile_R_over_lambda) outputs.push_back({blast.time_of(R * lambda), false, true});
   std::sort(outputs.begin(), outputs.end(), [](const Output& x, const Output& y) { return x.t < y.t; });
-  const double t_end_profile = blast.time_of(until * lambda);
+  return outputs;
+}
 
-  sundials::Context context;
-  sh::Vector y(sh::check_created(N_VNew_Serial(size, context), "N_VNew_Serial"));
-  sh::Vector constraints(sh::check_created(N_VNew_Serial(size, context), "N_VNew_Serial"));
-  const double t0 = blast.time_of(start * lambda);
-  blast.initial_state(t0, config.numerics.initial_width, N_VGetArrayPointer(y.get()));
-  double* constraint = N_VGetArrayPointer(constraints.get());
+/// The CVODE problem of the semi-discrete blast: initial state, positivity constraints, callbacks.
+CvodeProblem cvode_problem(const Blast& blast, const NavierStokesConfig& config, UserData& user) {
+  const int N = blast.cells();
+  CvodeProblem problem;
+  problem.t0 = blast.time_of(config.numerics.start_R_over_lambda * blast.lambda());
+  problem.y0.resize(components * N);
+  blast.initial_state(problem.t0, config.numerics.initial_width, problem.y0.data());
+  problem.constraints.assign(components * N, 2.0);                            // mass, energy > 0
+  for (int i = 0; i < N; ++i) problem.constraints[components * i + 1] = 0.0;  // momentum free
+  problem.rhs = cvode_rhs;
+  problem.error_weights = error_weights;
+  problem.projection = config.numerics.project_totals ? project_totals : nullptr;
+  problem.user_data = &user;
+  problem.half_bandwidth = 3 * components - 1;  // cell i couples to cells i-2..i+2
+  return problem;
+}
+
+/// Why a step failed: the time, R_ref/λ and, if the flow tried to pack the gas, the φ it reached.
+std::string failure_context(const Blast& blast, double t) {
+  std::string text = " at t = " + common::format_number(t) +
+                     " (R_ref/lambda = " + common::format_number(blast.reference_radius(t) / blast.lambda()) + ")";
+  if (blast.packing_exceeded() >= blast.close_packing())
+    text += "; the flow tried to compress the gas to phi = " + common::format_number(blast.packing_exceeded()) +
+            ", beyond close packing " + common::format_number(blast.close_packing());
+  return text;
+}
+
+/// Shock radius (conservative, with the half-height crossing as fallback and grid-exit check).
+double measure_shock_radius(const Blast& blast, const double* state, const std::vector<double>& centres, double n_inf,
+                            double t) {
+  const std::vector<double>& n = blast.density();
+  const int N = blast.cells();
+  const int peak = static_cast<int>(std::max_element(n.begin(), n.end()) - n.begin());
+  const double R_crossing = crossing_radius(centres, n, peak, 0.5 * (n_inf + n[peak]), true);
+  if (!std::isfinite(R_crossing) || R_crossing > 0.97 * blast.radii()[N])
+    throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) +
+                             ", R_ref/lambda = " + common::format_number(blast.reference_radius(t) / blast.lambda()) +
+                             " (heat conduction outruns the shock when R/lambda is ~1 or kappa is large: start "
+                             "later, or raise outer_margin)");
+  const double R = conservative_shock_radius(blast, state, peak, n_inf);
+  return std::isfinite(R) ? R : R_crossing;
+}
+
+/// Diagnostics of the state at time t (blast.rhs(t, state) must have been evaluated).
+NavierStokesSample measure_sample(const Blast& blast, const double* state, const std::vector<double>& centres,
+                                  const NavierStokesConfig& config, double t) {
+  const int d = config.physics.d, N = blast.cells();
+  const double lambda = blast.lambda(), n_inf = config.physics.n_inf;
+  const std::vector<double>& n = blast.density();
+  const std::vector<double>& T = blast.temperature();
+  NavierStokesSample sample;
+  sample.t = t;
+  sample.R = blast.frozen_flow() ? blast.reference_radius(t) : measure_shock_radius(blast, state, centres, n_inf, t);
+  sample.R_over_lambda = sample.R / lambda;
+  sample.n0 = n[0];
+  sample.T0 = T[0];
+  sample.p0 = blast.pressure()[0];  // n0 T0 Z(φ0); n0 T0 for the ideal gas
+  sample.H = crossing_radius(centres, T, 0, 0.5 * T[0], true);
+  sample.H_density = crossing_radius(centres, n, 0, 2.0 * n[0], false);
   for (int i = 0; i < N; ++i) {
-    constraint[components * i] = 2.0;      // mass > 0
-    constraint[components * i + 1] = 0.0;  // momentum free
-    constraint[components * i + 2] = 2.0;  // energy > 0
+    sample.mass += state[components * i];
+    sample.energy += state[components * i + 2];
   }
-  ErrorWeights weights{config.numerics.relative_tolerance};
-  sh::CvodeMemory cvode(sh::check_created(CVodeCreate(CV_BDF, context), "CVodeCreate"));
-  void* memory = cvode.get();
-  sh::check_cvode(CVodeInit(memory, cvode_rhs, t0, y.get()), "CVodeInit");
-  sh::check_cvode(CVodeWFtolerances(memory, error_weights), "CVodeWFtolerances");
-  UserData user{&blast, &weights};
-  sh::check_cvode(CVodeSetUserData(memory, &user), "CVodeSetUserData");
-  sh::check_cvode(CVodeSetConstraints(memory, constraints.get()), "CVodeSetConstraints");
-  if (config.numerics.project_totals) sh::check_cvode(CVodeSetProjFn(memory, project_totals), "CVodeSetProjFn");
-  sh::check_cvode(CVodeSetMaxNumSteps(memory, 5000000), "CVodeSetMaxNumSteps");
-  sh::check_cvode(CVodeSetMaxErrTestFails(memory, 20), "CVodeSetMaxErrTestFails");
-  sh::check_cvode(CVodeSetMaxConvFails(memory, 50), "CVodeSetMaxConvFails");
-  const int bandwidth = 3 * components - 1;  // cell i couples to cells i-2..i+2
-  sh::Matrix matrix(sh::check_created(SUNBandMatrix(size, bandwidth, bandwidth, context), "SUNBandMatrix"));
-  sh::LinearSolver solver(sh::check_created(SUNLinSol_Band(y.get(), matrix.get(), context), "SUNLinSol_Band"));
-  sh::check_cvode(CVodeSetLinearSolver(memory, solver.get(), matrix.get()), "CVodeSetLinearSolver");
+  const double x = sample.R_over_lambda, shock_speed = theory::shock_speed_at(d, sample.R, t);
+  const theory::ScalingExponents laws = theory::scaling_exponents(d);
+  // T0/Ṙ² with Ṙ² ∝ x^(-d): the exponent of Eq. (12) plus d, i.e. 2d²/(8+3d²)
+  const double T0_over_Rdot2_exponent = theory::to_double(laws.T0.in_R_over_lambda + d);
+  sample.H_prefactor = sample.H / theory::core_radius(d, lambda, sample.R);                              // Eq. (4)
+  sample.n0_prefactor = sample.n0 / (n_inf * std::pow(x, theory::to_double(laws.n0.in_R_over_lambda)));  // Eq. (11)
+  sample.T0_prefactor = sample.T0 / (shock_speed * shock_speed * std::pow(x, T0_over_Rdot2_exponent));   // Eq. (12)
+  sample.p0_scaled = sample.p0 / (n_inf * shock_speed * shock_speed);
+  sample.energy_error = std::abs(sample.energy - blast.expected_energy(t)) / config.physics.E;
+  sample.mass_error = std::abs(sample.mass - blast.expected_mass(t)) / sample.mass;
+  for (double value : {sample.R, sample.n0, sample.T0, sample.energy, sample.mass})
+    if (!std::isfinite(value)) throw std::runtime_error("non-finite diagnostic at t = " + common::format_number(t));
+  return sample;
+}
 
-  const auto wall_start = std::chrono::steady_clock::now();
-  double t = t0;
+NavierStokesProfile make_profile(const Blast& blast, const std::vector<double>& centres, double t, double R) {
+  NavierStokesProfile profile;
+  profile.t = t;
+  profile.R = R;
+  for (int i = 0; i < blast.cells(); ++i) {
+    profile.r.push_back(centres[i]);
+    profile.r_over_R.push_back(centres[i] / R);
+    profile.density.push_back(blast.density()[i]);
+    profile.velocity.push_back(blast.velocity()[i]);
+    profile.temperature.push_back(blast.temperature()[i]);
+    profile.pressure.push_back(blast.pressure()[i]);
+    profile.heat_flux.push_back(blast.heat_flux(i));
+  }
+  return profile;
+}
+
+/// Integrates to each output time and records samples and profiles in `result`.
+void integrate(Blast& blast, CvodeBdf& cvode, const std::vector<Output>& outputs, NavierStokesResult& result,
+               const NavierStokesProgress& progress) {
+  const int N = blast.cells();
   result.min_density = std::numeric_limits<double>::infinity();
   result.min_temperature = std::numeric_limits<double>::infinity();
-  std::vector<double> centres(N);
+  std::vector<double> centres(N), derivative(cvode.size());
   for (const Output& output : outputs) {
-    // Step exactly onto the output time: interpolated output would not keep the projected totals.
-    sh::check_cvode(CVodeSetStopTime(memory, output.t), "CVodeSetStopTime");
-    const int flag = CVode(memory, output.t, y.get(), &t, CV_NORMAL);
-    const std::string packing =
-        blast.packing_exceeded() >= blast.close_packing()
-            ? "; the flow tried to compress the gas to phi = " + common::format_number(blast.packing_exceeded()) +
-                  ", beyond close packing " + common::format_number(blast.close_packing())
-            : "";
-    sh::check_cvode(flag, "CVode",
-                    " at t = " + common::format_number(t) + " (R_ref/lambda = " +
-                        common::format_number(blast.reference_radius(t) / lambda) + ")" + packing);
-    const double* state = N_VGetArrayPointer(y.get());
-    std::vector<double> derivative(size);
+    const double t = cvode.advance_to(output.t, [&](double t_now) { return failure_context(blast, t_now); });
+    const double* state = cvode.state();
     if (blast.rhs(t, state, derivative.data()) != 0)
-      throw std::runtime_error("positivity lost at t = " + common::format_number(t) +
-                               ": a cell has n <= 0 or T <= 0, or phi >= close packing" + packing);
-    const std::vector<double>& radii = blast.radii();
-    for (int i = 0; i < N; ++i) centres[i] = 0.5 * (radii[i] + radii[i + 1]);
+      throw std::runtime_error("positivity lost" + failure_context(blast, t) +
+                               ": a cell has n <= 0 or T <= 0, or phi >= close packing");
+    for (int i = 0; i < N; ++i) centres[i] = 0.5 * (blast.radii()[i] + blast.radii()[i + 1]);
     const std::vector<double>& n = blast.density();
     const std::vector<double>& T = blast.temperature();
     result.min_density = std::min(result.min_density, *std::min_element(n.begin(), n.end()));
     result.min_temperature = std::min(result.min_temperature, *std::min_element(T.begin(), T.end()));
-
-    NavierStokesSample sample;
-    sample.t = t;
-    const int peak = static_cast<int>(std::max_element(n.begin(), n.end()) - n.begin());
-    const double R_crossing = crossing_radius(centres, n, peak, 0.5 * (config.physics.n_inf + n[peak]), true);
-    if (!std::isfinite(R_crossing) || R_crossing > 0.97 * radii[N])
-      throw std::runtime_error("the shock left the grid at t = " + common::format_number(t) +
-                               ", R_ref/lambda = " + common::format_number(blast.reference_radius(t) / lambda) +
-                               " (heat conduction outruns the shock when R/lambda is ~1 or kappa is large: start "
-                               "later, or raise outer_margin)");
-    sample.R = conservative_shock_radius(blast, state, peak, config.physics.n_inf);
-    if (!std::isfinite(sample.R)) sample.R = R_crossing;
-    sample.R_over_lambda = sample.R / lambda;
-    sample.n0 = n[0];
-    sample.T0 = T[0];
-    sample.p0 = blast.pressure()[0];  // n0 T0 Z(φ0); n0 T0 for the ideal gas
-    sample.H = crossing_radius(centres, T, 0, 0.5 * T[0], true);
-    sample.H_density = crossing_radius(centres, n, 0, 2.0 * n[0], false);
-    double energy = 0, mass = 0;
-    for (int i = 0; i < N; ++i) {
-      mass += state[components * i];
-      energy += state[components * i + 2];
-    }
-    sample.energy = energy;
-    sample.mass = mass;
-    const double x = sample.R_over_lambda, shock_speed = 2 * sample.R / ((d + 2) * t);
-    const double core_exponent = 2.0 * d * d / (8.0 + 3.0 * d * d);
-    sample.H_prefactor = sample.H / (lambda * std::pow(x, (4.0 + 3.0 * d * d) / (8.0 + 3.0 * d * d)));  // Eq. (4)
-    sample.n0_prefactor = sample.n0 / (config.physics.n_inf * std::pow(x, -core_exponent));             // Eq. (11)
-    sample.T0_prefactor = sample.T0 / (shock_speed * shock_speed * std::pow(x, core_exponent));         // Eq. (12)
-    sample.p0_scaled = sample.p0 / (config.physics.n_inf * shock_speed * shock_speed);
-    sample.energy_error = std::abs(energy - blast.expected_energy(t)) / config.physics.E;
-    sample.mass_error = std::abs(mass - blast.expected_mass(t)) / mass;
-    for (double value : {sample.R, sample.n0, sample.T0, sample.energy, sample.mass})
-      if (!std::isfinite(value)) throw std::runtime_error("non-finite diagnostic at t = " + common::format_number(t));
+    const NavierStokesSample sample = measure_sample(blast, state, centres, result.config, t);
     if (output.sample) {
       result.samples.push_back(sample);
       result.max_energy_error = std::max(result.max_energy_error, sample.energy_error);
       if (progress) progress(sample);
     }
-    if (output.profile) {
-      NavierStokesProfile profile;
-      profile.t = t;
-      profile.R = sample.R;
-      for (int i = 0; i < N; ++i) {
-        profile.r.push_back(centres[i]);
-        profile.r_over_R.push_back(centres[i] / sample.R);
-        profile.density.push_back(n[i]);
-        profile.velocity.push_back(blast.velocity()[i]);
-        profile.temperature.push_back(T[i]);
-        profile.pressure.push_back(blast.pressure()[i]);
-        profile.heat_flux.push_back(blast.heat_flux(i));
-      }
-      result.profiles.push_back(std::move(profile));
-    }
+    if (output.profile) result.profiles.push_back(make_profile(blast, centres, t, sample.R));
   }
-  // Keep the final (R/λ = until) profile last.
-  std::stable_partition(result.profiles.begin(), result.profiles.end(),
-                        [&](const NavierStokesProfile& p) { return std::abs(p.t / t_end_profile - 1) > 1e-12; });
-  result.statistics.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+}
 
-  long value = 0;
-  sh::check_cvode(CVodeGetNumSteps(memory, &value), "CVodeGetNumSteps");
-  result.statistics.steps = value;
-  sh::check_cvode(CVodeGetNumRhsEvals(memory, &value), "CVodeGetNumRhsEvals");
-  result.statistics.rhs_evaluations = value;
-  sh::check_cvode(CVodeGetNumLinRhsEvals(memory, &value), "CVodeGetNumLinRhsEvals");
-  result.statistics.rhs_evaluations += value;
-  sh::check_cvode(CVodeGetNumJacEvals(memory, &value), "CVodeGetNumJacEvals");
-  result.statistics.jacobian_evaluations = value;
-  sh::check_cvode(CVodeGetNumNonlinSolvIters(memory, &value), "CVodeGetNumNonlinSolvIters");
-  result.statistics.nonlinear_iterations = value;
-  sh::check_cvode(CVodeGetNumErrTestFails(memory, &value), "CVodeGetNumErrTestFails");
-  result.statistics.error_test_failures = value;
-  sh::check_cvode(CVodeGetNumNonlinSolvConvFails(memory, &value), "CVodeGetNumNonlinSolvConvFails");
-  result.statistics.nonlinear_failures = value;
-
-  result.energy_projected = user.projected_energy / config.physics.E;
-  result.mass_projected = user.projected_mass / result.samples.back().mass;
-  const NavierStokesSample& last = result.final_sample();
-  result.A_measured = config.physics.E * last.t * last.t / (config.physics.n_inf * std::pow(last.R, d + 2));
-
-  // Running exponents: centred differences between the neighbouring samples.
-  const auto& s = result.samples;
+/// Running exponents: centred differences between the neighbouring samples.
+std::vector<RunningExponents> running_exponents(const std::vector<NavierStokesSample>& s) {
+  std::vector<RunningExponents> exponents;
   for (std::size_t k = 1; k + 1 < s.size(); ++k) {
     const double dlnt = std::log(s[k + 1].t / s[k - 1].t);
     const double dlnR = std::log(s[k + 1].R / s[k - 1].R);
@@ -826,8 +853,43 @@ NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const Navi
     e.H_density_in_R = e.H_density / e.R;
     e.n0_in_R = e.n0 / e.R;
     e.T0_in_R = e.T0 / e.R;
-    result.exponents.push_back(e);
+    exponents.push_back(e);
   }
+  return exponents;
+}
+
+}  // namespace
+
+NavierStokesResult run_navier_stokes(const NavierStokesConfig& input, const NavierStokesProgress& progress) {
+  NavierStokesResult result = resolve_defaults(input);
+  const NavierStokesConfig& config = result.config;
+  Blast blast(config, result.kappa_prefactor, result.viscosity_prefactor, result.A_reference);
+  result.lambda = blast.lambda();
+  const std::vector<Output> outputs = output_plan(blast, config);
+  ErrorWeights weights{config.numerics.relative_tolerance};
+  UserData user{&blast, &weights};
+  CvodeBdf cvode(cvode_problem(blast, config, user));
+
+  const auto wall_start = std::chrono::steady_clock::now();
+  integrate(blast, cvode, outputs, result, progress);
+  result.statistics.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  // Keep the final (R/λ = until) profile last.
+  const double t_end_profile = blast.time_of(config.until_R_over_lambda * blast.lambda());
+  std::stable_partition(result.profiles.begin(), result.profiles.end(),
+                        [&](const NavierStokesProfile& p) { return std::abs(p.t / t_end_profile - 1) > 1e-12; });
+  const CvodeStatistics work = cvode.statistics();
+  result.statistics.steps = work.steps;
+  result.statistics.rhs_evaluations = work.rhs_evaluations;
+  result.statistics.jacobian_evaluations = work.jacobian_evaluations;
+  result.statistics.nonlinear_iterations = work.nonlinear_iterations;
+  result.statistics.error_test_failures = work.error_test_failures;
+  result.statistics.nonlinear_failures = work.nonlinear_failures;
+
+  result.energy_projected = user.projected_energy / config.physics.E;
+  result.mass_projected = user.projected_mass / result.samples.back().mass;
+  const NavierStokesSample& last = result.final_sample();
+  result.A_measured = theory::shock_amplitude(config.physics.d, config.physics.E, config.physics.n_inf, last.t, last.R);
+  result.exponents = running_exponents(result.samples);
   return result;
 }
 
@@ -845,11 +907,11 @@ TvnsComparison compare_to_tvns(const NavierStokesResult& result, double x_min) {
   TvnsComparison comparison;
   comparison.x_min = x_min;
   comparison.A_exact = exact.A();
-  comparison.A_measured = physics.E * profile.t * profile.t / (physics.n_inf * std::pow(profile.R, d + 2));
+  comparison.A_measured = theory::shock_amplitude(d, physics.E, physics.n_inf, profile.t, profile.R);
   comparison.A_relative_error = comparison.A_measured / comparison.A_exact - 1;
   // Eq. (1) [R-shock] with the exact amplitude
-  const double R = std::pow(physics.E * profile.t * profile.t / (exact.A() * physics.n_inf), 1.0 / (d + 2));
-  const double shock_speed = 2 * R / ((d + 2) * profile.t);
+  const double R = theory::shock_radius(d, physics.E, physics.n_inf, exact.A(), profile.t);
+  const double shock_speed = theory::shock_speed_at(d, R, profile.t);
   double error[3] = {0, 0, 0}, norm[3] = {0, 0, 0};
   const std::size_t cells = profile.r.size();
   for (std::size_t i = 0; i < cells; ++i) {

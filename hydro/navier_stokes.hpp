@@ -43,6 +43,10 @@ struct NavierStokesPhysics {
   /// An independent parameter: λ still follows from n∞ and a (Eq. (5)), as in `tvns --eos --phi`.
   double phi = 0;
   Transport transport = Transport::dilute;  ///< enskog needs a hard-particle EOS
+  /// Verification only: u ≡ 0 and n ≡ n∞ (no pressure work, no advection), leaving the nonlinear heat
+  /// conduction of the energy equation (the Zel'dovich–Raizer / Barenblatt–Pattle heat wave). Samples
+  /// then report R = R_ref(t), the grid scale, instead of a shock radius.
+  bool frozen_flow = false;
   /// φ∞ actually used: phi, or default_packing_fraction for a hard-particle EOS with phi = 0.
   double resolved_phi() const;
 };
