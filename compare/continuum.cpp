@@ -141,6 +141,8 @@ ContinuumAmplitudes profile_amplitudes(const hydro::NavierStokesProfile& p, int 
     zero.push_back(0.0);
   }
   a.H_over_R = binned_core_size(centre, density, zero).H_over_R;
+  a.bin_centres = centre;
+  a.binned_density = density;
   const double T_centre = p.temperature.front();
   a.H_temperature_over_R = NAN;
   for (std::size_t i = 1; i < p.r.size(); ++i)
@@ -246,6 +248,9 @@ ContinuumAmplitudes interpolated_amplitudes(const hydro::NavierStokesResult& ns,
   a.A = mix(lo.A, hi.A);
   a.H_over_R = mix(lo.H_over_R, hi.H_over_R);
   a.H_temperature_over_R = mix(lo.H_temperature_over_R, hi.H_temperature_over_R);
+  a.bin_centres = lo.bin_centres;
+  for (std::size_t b = 0; b < lo.binned_density.size(); ++b)
+    a.binned_density.push_back(mix(lo.binned_density[b], hi.binned_density[b]));
   return a;
 }
 

@@ -63,6 +63,8 @@ struct ContinuumAmplitudes {
   double A = 0;                     ///< E t²/(n∞ R^{d+2}) of the NS blast at that R/λ
   double H_over_R = 0;              ///< core size: binned density reaches twice its innermost bin
   double H_temperature_over_R = 0;  ///< NS's own core radius (T falls to T0/2), for information
+  /// n/n∞ averaged over each of the MD's r/R bins (centres in bin_centres): the profile residuals
+  std::vector<double> bin_centres, binned_density;
 };
 
 /// Everything continuum the comparison of one MD run needs.

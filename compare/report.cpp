@@ -171,6 +171,35 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
   run_gnuplot(folder, "observables.gp");
 }
 
+// The MD's density profile at its last time against the NS model averaged over the same bins,
+// bin by bin with the MD's standard error (docs/compare.md, "Amplitudes").
+std::string density_residuals(const CompareResult& result) {
+  const auto path = result.run.directory / "profiles.csv";
+  const ContinuumAmplitudes& ns = result.continuum->amplitudes;
+  if (!fs::exists(path) || ns.binned_density.empty()) return "";
+  const CsvTable table = read_numeric_csv(path);
+  const std::size_t ct = table.column("t"), cn = table.column("density_over_n"), ce = table.column("density_stderr");
+  double t = 0;
+  for (const auto& row : table.rows)
+    if (row[ct] <= result.until * (1 + 1e-9)) t = std::max(t, row[ct]);
+  std::ostringstream md;
+  md << "\nDensity profile at t = " << format_number(t)
+     << " (the MD's bins; NS averaged over the same shells):\n\n| r/R | MD n/n∞ | NS n/n∞ | (MD − NS)/δ_MD |\n"
+        "|---|---|---|---|\n";
+  std::size_t b = 0;
+  char row_text[160];
+  for (const auto& row : table.rows) {
+    if (row[ct] != t) continue;
+    if (b < ns.binned_density.size() && ns.bin_centres[b] < 1.1) {
+      std::snprintf(row_text, sizeof row_text, "| %.3f | %.4f ± %.4f | %.4f | %+.1f |\n", ns.bin_centres[b], row[cn],
+                    row[ce], ns.binned_density[b], row[ce] > 0 ? (row[cn] - ns.binned_density[b]) / row[ce] : NAN);
+      md << row_text;
+    }
+    ++b;
+  }
+  return md.str();
+}
+
 // The amplitude verdicts with their residuals, and the core's Knudsen number as the first suspect
 // for what the continuum misses.
 std::string amplitude_markdown(const CompareResult& result) {
@@ -202,6 +231,7 @@ std::string amplitude_markdown(const CompareResult& result) {
                         1000)
        << " (NS); NS's temperature core radius (T = T0/2): H_T/R = "
        << format_number(std::round(c.amplitudes.H_temperature_over_R * 1000) / 1000) << ".\n";
+  md << density_residuals(result);
   return md.str();
 }
 

@@ -209,6 +209,12 @@ TEST_CASE("continuum amplitudes at the MD's own R/lambda: the MD's definitions a
   }();
   CHECK(a.n0_over_n == Approx(sample_n0).epsilon(0.05));
   CHECK(a.A == Approx(0.351935906848599).epsilon(0.08));
+  // The shell averages of the profile residuals: one per MD bin (30 over [0, 1.5)), the innermost
+  // near the ball's n0, and the gas at rest beyond the shock.
+  REQUIRE(a.binned_density.size() == 30);
+  CHECK(a.bin_centres[0] == Approx(0.025));
+  CHECK(a.binned_density[0] == Approx(a.n0_over_n).epsilon(0.05));
+  CHECK(a.binned_density[25] == Approx(1.0).epsilon(1e-6));
   CHECK(a.H_over_R > 0.3);
   CHECK(a.H_over_R < 0.7);
   // The profile figure's curves: ideal TvNS, TvNS(φ), and the NS model (dilute: no second NS curve).
