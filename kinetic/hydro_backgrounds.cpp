@@ -37,13 +37,16 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, reference.A()};
   const double start = ns.numerics.start_R_over_lambda;
   const double until = theory::shock_radius(p, 1.05 * scene.t_max) / lambda;
-  if (!(until > start * 1.01))
-    throw std::invalid_argument("t_max = " + format_number(scene.t_max) + " is before the Navier–Stokes start (R/λ = " +
-                                format_number(start) + "): raise t_max for --background ns");
+  if (!(until > start * 1.5))  // room for frames after the first one at 1.25 × start
+    throw std::invalid_argument(
+        "t_max = " + format_number(scene.t_max) +
+        " is before the Navier–Stokes background's range (it starts at R/λ = " + format_number(start) +
+        " and t_max must reach R/λ = " + format_number(1.5 * start) + "): raise t_max for --background ns");
   ns.until_R_over_lambda = until;
-  const double ratio = std::pow(10.0, 1.0 / frames_per_decade);
-  for (double R = start * ratio; R < until / std::sqrt(ratio); R *= ratio)
-    ns.numerics.profile_R_over_lambda.push_back(R);
+  // The first frame sits at R/λ = 1.25 × start for every frames_per_decade, so that the early
+  // self-similar continuation (and with it the start) does not change with the frame density.
+  const double ratio = std::pow(10.0, 1.0 / frames_per_decade), first = 1.25 * start;
+  for (double R = first; R < until / std::sqrt(ratio); R *= ratio) ns.numerics.profile_R_over_lambda.push_back(R);
   const hydro::NavierStokesResult solution = hydro::run_navier_stokes(ns);
 
   std::vector<double> x;
@@ -68,8 +71,8 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
                                          " EOS at phi = " + format_number(ns.physics.phi) + ", Enskog transport"
                                    : std::string("dilute")) +
                    ", heat conduction, " + std::to_string(cells) + " cells), " + std::to_string(frames.size()) +
-                   " frames from R/lambda = " + format_number(start * ratio) + " to " + format_number(until) +
-                   ", t in [" + format_number(frames.front().t) + ", " + format_number(frames.back().t) + "]";
+                   " frames from R/lambda = " + format_number(first) + " to " + format_number(until) + ", t in [" +
+                   format_number(frames.front().t) + ", " + format_number(frames.back().t) + "]";
   const double edge = x.back();
   return std::make_unique<GridBackground>(scene.d, std::move(x), edge, std::move(frames), scene.n, contact, false);
 }
