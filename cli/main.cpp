@@ -1,6 +1,9 @@
 // coldblast: one binary, one subcommand per flow. Exit codes: 0 success, 1 runtime failure,
 // 2 usage or parameter error, 3 a comparison verdict of "fail" (coldblast compare), 128 + signal when
 // SIGINT/SIGTERM stopped an MD ensemble (130/143; finished blocks stay in the checkpoint).
+// Standard output is checked at exit (common::finish_standard_streams): a write error (a full disk,
+// a closed descriptor) turns a success into exit 1 with a message. A pipe whose reader left
+// (`| head -c 10`) ends the process quietly by SIGPIPE's default action, as it does for GNU tools.
 #include <gsl/gsl_errno.h>
 
 #include <cstdio>
@@ -21,7 +24,8 @@ void print_json(const common::Json& document) {
 }
 }  // namespace coldblast::cli
 
-int main(int argc, char** argv) {
+namespace {
+int run(int argc, char** argv) {
   using namespace coldblast;
 #if COLDBLAST_HAVE_MPI
   md::MpiSession mpi(argc, argv);  // under mpirun/srun only; an error on any rank ends all ranks
@@ -69,4 +73,11 @@ int main(int argc, char** argv) {
     return failure(1);
   }
   return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int code = run(argc, argv);
+  const int streams = coldblast::common::finish_standard_streams();
+  return code != 0 ? code : streams;
 }

@@ -1,8 +1,14 @@
 #include "common/output.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <stdexcept>
 #include <system_error>
 
@@ -10,10 +16,123 @@
 
 namespace coldblast::common {
 
+namespace fs = std::filesystem;
+
 namespace {
 std::string& command_line_storage() {
   static std::string line = "(library call)";
   return line;
+}
+
+std::runtime_error failure(const std::string& what, const fs::path& path, int error) {
+  return std::runtime_error("cannot " + what + " " + path.string() + ": " + std::strerror(error));
+}
+
+/// write(2) until done, retrying on EINTR; false (errno set) on any failure.
+bool write_all(int fd, const std::string& content) {
+  const char* data = content.data();
+  std::size_t left = content.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = EIO;
+      return false;
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// A device, FIFO or socket: opened as it is (never created, truncated or renamed onto).
+void write_through(const fs::path& path, const std::string& content) {
+  int fd;
+  do fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  while (fd < 0 && errno == EINTR);
+  if (fd < 0) throw failure("open", path, errno);
+  if (!write_all(fd, content)) {
+    const int error = errno;
+    ::close(fd);
+    throw failure("write", path, error);
+  }
+  if (::close(fd) != 0 && errno != EINTR) throw failure("write", path, errno);
+}
+
+/// "-", /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N: the descriptor this process already
+/// holds (its offset and open mode are the caller's), or -1 for any other path.
+int own_descriptor(const fs::path& path) {
+  const std::string p = path.string();
+  if (p == "-" || p == "/dev/stdout") return STDOUT_FILENO;
+  if (p == "/dev/stderr") return STDERR_FILENO;
+  for (const std::string prefix : {"/dev/fd/", "/proc/self/fd/"})
+    if (p.size() > prefix.size() && p.size() < prefix.size() + 6 && p.compare(0, prefix.size(), prefix) == 0 &&
+        p.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
+      return std::stoi(p.substr(prefix.size()));
+  return -1;
+}
+
+void write_descriptor(int fd, const fs::path& path, const std::string& content) {
+  std::cout.flush();  // keep the order of what this process printed before
+  std::fflush(stdout);
+  std::cerr.flush();
+  std::fflush(stderr);
+  if (!write_all(fd, content)) throw failure("write", path, errno);
+}
+
+/// A new path or a regular file: temporary file beside it, fsync, rename, fsync of the folder.
+void write_atomically(const fs::path& path, const std::string& content) {
+  std::error_code ec;
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (path.has_parent_path()) {
+    fs::create_directories(folder, ec);
+    if (ec) throw std::runtime_error("cannot create folder " + folder.string() + ": " + ec.message());
+  }
+  mode_t mode = 0666;  // narrowed by the umask, as for any new file
+  struct stat old;
+  const bool replacing = ::stat(path.c_str(), &old) == 0;
+  if (replacing) mode = old.st_mode & 07777;
+  static std::atomic<unsigned> counter{0};
+  const fs::path temporary =
+      path.string() + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter.fetch_add(1));
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, replacing ? 0600 : mode);
+  if (fd < 0) throw failure("create", temporary, errno);
+  const auto abandon = [&](const std::string& what, int error) {
+    ::close(fd);
+    ::unlink(temporary.c_str());
+    return failure(what, path, error);
+  };
+  if (!write_all(fd, content)) throw abandon("write", errno);
+  if (replacing && ::fchmod(fd, mode) != 0) throw abandon("set the permissions of", errno);
+  if (::fsync(fd) != 0) throw abandon("write", errno);
+  if (::close(fd) != 0) {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    throw failure("write", path, error);
+  }
+  if (::rename(temporary.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    throw failure("rename a temporary file onto", path, error);
+  }
+  const int folder_fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (folder_fd >= 0) {  // make the rename durable; a folder that cannot be opened still got the file
+    ::fsync(folder_fd);
+    ::close(folder_fd);
+  }
+}
+
+/// Follows a chain of symlinks to the path it finally names (which need not exist yet).
+fs::path final_target(fs::path path) {
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat s;
+    if (::lstat(path.c_str(), &s) != 0 || !S_ISLNK(s.st_mode)) return path;
+    std::error_code ec;
+    const fs::path target = fs::read_symlink(path, ec);
+    if (ec) throw std::runtime_error("cannot read the symlink " + path.string() + ": " + ec.message());
+    path = target.is_absolute() ? target : path.parent_path() / target;
+  }
+  throw failure("resolve", path, ELOOP);
 }
 }  // namespace
 
@@ -30,29 +149,36 @@ const std::string& command_line() {
   return command_line_storage();
 }
 
-void write_file_atomic(const std::filesystem::path& path, const std::string& content) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (path.has_parent_path()) {
-    fs::create_directories(path.parent_path(), ec);
-    if (ec) throw std::runtime_error("cannot create folder " + path.parent_path().string() + ": " + ec.message());
+void write_file_atomic(const fs::path& path, const std::string& content) {
+  if (path.empty()) throw std::runtime_error("cannot write an empty path");
+  if (const int fd = own_descriptor(path); fd >= 0) return write_descriptor(fd, path, content);
+  struct stat s;
+  if (::stat(path.c_str(), &s) != 0) {  // new path, or a symlink to a path that does not exist yet
+    if (errno != ENOENT) throw failure("write", path, errno);
+    return write_atomically(final_target(path), content);
   }
-  const fs::path temporary = path.string() + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot open " + temporary.string() + " for writing");
-    out << content;
-    out.flush();
-    if (!out) {
-      fs::remove(temporary, ec);
-      throw std::runtime_error("write failed for " + temporary.string());
-    }
+  if (S_ISREG(s.st_mode)) return write_atomically(final_target(path), content);
+  if (S_ISCHR(s.st_mode) || S_ISFIFO(s.st_mode) || S_ISSOCK(s.st_mode)) return write_through(path, content);
+  if (S_ISDIR(s.st_mode)) throw std::runtime_error("cannot write " + path.string() + ": it is a folder");
+  throw std::runtime_error("cannot write " + path.string() + ": not a regular file, device, FIFO or socket");
+}
+
+int finish_standard_streams() noexcept {
+  errno = 0;
+  try {
+    std::cout.flush();  // synchronised with stdio: flushes stdout, whose failure sets errno
+  } catch (...) {
   }
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw std::runtime_error("cannot rename " + temporary.string() + " to " + path.string());
+  const bool out_failed = std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.good();
+  const int error = errno;  // of the first failed flush (a later one of an emptied buffer succeeds)
+  if (out_failed) {
+    std::fprintf(stderr, "coldblast: error: cannot write standard output: %s\n",
+                 error != 0 ? std::strerror(error) : "write error");
+    std::fflush(stderr);
+    return 1;
   }
+  if (std::fflush(stderr) != 0 || std::ferror(stderr)) return 1;
+  return 0;
 }
 
 std::string provenance_header(const HeaderFields& extra, const std::string& units) {

@@ -1,6 +1,7 @@
 #pragma once
-// Output plumbing shared by every module: atomic file writes (nothing is ever half-written),
-// commented provenance headers for CSV/TSV files, and the JSON type used for summaries.
+// Output plumbing shared by every module: the output path rules (atomic writes of regular files,
+// straight-through writes of devices and pipes, `-` for stdout), the exit-time check of stdout and
+// stderr, commented provenance headers for CSV/TSV files, and the JSON type used for summaries.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -11,9 +12,26 @@ namespace coldblast::common {
 
 using Json = nlohmann::ordered_json;
 
-/// Writes `content` to `path` through a temporary file in the same folder and an atomic rename.
-/// Creates missing parent folders. Throws std::runtime_error naming the path on failure.
+/// Writes `content` to `path` by the output path rules (the one place every writer gets them):
+/// - "-" or "/dev/stdout" (standard output), "/dev/stderr", "/dev/fd/N", "/proc/self/fd/N": the
+///   descriptor this process holds, written after what it printed before, every write checked;
+/// - a new path or a regular file: atomically, through a temporary file in the same folder
+///   (write, fsync, rename, fsync of the folder); a replaced file keeps its permission bits;
+///   missing parent folders are created;
+/// - a symlink: atomically to the file it finally points to, so the link stays a link;
+/// - a character device, FIFO or socket (/dev/null, /dev/full, a named pipe, /dev/fd/N): written
+///   straight through with every write checked, never renamed onto;
+/// - a folder or a block device: refused.
+/// Throws std::runtime_error naming the path and the system's reason on any failure; a failed
+/// atomic write leaves the old file untouched and no temporary behind.
 void write_file_atomic(const std::filesystem::path& path, const std::string& content);
+
+/// The GNU close_stdout rule, called by main() before it returns: flushes stdout and stderr and
+/// returns 1 after printing "coldblast: error: cannot write standard output: REASON" on stderr when
+/// a write to stdout failed (a full disk, a closed descriptor, a pipe whose reader left while
+/// SIGPIPE is ignored); returns 1 silently when stderr failed; else 0. A pipe whose reader left
+/// ends the process by SIGPIPE's default action before this is reached (`| head` stays quiet).
+int finish_standard_streams() noexcept;
 
 /// Key/value lines written as "# key: value" at the top of every table file.
 using HeaderFields = std::vector<std::pair<std::string, std::string>>;
