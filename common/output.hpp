@@ -26,6 +26,10 @@ using Json = nlohmann::ordered_json;
 /// atomic write leaves the old file untouched and no temporary behind.
 void write_file_atomic(const std::filesystem::path& path, const std::string& content);
 
+/// Removes the temporary files that atomic writes of killed processes left in `folder`
+/// ("NAME.tmp.PID.N" whose process PID no longer runs); returns how many. Missing folder: 0.
+int remove_stale_temporaries(const std::filesystem::path& folder);
+
 /// The GNU close_stdout rule, called by main() before it returns: flushes stdout and stderr and
 /// returns 1 after printing "coldblast: error: cannot write standard output: REASON" on stderr when
 /// a write to stdout failed (a full disk, a closed descriptor, a pipe whose reader left while

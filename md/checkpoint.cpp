@@ -135,6 +135,8 @@ void save_checkpoint_block(const fs::path& directory, long long block, const Blo
 }
 
 Checkpoint load_checkpoint(const fs::path& directory, const ResolvedScene& scene) {
+  common::remove_stale_temporaries(directory);  // writes of a killed run
+  common::remove_stale_temporaries(directory / "realization0");
   const fs::path scene_path = directory / "scene.toml";
   if (!fs::exists(scene_path))
     throw std::invalid_argument("--resume: no checkpoint in " + directory.string() +

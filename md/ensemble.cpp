@@ -384,6 +384,7 @@ common::Json blast_summary(const BlastResult& result) {
 }
 
 void write_blast_outputs(const BlastResult& result, const std::filesystem::path& directory) {
+  common::remove_stale_temporaries(directory);  // writes of a killed earlier attempt
   const ResolvedScene& scene = result.scene;
   const ObservableLayout layout(scene);
   const std::string header = header_for(scene);
