@@ -43,10 +43,12 @@ done
 
 for signal in TERM INT; do
   expected=$([ $signal = TERM ] && echo 143 || echo 130)
-  for delay in 150 300 600 900; do  # a later moment when the run had not started its blocks yet
+  # A fresh run stopped a quarter into its blocks (earlier on retries, should it finish first); the
+  # SIGINT run's checkpoint is what the final resume continues.
+  for delay in $((duration_ms / 4 + 20)) $((duration_ms / 8 + 10)) 20; do
+    rm -rf "$out"
     attempt $signal "$delay"
     [ "$status" -ne 0 ] && break
-    rm -rf "$out"  # finished before the signal: start again
   done
   [ "$status" -eq "$expected" ] || fail "SIG$signal: exit $status, expected $expected: $(tail -3 "$work/killed.err")"
   grep -q "continue with the same command and --resume $out" "$work/killed.err" || fail "SIG$signal: no resume hint"

@@ -1,0 +1,143 @@
+#!/usr/bin/env python3
+"""Stress grid (issue 16): sweeps every solver over the extremes of its parameters through the CLI
+and prints docs/stress.md's table (Markdown) on stdout. Each case must end either in finite results
+that pass the stated check, or in exit 2 with a message naming the parameter; anything else (a
+crash, exit 1, a NaN, a missed bound) is marked FAIL. Usage: scripts/stress.sh [BINARY] > table.md
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+BINARY = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "build", "bin", "coldblast")
+WORK = tempfile.mkdtemp(prefix="coldblast-stress-")
+rows = []
+
+
+def run(args, timeout=600):
+    try:
+        p = subprocess.run([BINARY] + args, capture_output=True, text=True, timeout=timeout)
+        return p.returncode, p.stdout, p.stderr
+    except subprocess.TimeoutExpired:
+        return "timeout", "", ""
+
+
+def finite_tree(x):
+    if isinstance(x, float):
+        return math.isfinite(x)
+    if isinstance(x, dict):
+        return all(finite_tree(v) for v in x.values())
+    if isinstance(x, list):
+        return all(finite_tree(v) for v in x)
+    return True
+
+
+class Sweep:
+    def __init__(self, solver, sweep, check):
+        self.solver, self.sweep, self.check = solver, sweep, check
+        self.ok = self.rejected = 0
+        self.failures = []
+        self.notes = []
+
+    def case(self, label, args, judge, timeout=600):
+        code, out, err = run(args, timeout)
+        if code == 2 and "is outside" in err or code == 2 and "error:" in err:
+            self.rejected += 1
+            self.notes.append(f"{label}: exit 2 ({err.strip().splitlines()[-1][:90]})")
+            return
+        if code != 0:
+            self.failures.append(f"{label}: exit {code} {err.strip()[-160:]}")
+            return
+        try:
+            problem = judge(json.loads(out))
+        except Exception as e:  # noqa: BLE001 - a malformed summary is a failure of the case
+            problem = f"unreadable summary ({e})"
+        if problem:
+            self.failures.append(f"{label}: {problem}")
+        else:
+            self.ok += 1
+
+    def row(self):
+        result = "PASS" if not self.failures else "FAIL"
+        detail = f"{self.ok} finite and within the bound, {self.rejected} rejected with exit 2"
+        extra = "; ".join(self.failures[:3] + [n for n in self.notes[:2]])
+        rows.append(f"| {self.solver} | {self.sweep} | {self.check} | **{result}**: {detail}" +
+                    (f" ({extra})" if extra else "") + " |")
+        sys.stderr.write(rows[-1] + "\n")
+
+
+def tvns_judge(doc):
+    if not finite_tree({k: v for k, v in doc.items() if k != "cavity_radius"}):
+        return "non-finite value"
+    if doc["method_agreement"] > 1e-8:
+        return f"closed form and ODE differ by {doc['method_agreement']:.1e}"
+    return None
+
+
+def tvns():
+    gammas = [1.001, 1.01, 1.1, 1.4, 5 / 3, 2 - 1e-9, 2, 2 + 1e-9, 3, 5, 7 - 1e-9, 7, 7 + 1e-9, 10, 100, 1000]
+    s = Sweep("TvNS (ideal gas)", "d = 1, 2, 3 × γ ∈ {1.001, 1.01, 1.1, 1.4, 5/3, 2−1e−9, 2, 2+1e−9, 3, 5, 7−1e−9, 7, 7+1e−9, 10, 100, 1000}, 200-point profile",
+              "A_d and the profile finite; closed form and ODE agree to 1e−8")
+    for d in (1, 2, 3):
+        for g in gammas:
+            s.case(f"d={d} γ={g!r}", ["tvns", "--d", str(d), "--gamma", repr(g), "--format", "json", "--points", "200",
+                                      "--profile", os.path.join(WORK, "p.csv")], tvns_judge)
+    s.row()
+    s = Sweep("TvNS (hard particles)", "Henderson d = 2 and Carnahan–Starling d = 3, φ ∈ {1e−6, 0.01, 0.1, 0.3, 0.5, limit − 1e−3, limit, limit + 1e−3}",
+              "finite A_d(φ), methods agree to 1e−8; at and beyond the EOS limit exit 2")
+    for d, eos, limit in ((2, "henderson", None), (3, "carnahan-starling", None)):
+        code, out, err = run(["tvns", "--d", str(d), "--eos", eos, "--phi", "2", "--format", "json"])
+        import re
+        m = re.search(r"outside \(0, ([0-9.eE+-]+)\)", err)
+        limit = float(m.group(1)) if m else 0.6
+        for phi in (1e-6, 0.01, 0.1, 0.3, 0.5, limit - 1e-3, limit, limit + 1e-3):
+            s.case(f"{eos} φ={phi:.6g}", ["tvns", "--d", str(d), "--eos", eos, "--phi", repr(phi), "--format", "json"], tvns_judge)
+    s.row()
+
+
+def hydro():
+    s = Sweep("Navier–Stokes core", "d = 2, 3, R/λ (--until) ∈ {1e2, 1e4, 1e6, 1e8, 1e10, 1e12}, 128 cells",
+              "finite H, n0, T0 and running exponents, or a clear solver error (exit 1 names the CVODE flag)")
+    def judge(doc):
+        return None if finite_tree(doc) else "non-finite value"
+    for d in (2, 3):
+        for until in ("1e2", "1e4", "1e6", "1e8", "1e10", "1e12"):
+            s.case(f"d={d} R/λ={until}", ["hydro", "core", "--d", str(d), "--until", until, "--cells", "128", "--format", "json"], judge, timeout=900)
+    s.row()
+
+
+def md():
+    base = ["md", "run", "--set", "t_max=20", "--realizations", "2", "--format", "json", "--out", os.path.join(WORK, "md")]
+    def judge(doc):
+        if not finite_tree({k: v for k, v in doc.items()}):
+            return "non-finite value"
+        if doc["energy_error_max"] > 1e-9:
+            return f"energy error {doc['energy_error_max']:.1e}"
+        return None
+    sweeps = [
+        ("impurity mass ratio", [f"impurities.mass={m}" for m in ("1e-3", "1e-2", "0.1", "1", "10", "100", "1e3")]),
+        ("impurity radius ratio", [f"impurities.radius={r}" for r in ("0.1", "0.5", "1", "2", "5", "10", "20")]),
+        ("E", [f"E={e}" for e in ("1e-6", "1e-4", "1e-2", "1", "1e2", "1e4", "1e6")]),
+        ("φ (2D) up to RSA jamming", [f"n={n}" for n in ("0.01", "0.1", "0.3", "0.5", "0.6", "0.65", "0.7")]),
+        ("φ (3D) up to RSA jamming", [f"n={n};d=3" for n in ("0.01", "0.1", "0.3", "0.5", "0.7", "0.73", "0.8")]),
+        ("one impurity", ["impurities.count=1", "impurities.count=1;d=3"]),
+    ]
+    for name, settings in sweeps:
+        s = Sweep("MD (blast)", f"{name}: " + ", ".join(settings), "relative energy error ≤ 1e−9 and every observable finite, or exit 2 naming the key")
+        for setting in settings:
+            args = list(base)
+            for kv in setting.split(";"):
+                args += ["--set", kv]
+            s.case(setting, args, judge, timeout=900)
+        s.row()
+
+
+if __name__ == "__main__":
+    which = sys.argv[2:] or ["tvns", "hydro", "md"]
+    print("| solver | sweep | checked | result |")
+    print("|---|---|---|---|")
+    for part in which:
+        globals()[part]()
+    print("\n".join(rows))
