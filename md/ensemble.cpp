@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -470,13 +471,59 @@ void write_blast_outputs(const BlastResult& result, const std::filesystem::path&
   common::write_file_atomic(directory / "summary.json", blast_summary(result).dump(2) + "\n");
 }
 
+namespace {
+/// What md merge takes from a shard's summary.json.
+struct MergedSummary {
+  std::string scene_toml;
+  double wall_seconds = 0.0;
+  long long resumed_realizations = 0, resumed_collisions = 0;
+  int threads = 1;
+};
+
+/// Reads summary.json of a shard: a malformed file or field is bad input (std::invalid_argument
+/// naming the file and the key), not a runtime failure (found by fuzz/fuzz_run_directory.cpp).
+MergedSummary read_merged_summary(const std::filesystem::path& path) {
+  const std::string text = common::read_text(path, "md merge DIR file");
+  const auto bad = [&](const std::string& what) {
+    return std::invalid_argument("md merge: " + path.string() + ": " + what);
+  };
+  try {
+    const common::Json s = common::Json::parse(text);
+    if (!s.is_object()) throw bad("not a JSON object");
+    const auto count = [&](const char* key, long long fallback, long long most) {
+      if (!s.contains(key)) {
+        if (fallback < 0) throw bad(std::string("no '") + key + "'");
+        return fallback;
+      }
+      const common::Json& v = s.at(key);
+      if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > most)
+        throw bad(std::string("'") + key + "' = " + v.dump() + " is not a count in [0, " + std::to_string(most) + "]");
+      return v.get<long long>();
+    };
+    MergedSummary m;
+    if (!s.contains("scene_toml") || !s.at("scene_toml").is_string()) throw bad("no 'scene_toml' string");
+    m.scene_toml = s.at("scene_toml").get<std::string>();
+    if (!s.contains("wall_seconds") || !s.at("wall_seconds").is_number() ||
+        !(s.at("wall_seconds").get<double>() >= 0.0) || !std::isfinite(s.at("wall_seconds").get<double>()))
+      throw bad("no finite 'wall_seconds' >= 0");
+    m.wall_seconds = s.at("wall_seconds").get<double>();
+    m.resumed_realizations = count("resumed_realizations", 0, std::numeric_limits<long long>::max());
+    m.resumed_collisions = count("resumed_collisions", 0, std::numeric_limits<long long>::max());
+    m.threads = static_cast<int>(count("threads", -1, 1 << 20));
+    return m;
+  } catch (const common::Json::exception& e) {
+    throw bad(e.what());
+  }
+}
+}  // namespace
+
 BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& directories) {
   if (directories.empty()) throw std::invalid_argument("md merge: no input directories");
   BlastResult merged;
   std::string scene_toml;
   for (const auto& dir : directories) {
-    const common::Json summary = common::Json::parse(common::read_text(dir / "summary.json", "md merge DIR file"));
-    const std::string toml_text = summary.at("scene_toml").get<std::string>();
+    const MergedSummary summary = read_merged_summary(dir / "summary.json");
+    const std::string& toml_text = summary.scene_toml;
     if (scene_toml.empty()) {
       scene_toml = toml_text;
       merged.scene = resolve_scene(parse_scene(toml_text, {}, (dir / "summary.json").string()));
@@ -484,10 +531,10 @@ BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& direct
       throw std::invalid_argument("md merge: " + dir.string() + " ran a different scene than " +
                                   directories.front().string());
     }
-    merged.wall_seconds += summary.at("wall_seconds").get<double>();
-    merged.resumed_realizations += summary.value("resumed_realizations", 0LL);
-    merged.resumed_collisions += summary.value("resumed_collisions", std::uint64_t{0});
-    merged.threads = std::max(merged.threads, summary.at("threads").get<int>());
+    merged.wall_seconds += summary.wall_seconds;
+    merged.resumed_realizations += summary.resumed_realizations;
+    merged.resumed_collisions += static_cast<std::uint64_t>(summary.resumed_collisions);
+    merged.threads = std::max(merged.threads, summary.threads);
     const ObservableLayout layout(merged.scene);
     std::map<long long, BlockSums> blocks;
     const common::CsvTable totals = common::parse_csv(common::read_text(dir / "block_totals.csv", "md merge DIR file"),
