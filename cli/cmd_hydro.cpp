@@ -11,6 +11,7 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "hydro/navier_stokes.hpp"
+#include "hydro/options.hpp"
 #include "theory/exponents.hpp"
 
 namespace coldblast::cli {
@@ -31,45 +32,26 @@ struct HydroOptions {
   Format format = Format::table;
 };
 
-constexpr double default_core_until = 1e4;
-constexpr double default_euler_until = 500;
-
 std::string number(double value, int digits = 17) {
   char buffer[48];
   std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
   return buffer;
 }
 
-/// Maps flags to the library config; every range error names the flag.
+/// Maps flags to the library config (validation and messages in hydro/options.hpp).
 hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
-  common::require_integer_in_range("--d", options.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
-  common::require_integer_in_range("--cells", options.cells, 16, 100000);
-  hydro::NavierStokesConfig config;
-  config.physics.d = options.d;
-  config.numerics.cells = options.cells;
-  const double until = options.until == 0 ? (euler ? default_euler_until : default_core_until) : options.until;
-  common::require_in_range("--until", until, config.numerics.start_R_over_lambda, 1e12, common::Bound::open,
-                           common::Bound::closed,
-                           " (R/lambda at the end; must exceed the initial size R/lambda = " +
-                               common::format_number(config.numerics.start_R_over_lambda) + ")");
-  config.until_R_over_lambda = until;
-  config.physics.eos = hydro::eos_from_string(options.eos, "--eos");
-  config.physics.phi = options.phi;
-  config.physics.transport = hydro::transport_from_string(options.transport, "--transport");
-  if (euler) {
-    config.physics.heat_conduction = false;
-    config.physics.viscosity = false;
-  } else {
-    if (options.kappa_given) {
-      common::require_in_range("--kappa-prefactor", options.kappa_prefactor, 0, 1e6, common::Bound::closed,
-                               common::Bound::closed);
-      config.physics.kappa_prefactor = options.kappa_prefactor;
-    }
-    if (options.viscosity != "on" && options.viscosity != "off")
-      throw std::invalid_argument("--viscosity = " + options.viscosity + " is not one of on, off");
-    config.physics.viscosity = options.viscosity == "on";
-  }
-  config.validate();
+  hydro::HydroOptions o;
+  o.d = options.d;
+  o.until = options.until;
+  o.cells = options.cells;
+  o.viscosity = options.viscosity == "on";
+  if (options.kappa_given) o.kappa_prefactor = options.kappa_prefactor;
+  o.eos = options.eos;
+  o.phi = options.phi;
+  o.transport = options.transport;
+  hydro::NavierStokesConfig config = hydro::navier_stokes_config(o, euler);
+  if (!euler && options.viscosity != "on" && options.viscosity != "off")
+    throw std::invalid_argument("--viscosity = " + options.viscosity + " is not one of on, off");
   return config;
 }
 

@@ -12,6 +12,7 @@
 #include "common/input.hpp"
 #include "common/interrupt.hpp"
 #include "common/validate.hpp"
+#include "compare/md_run.hpp"
 #include "hydro/tvns.hpp"
 #include "md/ensemble.hpp"
 #include "md/equilibrium.hpp"
@@ -103,28 +104,16 @@ md::BlastResult run_ensemble(const md::BlastConfig& config, const md::RunOptions
 }
 
 void run_md(const MdRunOptions& o) {
-  std::vector<std::string> overrides = o.set;
-  if (o.realizations != 0) {
-    common::require_integer_in_range("--realizations", o.realizations, 1, 1000000000);
-    overrides.push_back("realizations=" + std::to_string(o.realizations));
-  }
-  if (o.seed != -1) {
-    common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
-    overrides.push_back("seed=" + std::to_string(o.seed));
-  }
-  common::require_integer_in_range("--threads", o.threads, 1, 1024);
+  compare::MdRunRequest request;
+  request.scene_file = o.scene_file;
+  request.overrides = o.set;
+  request.realizations = o.realizations;
+  request.seed = o.seed;
+  request.threads = o.threads;
   const auto [shard_index, shard_count] = md::parse_shard(o.shard);
-  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : common::read_text(o.scene_file, "SCENE");
-  md::BlastConfig config = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
-  // A_d = 0 means "not given": the hard-particle TvNS amplitude A_d(phi) from hydro (Henderson EOS
-  // in 2D, Carnahan-Starling in 3D) sizes the box and is written to the outputs.
-  std::string A_d_source;
-  if (config.A_d == 0.0) {
-    const double phi = md::resolve_scene(config).phi;
-    const hydro::TvnsSolution tvns = hydro::solve_tvns_for_md(config.d, phi);
-    config.A_d = tvns.A();
-    A_d_source = "hydro TvNS, " + hydro::to_string(tvns.config().eos) + " EOS at phi = " + common::format_number(phi);
-  }
+  const compare::MdRunPlan plan = compare::plan_md_run(request);
+  const md::BlastConfig& config = plan.config;
+  const std::string& A_d_source = plan.A_d_source;
   md::RunOptions options;
   options.threads = o.threads;
   options.shard_index = shard_index;

@@ -13,6 +13,7 @@
 #include "common/input.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
+#include "hydro/options.hpp"
 #include "hydro/tvns.hpp"
 
 namespace coldblast::cli {
@@ -76,38 +77,9 @@ std::vector<double> parse_at(const std::string& text) {
   return values;
 }
 
-/// Maps the flags to a TvnsConfig, naming the option in every error.
+/// Maps the flags to a TvnsConfig (validation and messages in hydro/options.hpp).
 hydro::TvnsConfig make_config(const TvnsOptions& options) {
-  common::require_integer_in_range("--d", options.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
-  hydro::TvnsConfig config;
-  config.d = options.d;
-  config.eos = hydro::eos_from_string(options.eos, "--eos");
-  if (config.eos == hydro::Eos::ideal) {
-    if (options.gamma != 0.0)
-      common::require_in_range("--gamma", options.gamma, hydro::min_gamma, hydro::max_gamma, common::Bound::closed,
-                               common::Bound::closed, "(0 selects 1 + 2/d)");
-    if (options.phi != 0.0)
-      throw std::invalid_argument("--phi = " + common::format_number(options.phi) +
-                                  " needs a hard-particle --eos (henderson for d = 2, carnahan-starling for d = 3)");
-    config.gamma = options.gamma;
-  } else {
-    const int eos_d = hydro::eos_dimension(config.eos);
-    if (eos_d != options.d)
-      throw std::invalid_argument("--eos = " + options.eos + " is for --d = " + std::to_string(eos_d) +
-                                  " only, not --d = " + std::to_string(options.d));
-    if (options.gamma != 0.0)
-      throw std::invalid_argument("--gamma = " + common::format_number(options.gamma) +
-                                  " cannot be set with --eos = " + options.eos + " (hard particles: e = (d/2) T)");
-    common::require_in_range("--phi", options.phi, 0.0, hydro::max_ambient_packing_fraction(config.eos),
-                             common::Bound::open, common::Bound::open,
-                             "for --eos = " + options.eos + " (post-shock phi must stay below close packing " +
-                                 common::format_number(hydro::close_packing_fraction(config.eos)) + ")");
-    config.phi = options.phi;
-  }
-  common::require_in_range("--tolerance", options.tolerance, 1e-14, 1e-3, common::Bound::closed, common::Bound::closed);
-  config.tolerance = options.tolerance;
-  config.validate();
-  return config;
+  return hydro::tvns_config({options.d, options.gamma, options.eos, options.phi, options.tolerance});
 }
 
 common::Json point_json(const hydro::TvnsPoint& p) {

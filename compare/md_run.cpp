@@ -1,0 +1,48 @@
+#include "compare/md_run.hpp"
+
+#include <limits>
+#include <stdexcept>
+
+#include "common/input.hpp"
+#include "common/validate.hpp"
+#include "hydro/tvns.hpp"
+
+namespace coldblast::compare {
+
+MdRunPlan plan_md_run(const MdRunRequest& request) {
+  std::vector<std::string> overrides = request.overrides;
+  if (request.realizations != 0) {
+    common::require_integer_in_range("--realizations", request.realizations, 1, 1000000000);
+    overrides.push_back("realizations=" + std::to_string(request.realizations));
+  }
+  if (request.seed != -1) {
+    common::require_integer_in_range("--seed", request.seed, 0, std::numeric_limits<long long>::max());
+    overrides.push_back("seed=" + std::to_string(request.seed));
+  }
+  common::require_integer_in_range("--threads", request.threads, 1, 1024);
+  std::string text, source;
+  if (!request.scene_file.empty()) {
+    text = common::read_text(request.scene_file, "SCENE");
+    source = request.scene_file;
+  } else if (!request.scene_text.empty()) {
+    text = request.scene_text;
+    source = "scene";
+  } else {
+    text = md::default_scene_toml();
+    source = "default scene";
+  }
+  MdRunPlan plan;
+  plan.config = md::parse_scene(text, overrides, source);
+  // A_d = 0 means "not given": the hard-particle TvNS amplitude A_d(phi) from hydro (Henderson EOS
+  // in 2D, Carnahan-Starling in 3D) sizes the box and is written to the outputs.
+  if (plan.config.A_d == 0.0) {
+    const double phi = md::resolve_scene(plan.config).phi;
+    const hydro::TvnsSolution tvns = hydro::solve_tvns_for_md(plan.config.d, phi);
+    plan.config.A_d = tvns.A();
+    plan.A_d_source =
+        "hydro TvNS, " + hydro::to_string(tvns.config().eos) + " EOS at phi = " + common::format_number(phi);
+  }
+  return plan;
+}
+
+}  // namespace coldblast::compare

@@ -1,0 +1,44 @@
+#pragma once
+// Flag-level options of `coldblast tvns` and `coldblast hydro core|euler` mapped to the solver
+// configs, with the validation and messages of the command line (each error names the CLI flag,
+// its value and the allowed range). Shared by cli/ and the Python module (python/), so both reject
+// bad input with the same message.
+#include <optional>
+#include <string>
+
+#include "hydro/navier_stokes.hpp"
+#include "hydro/tvns.hpp"
+
+namespace coldblast::hydro {
+
+/// `coldblast tvns` options (units: m = 1, k_B = 1).
+struct TvnsOptions {
+  int d = 2;                  ///< 1 planar, 2 cylindrical, 3 spherical
+  double gamma = 0.0;         ///< ideal EOS only, [min_gamma, max_gamma]; 0 = 1 + 2/d
+  std::string eos = "ideal";  ///< ideal, henderson (d = 2) or carnahan-starling (d = 3)
+  double phi = 0.0;           ///< ambient packing fraction, hard-particle EOS only
+  double tolerance = 1e-13;   ///< requested relative accuracy of A_d, [1e-14, 1e-3]
+};
+/// The validated TvnsConfig; throws std::invalid_argument naming the flag (--d, --gamma, --eos,
+/// --phi, --tolerance).
+TvnsConfig tvns_config(const TvnsOptions& options);
+
+/// `coldblast hydro core|euler` options.
+struct HydroOptions {
+  int d = 2;                              ///< 1 planar, 2 cylindrical, 3 spherical
+  double until = 0.0;                     ///< R/lambda at the end; 0 = the mode's default
+  int cells = 256;                        ///< finite-volume cells, [16, 100000]
+  bool viscosity = false;                 ///< shear viscosity (core mode)
+  std::optional<double> kappa_prefactor;  ///< c_kappa in [0, 1e6] (core mode); empty = Chapman-Enskog
+  std::string eos = "ideal";              ///< ideal, henderson (d = 2) or carnahan-starling (d = 3)
+  double phi = 0.0;                  ///< ambient packing fraction; 0 = the library's default for a hard-particle EOS
+  std::string transport = "dilute";  ///< transport coefficients (hydro::transport_from_string)
+};
+/// Default end of the run: R/lambda = 1e4 (core), 500 (Euler).
+inline constexpr double default_core_until = 1e4;
+inline constexpr double default_euler_until = 500;
+/// The validated NavierStokesConfig of core (euler = false) or Euler (kappa = mu = 0) mode; throws
+/// std::invalid_argument naming the flag (--d, --cells, --until, --eos, --transport, --kappa-prefactor).
+NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler);
+
+}  // namespace coldblast::hydro

@@ -1,0 +1,436 @@
+// _coldblast: the pybind11 extension under the Python package `coldblast` (python/coldblast/).
+// It calls the library functions the CLI calls (no second implementation): theory exponents, the
+// exact TvNS solution, the Navier–Stokes core, MD ensembles, run-directory reading and the
+// verdicts. Long work runs on a worker thread with the GIL released while the calling thread polls
+// for Ctrl-C every 0.1 s (common/interrupt.hpp stops the work between units) and reports progress.
+// std::invalid_argument becomes ValueError with the CLI's message (pybind11's translation).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <functional>
+#include <future>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/interrupt.hpp"
+#include "common/validate.hpp"
+#include "compare/md_run.hpp"
+#include "compare/report.hpp"
+#include "compare/run_data.hpp"
+#include "compare/verdict.hpp"
+#include "hydro/options.hpp"
+#include "md/ensemble.hpp"
+#include "theory/exponents.hpp"
+
+namespace py = pybind11;
+using namespace coldblast;
+
+namespace {
+
+// ---- running long work: GIL released, Ctrl-C polled, progress reported --------------------------
+
+/// Progress shared between the worker (writes) and the polling thread (reads, calls Python).
+class Progress {
+ public:
+  explicit Progress(py::object callback) : callback_(std::move(callback)) {}
+  void set(double done, double total) {
+    total_.store(total);
+    done_.store(done);
+  }
+  /// With the GIL: calls callback(done, total) when the progress moved.
+  void report() {
+    if (callback_.is_none()) return;
+    const double done = done_.load(), total = total_.load();
+    if (done == reported_) return;
+    reported_ = done;
+    callback_(done, total);
+  }
+
+ private:
+  py::object callback_;
+  std::atomic<double> done_{-1.0}, total_{0.0};
+  double reported_ = -1.0;
+};
+
+/// Runs `work` on a worker thread; the calling thread (holding the GIL between polls) checks for
+/// pending Python signals every 0.1 s. On KeyboardInterrupt (or an exception from the progress
+/// callback) it requests a stop, waits for the worker to leave at its next check, and re-raises.
+template <class Result>
+Result run_interruptible(const std::function<Result()>& work, Progress& progress) {
+  common::clear_stop();
+  std::future<Result> future = std::async(std::launch::async, work);
+  const auto stop_and_wait = [&future] {
+    common::request_stop(SIGINT);
+    {
+      py::gil_scoped_release release;
+      future.wait();
+    }
+    common::clear_stop();
+  };
+  for (;;) {
+    std::future_status status;
+    {
+      py::gil_scoped_release release;
+      status = future.wait_for(std::chrono::milliseconds(100));
+    }
+    try {
+      progress.report();
+    } catch (...) {
+      stop_and_wait();
+      throw;
+    }
+    if (status == std::future_status::ready) break;
+    if (PyErr_CheckSignals() != 0) {
+      py::error_already_set error;  // takes the pending KeyboardInterrupt
+      stop_and_wait();
+      throw error;
+    }
+  }
+  return future.get();  // rethrows the library's exceptions
+}
+
+// ---- conversions ------------------------------------------------------------------------------
+
+py::array_t<double> array(const std::vector<double>& values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+template <class T, class Getter>
+py::array_t<double> column(const std::vector<T>& rows, Getter get) {
+  py::array_t<double> out(static_cast<py::ssize_t>(rows.size()));
+  double* data = out.mutable_data();
+  for (std::size_t i = 0; i < rows.size(); ++i) data[i] = get(rows[i]);
+  return out;
+}
+
+py::tuple fraction(const theory::Rational& value) {
+  return py::make_tuple(value.numerator(), value.denominator());
+}
+
+py::object json_to_python(const common::Json& document) {
+  return py::module_::import("json").attr("loads")(document.dump());
+}
+
+// ---- theory -----------------------------------------------------------------------------------
+
+py::dict theory_exponents(int d) {
+  common::require_integer_in_range("--d", d, theory::min_dimension, theory::max_dimension);
+  const theory::ScalingExponents s = theory::scaling_exponents(d);
+  const theory::ConvectionDiffusionExponents c = theory::convection_diffusion_exponents(d);
+  py::dict in_time, in_R;
+  for (const auto& [name, e] : s.named()) {
+    in_time[py::str(name)] = fraction(e.in_time);
+    in_R[py::str(name)] = fraction(e.in_R_over_lambda);
+  }
+  py::dict convection;
+  convection["drift"] = fraction(c.drift);
+  convection["diffusion"] = fraction(c.diffusion);
+  convection["spread"] = fraction(c.spread);
+  convection["density"] = fraction(c.density);
+  convection["gaussian_coefficient"] = fraction(c.gaussian_coefficient);
+  py::dict out;
+  out["d"] = d;
+  out["pathological"] = s.pathological;
+  out["h_d"] = fraction(s.h_d);
+  out["omega_d"] = fraction(s.omega_d);
+  out["in_time"] = in_time;
+  out["in_R_over_lambda"] = in_R;
+  out["convection_diffusion"] = convection;
+  return out;
+}
+
+// ---- TvNS -------------------------------------------------------------------------------------
+
+const char* case_name(hydro::TvnsCase c) {
+  return c == hydro::TvnsCase::standard ? "standard" : c == hydro::TvnsCase::singular ? "singular" : "vacuum";
+}
+
+py::dict tvns_profile(const hydro::TvnsSolution& s,
+                      const py::array_t<double, py::array::c_style | py::array::forcecast>& x) {
+  std::vector<double> xs(x.data(), x.data() + x.size());
+  std::vector<hydro::TvnsPoint> points;
+  {
+    py::gil_scoped_release release;
+    points = s.profile(xs);
+  }
+  std::vector<py::ssize_t> shape(x.shape(), x.shape() + x.ndim());
+  py::dict out;
+  const auto field = [&](double hydro::TvnsPoint::*member) {
+    py::array_t<double> a(shape);
+    double* data = a.mutable_data();
+    for (std::size_t i = 0; i < points.size(); ++i) data[i] = points[i].*member;
+    return a;
+  };
+  out["r_over_R"] = field(&hydro::TvnsPoint::r_over_R);
+  out["density"] = field(&hydro::TvnsPoint::density);
+  out["velocity"] = field(&hydro::TvnsPoint::velocity);
+  out["pressure"] = field(&hydro::TvnsPoint::pressure);
+  out["temperature"] = field(&hydro::TvnsPoint::temperature);
+  return out;
+}
+
+// ---- hydro ------------------------------------------------------------------------------------
+
+py::dict hydro_result(const hydro::NavierStokesResult& r) {
+  py::dict samples;
+  using S = hydro::NavierStokesSample;
+  const auto& ss = r.samples;
+  samples["t"] = column(ss, [](const S& s) { return s.t; });
+  samples["R_over_lambda"] = column(ss, [](const S& s) { return s.R_over_lambda; });
+  samples["R"] = column(ss, [](const S& s) { return s.R; });
+  samples["H"] = column(ss, [](const S& s) { return s.H; });
+  samples["H_density"] = column(ss, [](const S& s) { return s.H_density; });
+  samples["n0"] = column(ss, [](const S& s) { return s.n0; });
+  samples["T0"] = column(ss, [](const S& s) { return s.T0; });
+  samples["p0"] = column(ss, [](const S& s) { return s.p0; });
+  samples["energy"] = column(ss, [](const S& s) { return s.energy; });
+  samples["mass"] = column(ss, [](const S& s) { return s.mass; });
+  samples["energy_error"] = column(ss, [](const S& s) { return s.energy_error; });
+  samples["H_prefactor"] = column(ss, [](const S& s) { return s.H_prefactor; });
+  samples["n0_prefactor"] = column(ss, [](const S& s) { return s.n0_prefactor; });
+  samples["T0_prefactor"] = column(ss, [](const S& s) { return s.T0_prefactor; });
+  samples["p0_scaled"] = column(ss, [](const S& s) { return s.p0_scaled; });
+  py::dict exponents;
+  using E = hydro::RunningExponents;
+  const auto& es = r.exponents;
+  exponents["t"] = column(es, [](const E& e) { return e.t; });
+  exponents["R_over_lambda"] = column(es, [](const E& e) { return e.R_over_lambda; });
+  exponents["R"] = column(es, [](const E& e) { return e.R; });
+  exponents["H"] = column(es, [](const E& e) { return e.H; });
+  exponents["H_density"] = column(es, [](const E& e) { return e.H_density; });
+  exponents["n0"] = column(es, [](const E& e) { return e.n0; });
+  exponents["T0"] = column(es, [](const E& e) { return e.T0; });
+  exponents["H_in_R"] = column(es, [](const E& e) { return e.H_in_R; });
+  exponents["H_density_in_R"] = column(es, [](const E& e) { return e.H_density_in_R; });
+  exponents["n0_in_R"] = column(es, [](const E& e) { return e.n0_in_R; });
+  exponents["T0_in_R"] = column(es, [](const E& e) { return e.T0_in_R; });
+  py::list profiles;
+  for (const hydro::NavierStokesProfile& p : r.profiles) {
+    py::dict profile;
+    profile["t"] = p.t;
+    profile["R"] = p.R;
+    profile["r"] = array(p.r);
+    profile["r_over_R"] = array(p.r_over_R);
+    profile["density"] = array(p.density);
+    profile["velocity"] = array(p.velocity);
+    profile["temperature"] = array(p.temperature);
+    profile["pressure"] = array(p.pressure);
+    profile["heat_flux"] = array(p.heat_flux);
+    profiles.append(profile);
+  }
+  const hydro::RunningExponents f = r.final_exponents();
+  const hydro::NavierStokesSample& s = r.final_sample();
+  py::dict final_exponents;
+  final_exponents["H"] = f.H;
+  final_exponents["n0"] = f.n0;
+  final_exponents["T0"] = f.T0;
+  final_exponents["R"] = f.R;
+  py::dict prefactors;
+  prefactors["H"] = s.H_prefactor;
+  prefactors["n0"] = s.n0_prefactor;
+  prefactors["T0"] = s.T0_prefactor;
+  py::dict out;
+  out["d"] = r.config.physics.d;
+  out["eos"] = hydro::to_string(r.config.physics.eos);
+  out["phi"] = r.config.physics.phi;
+  out["transport"] = hydro::to_string(r.config.physics.transport);
+  out["R_over_lambda"] = s.R_over_lambda;
+  out["final_exponents"] = final_exponents;
+  out["prefactors"] = prefactors;
+  out["p0_scaled"] = s.p0_scaled;
+  out["lambda"] = r.lambda;
+  out["kappa_prefactor"] = r.kappa_prefactor;
+  out["viscosity_prefactor"] = r.viscosity_prefactor;
+  out["A_reference"] = r.A_reference;
+  out["A_measured"] = r.A_measured;
+  out["energy_error"] = r.max_energy_error;
+  out["cells"] = r.config.numerics.cells;
+  out["wall_seconds"] = r.statistics.wall_seconds;
+  out["rhs_evaluations"] = r.statistics.rhs_evaluations;
+  out["samples"] = samples;
+  out["exponents"] = exponents;
+  out["profiles"] = profiles;
+  if (!r.config.physics.heat_conduction) {
+    const hydro::TvnsComparison c = hydro::compare_to_tvns(r);
+    py::dict tvns;
+    tvns["A_measured"] = c.A_measured;
+    tvns["A_exact"] = c.A_exact;
+    tvns["A_relative_error"] = c.A_relative_error;
+    tvns["L1_density"] = c.L1_density;
+    tvns["L1_velocity"] = c.L1_velocity;
+    tvns["L1_pressure"] = c.L1_pressure;
+    out["tvns"] = tvns;
+  }
+  return out;
+}
+
+py::dict hydro_run(bool euler, int d, double until, int cells, bool viscosity, std::optional<double> kappa_prefactor,
+                   const std::string& eos, double phi, const std::string& transport,
+                   const py::object& progress_callback) {
+  hydro::HydroOptions options;
+  options.d = d;
+  options.until = until;
+  options.cells = cells;
+  options.viscosity = viscosity;
+  options.kappa_prefactor = kappa_prefactor;
+  options.eos = eos;
+  options.phi = phi;
+  options.transport = transport;
+  const hydro::NavierStokesConfig config = hydro::navier_stokes_config(options, euler);
+  Progress progress(progress_callback);
+  const std::function<hydro::NavierStokesResult()> work = [&] {
+    return hydro::run_navier_stokes(config, [&](const hydro::NavierStokesSample& s) {
+      progress.set(s.R_over_lambda, config.until_R_over_lambda);
+      common::throw_if_stop_requested();  // Ctrl-C: leave the integrator (its handles are RAII)
+    });
+  };
+  return hydro_result(run_interruptible(work, progress));
+}
+
+// ---- MD ---------------------------------------------------------------------------------------
+
+py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
+                long long realizations, long long seed, int threads, const std::string& out,
+                const py::object& progress_callback) {
+  compare::MdRunRequest request;
+  request.scene_file = scene_file;
+  request.scene_text = scene_text;
+  request.overrides = overrides;
+  request.realizations = realizations;
+  request.seed = seed;
+  request.threads = threads;
+  const compare::MdRunPlan plan = compare::plan_md_run(request);
+  md::RunOptions options;
+  options.threads = threads;
+  Progress progress(progress_callback);
+  options.progress = [&progress](long long done, long long total) {
+    progress.set(static_cast<double>(done), static_cast<double>(total));
+  };
+  // As `md run --out DIR`: finished blocks are checkpointed in DIR/checkpoint until the outputs
+  // are written (an interrupted run keeps them; `coldblast md run --resume DIR` continues).
+  if (!out.empty()) options.checkpoint = std::filesystem::path(out) / "checkpoint";
+  const std::function<md::BlastResult()> work = [&] { return md::run_blast(plan.config, options); };
+  md::BlastResult result = run_interruptible(work, progress);
+  if (!plan.A_d_source.empty()) result.scene.A_d_source = plan.A_d_source;
+  if (!out.empty()) {
+    md::write_blast_outputs(result, out);
+    std::error_code ignored;
+    std::filesystem::remove_all(options.checkpoint, ignored);
+  }
+  // Estimates per observable, in output order (observables.csv).
+  std::map<std::string, std::vector<const md::ObservableEstimate*>> by_name;
+  std::vector<std::string> order;
+  const std::vector<md::ObservableEstimate> rows = md::estimate_observables(result);
+  for (const auto& row : rows) {
+    if (!by_name.count(row.observable)) order.push_back(row.observable);
+    by_name[row.observable].push_back(&row);
+  }
+  py::dict estimates;
+  for (const std::string& name : order) {
+    const auto& list = by_name[name];
+    py::dict e;
+    e["t"] = column(list, [](const md::ObservableEstimate* r) { return r->t; });
+    e["mean"] = column(list, [](const md::ObservableEstimate* r) { return r->mean; });
+    e["stderr"] = column(list, [](const md::ObservableEstimate* r) { return r->stderr_; });
+    py::array_t<long long> count(static_cast<py::ssize_t>(list.size()));
+    for (std::size_t i = 0; i < list.size(); ++i) count.mutable_data()[i] = list[i]->count;
+    e["count"] = count;
+    estimates[py::str(name)] = e;
+  }
+  py::dict files;
+  for (const auto& [name, content] : result.realization0_files) files[py::str(name)] = content;
+  py::dict output;
+  output["estimates"] = estimates;
+  output["summary"] = json_to_python(md::blast_summary(result));
+  output["realization0_files"] = files;
+  return output;
+}
+
+// ---- run directories and verdicts ---------------------------------------------------------------
+
+py::object read_run_summary(const std::string& directory) {
+  return json_to_python(compare::read_run(directory).summary);
+}
+
+py::object compare_run(const std::string& run_dir, const std::string& against, double sigma, double allowance,
+                       double window_decades, double until, const std::vector<std::string>& observables,
+                       int hydro_cells, const std::string& out, bool figures, const py::object& progress_callback) {
+  compare::CompareConfig config;
+  config.run_dir = run_dir;
+  config.against = compare::parse_reference(against);
+  config.sigma = sigma;
+  config.allowance = allowance;
+  config.window_decades = window_decades;
+  config.until = until;
+  config.observables = observables;
+  config.hydro_cells = hydro_cells;
+  Progress progress(progress_callback);
+  const std::function<compare::CompareResult()> work = [&] {
+    compare::CompareResult result = compare::run_compare(config);
+    if (!out.empty()) compare::write_report(result, {out, figures});
+    return result;
+  };
+  return json_to_python(compare::verdict_json(run_interruptible(work, progress)));
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_coldblast, m) {
+  m.doc() = "coldblast's C++ library (use the `coldblast` package, not this module directly)";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const common::Interrupted&) {
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
+    }
+  });
+
+  m.def("theory_exponents", &theory_exponents, py::arg("d"));
+
+  py::class_<hydro::TvnsSolution>(m, "TvnsSolution")
+      .def_property_readonly("d", [](const hydro::TvnsSolution& s) { return s.config().d; })
+      .def_property_readonly("eos", [](const hydro::TvnsSolution& s) { return hydro::to_string(s.config().eos); })
+      .def_property_readonly("phi", [](const hydro::TvnsSolution& s) { return s.config().phi; })
+      .def_property_readonly("tolerance", [](const hydro::TvnsSolution& s) { return s.config().tolerance; })
+      .def_property_readonly("gamma", &hydro::TvnsSolution::gamma)
+      .def_property_readonly("A", &hydro::TvnsSolution::A)
+      .def_property_readonly("A_error", &hydro::TvnsSolution::A_error)
+      .def_property_readonly("method_agreement", &hydro::TvnsSolution::method_agreement)
+      .def_property_readonly("A_closed_form", &hydro::TvnsSolution::A_closed_form)
+      .def_property_readonly("A_ode", &hydro::TvnsSolution::A_ode)
+      .def_property_readonly("case", [](const hydro::TvnsSolution& s) { return case_name(s.solution_case()); })
+      .def_property_readonly("shock_compression", &hydro::TvnsSolution::shock_compression)
+      .def_property_readonly("shock_packing_fraction", &hydro::TvnsSolution::shock_packing_fraction)
+      .def_property_readonly("cavity_radius", &hydro::TvnsSolution::cavity_radius)
+      .def_property_readonly("density_exponent", &hydro::TvnsSolution::density_exponent)
+      .def_property_readonly("temperature_exponent", &hydro::TvnsSolution::temperature_exponent)
+      .def("profile", &tvns_profile, py::arg("r_over_R"));
+  m.def(
+      "tvns_solve",
+      [](int d, double gamma, const std::string& eos, double phi, double tolerance) {
+        const hydro::TvnsConfig config = hydro::tvns_config({d, gamma, eos, phi, tolerance});
+        py::gil_scoped_release release;
+        return hydro::solve_tvns(config);
+      },
+      py::arg("d"), py::arg("gamma"), py::arg("eos"), py::arg("phi"), py::arg("tolerance"));
+
+  m.def("hydro_run", &hydro_run, py::arg("euler"), py::arg("d"), py::arg("until"), py::arg("cells"),
+        py::arg("viscosity"), py::arg("kappa_prefactor"), py::arg("eos"), py::arg("phi"), py::arg("transport"),
+        py::arg("progress"));
+  m.def("md_run", &md_run, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("realizations"),
+        py::arg("seed"), py::arg("threads"), py::arg("out"), py::arg("progress"));
+  m.def("default_scene_toml", [] { return md::default_scene_toml(); });
+  m.def("read_run_summary", &read_run_summary, py::arg("directory"));
+  m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
+        py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"), py::arg("out"),
+        py::arg("figures"), py::arg("progress"));
+}

@@ -1,0 +1,25 @@
+"""coldblast: a blast in a zero-temperature hard-sphere gas, from Python.
+
+The same C++ library as the ``coldblast`` command line (pybind11 extension ``_coldblast``); numbers
+are identical to the CLI's for the same inputs. Units everywhere: m = 1, k_B = 1, ``a`` is the
+particle radius (diameter 2a), T means k_B T.
+
+- ``coldblast.theory.exponents(d)``: the paper's exact exponents (fractions.Fraction).
+- ``coldblast.tvns(d=2, gamma=None, eos="ideal", phi=0)``: exact Taylor-von Neumann-Sedov blast,
+  amplitude A_d of Eq. (1) with its error, and the self-similar profile over numpy arrays.
+- ``coldblast.hydro.core(d=2, until=1e4, ...)``: the radial Navier-Stokes blast (numpy arrays).
+- ``coldblast.md.run(scene, realizations=..., threads=..., seed=..., out=None, **overrides)``:
+  an MD ensemble; estimates per observable (t, mean, stderr) and the summary.
+- ``coldblast.read_run(dir)``: a run directory (CLI- or Python-made) as pandas DataFrames.
+- ``coldblast.compare(run_dir, against="theory")``: the verdict of ``coldblast compare`` as a dict.
+
+Bad input raises ValueError with the CLI's exit-2 message; Ctrl-C raises KeyboardInterrupt within
+a fraction of a second and leaves no half-written file. Tour: docs/python.md.
+"""
+from . import _coldblast
+from . import hydro, md, theory
+from ._run import Run, read_run
+from ._tvns import Tvns, tvns
+from ._compare import compare
+
+__all__ = ["theory", "tvns", "Tvns", "hydro", "md", "read_run", "Run", "compare"]

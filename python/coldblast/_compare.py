@@ -1,0 +1,42 @@
+"""The verdict of an MD run against theory, the paper's Table 1 or hydro (``coldblast compare``)."""
+import os
+
+from . import _coldblast
+from . import _progress
+
+
+def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades=0.5, until=None,
+            observables=None, hydro_cells=256, out=None, figures=True):
+    """Compare a run directory's running exponents with a reference (the same call as ``coldblast compare``).
+
+    Parameters
+    ----------
+    run_dir : str or os.PathLike
+        An ``md run`` output directory (CLI- or Python-made).
+    against : str
+        "theory" (exact rationals), "paper" (Table 1, d = 2 only) or "hydro" (Navier-Stokes at the MD's R/lambda).
+    sigma : float
+        Pass when |alpha_S - alpha_ref| <= sigma * error (+ allowance); (0, 10].
+    allowance : float or None
+        Finite-time allowance in [0, 1]; None: the reference's default (theory 0.10, hydro 0.05, paper 0).
+    window_decades : float
+        Window fit over the last w decades of recorded time, (0, 6].
+    until : float or None
+        Measure as of this time (in [second, last] recorded time); None: all times.
+    observables : list of str or None
+        Subset of R_imp, C_imp, V_imp, u_imp, T0, n0; None: all recorded.
+    hydro_cells : int
+        Navier-Stokes cells for against="hydro", [16, 100000].
+    out : str, os.PathLike or None
+        Report directory (report.md, verdict.json, exponents.csv, figures/), or None.
+    figures : bool
+        Draw the gnuplot figures into out/figures.
+
+    Returns the verdict as a dict: the JSON of ``coldblast compare --format json`` (keys in
+    docs/cli.md), with ``pass`` True or False (no exception for a failed verdict).
+    Raises ValueError with the CLI's message for bad input or a directory that is not a run.
+    """
+    return _coldblast.compare(os.fspath(run_dir), str(against), float(sigma),
+                              -1.0 if allowance is None else float(allowance), float(window_decades),
+                              0.0 if until is None else float(until), list(observables or []), int(hydro_cells),
+                              "" if out is None else os.fspath(out), bool(figures), None)

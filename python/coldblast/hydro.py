@@ -1,0 +1,68 @@
+"""The radial Navier-Stokes blast (``coldblast hydro core|euler``; paper Sec. III, Eqs. (4), (11)-(20))."""
+from types import SimpleNamespace
+
+from . import _coldblast
+from . import _progress
+from . import theory as _theory
+
+
+def _run(euler, d, until, cells, viscosity, kappa_prefactor, progress, eos="ideal", phi=0.0, transport="dilute"):
+    label = "hydro euler" if euler else "hydro core"
+    raw = _coldblast.hydro_run(euler, int(d), float(until or 0), int(cells), bool(viscosity),
+                               None if kappa_prefactor is None else float(kappa_prefactor), str(eos), float(phi),
+                               str(transport),
+                               _progress.callback(progress, label, "R/lambda", "{:.4g}"))
+    return SimpleNamespace(**raw)
+
+
+def core(d=2, until=1e4, cells=256, viscosity=False, kappa_prefactor=None, eos="ideal", phi=0.0, transport="dilute",
+         progress=True):
+    """Heat-conducting blast up to R/lambda = until (the same call as ``coldblast hydro core``).
+
+    Parameters
+    ----------
+    d : int
+        1 planar, 2 cylindrical, 3 spherical.
+    until : float
+        R/lambda at the end, (2, 1e12] (lambda = mean free path, Eq. (5)); seconds for 1e4.
+    cells : int
+        Finite-volume cells, [16, 100000].
+    viscosity : bool
+        Shear viscosity mu = c_mu n lambda sqrt(T) on or off.
+    kappa_prefactor : float or None
+        c_kappa in [0, 1e6] of kappa = c_kappa n lambda sqrt(T); None = Chapman-Enskog.
+    eos, phi, transport : str, float, str
+        Equation of state ("ideal", "henderson" for d = 2, "carnahan-starling" for d = 3), ambient
+        packing fraction (0: the library's default for a hard-particle EOS) and transport
+        ("dilute" or "enskog"), as ``--eos --phi --transport`` (docs/hydro.md).
+    progress : bool or callable
+        True: R/lambda on stderr; False: silent; callable(R_over_lambda, until).
+
+    Returns
+    -------
+    types.SimpleNamespace with
+        ``samples``: dict of float64 arrays (t, R_over_lambda, R, H, H_density, n0, T0, p0, energy,
+        mass, energy_error, H_prefactor, n0_prefactor, T0_prefactor, p0_scaled), one entry per sample;
+        ``exponents``: dict of float64 arrays of running exponents d ln X/d ln t (t, R_over_lambda,
+        R, H, H_density, n0, T0) and in R/lambda (H_in_R, ...);
+        ``profiles``: list of dicts (t, R and float64 arrays r, r_over_R, density, velocity,
+        temperature, pressure, heat_flux), the last at R/lambda = until;
+        ``final_exponents`` (H, n0, T0, R), ``theory`` (the exact Fractions), ``prefactors``,
+        ``R_over_lambda``, ``p0_scaled``, ``kappa_prefactor``, ``viscosity_prefactor``,
+        ``energy_error``, ``cells``, ``wall_seconds``, ``rhs_evaluations`` (as the CLI's JSON).
+    Units: m = k_B = 1 with the CLI's E = 1, n = 1, a = 1/2 (lambda = 1 in 2D).
+    Ctrl-C raises KeyboardInterrupt within a fraction of a second.
+    """
+    result = _run(False, d, until, cells, viscosity, kappa_prefactor, progress, eos, phi, transport)
+    exact = _theory.exponents(int(d))
+    result.theory = {name: exact[name] for name in ("H", "n0", "T0", "R")}
+    return result
+
+
+def euler(d=2, until=500, cells=256, eos="ideal", phi=0.0, progress=True):
+    """Euler limit (kappa = mu = 0) against the exact TvNS solution (``coldblast hydro euler``).
+
+    Same arguments and result as :func:`core`, plus ``tvns`` (A_measured, A_exact,
+    A_relative_error, L1_density, L1_velocity, L1_pressure).
+    """
+    return _run(True, d, until, cells, False, None, progress, eos, phi)

@@ -1,0 +1,120 @@
+"""Event-driven MD ensembles of the blast (``coldblast md run``; paper Sec. V, docs/md-output.md)."""
+import math
+import os
+from types import SimpleNamespace
+
+import numpy as np
+
+from . import _coldblast
+from . import _progress
+
+
+def _toml_value(value, key):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        value = float(value)
+        if math.isnan(value):
+            return "nan"
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        return repr(value)
+    if isinstance(value, str):
+        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return "[" + ", ".join(_toml_value(v, key) for v in value) + "]"
+    raise ValueError(f"scene key {key} = {value!r}: not a number, string, bool or list")
+
+
+def _flatten(mapping, prefix=""):
+    """{"impurities": {"count": 2}} -> [("impurities.count", 2)]."""
+    items = []
+    for key, value in mapping.items():
+        name = prefix + str(key)
+        if isinstance(value, dict):
+            items.extend(_flatten(value, name + "."))
+        else:
+            items.append((name, value))
+    return items
+
+
+def scene_toml(scene):
+    """A scene dict (keys of docs/md-output.md; ``impurities`` a nested dict) as TOML text."""
+    lines = [f"{key} = {_toml_value(value, key)}" for key, value in _flatten(scene)]
+    return "\n".join(lines) + "\n"
+
+
+def default_scene():
+    """The embedded default scene (d = 2, E = 10, t_max = 200, 32 realizations) as TOML text."""
+    return _coldblast.default_scene_toml()
+
+
+def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, **overrides):
+    """Run an MD ensemble of blast realizations (the same call as ``coldblast md run``).
+
+    Parameters
+    ----------
+    scene : None, str, os.PathLike or dict
+        None: the embedded default scene (2D, E = 10, t_max = 200, seconds). A path: a TOML scene
+        file (scenes/paper-2d.toml, keys in docs/md-output.md). A dict: a scene with those keys
+        (``impurities`` a nested dict); keys left out take the library defaults.
+    realizations : int or None
+        Number of realizations, [1, 1e9]; None: the scene's.
+    threads : int
+        Worker threads, [1, 1024]; the numbers do not depend on it (bit-identical).
+    seed : int or None
+        Master seed >= 0; None: the scene's. Realization i is seeded from (seed, i).
+    out : str, os.PathLike or None
+        Output directory (observables.csv, blocks.csv, summary.json, ... as ``md run --out``),
+        written atomically at the end; None writes nothing.
+    progress : bool or callable
+        True: realizations done and ETA on stderr; False: silent; callable(done, total).
+    **overrides
+        Scene keys to override, as ``--set key=value``: ``E=20``, ``t_max=500``,
+        ``observables=["R_imp", "T0"]``, ``impurities={"count": 2}``.
+
+    Units: m = 1 (host mass), k_B = 1, lengths and times in the scene's units (a = particle radius).
+
+    Returns
+    -------
+    types.SimpleNamespace with
+        ``estimates``: {observable: {"t", "mean", "stderr": float64 arrays, "count": int64 array}}
+        for the scalar observables (R_imp, V_imp, C_imp, u_imp, n0, T0, R, ...; definitions in
+        docs/md-output.md), i.e. the rows of observables.csv;
+        ``summary``: the content of summary.json (dict);
+        ``realization0_files``: {name: text} of snapshot/trajectory files of realization 0;
+        ``out``: the output directory or None.
+
+    Raises ValueError with the CLI's exit-2 message for a bad scene or argument (e.g.
+    ``E = -1 is outside (0, inf)``), RuntimeError for a failed run, KeyboardInterrupt on Ctrl-C
+    (within ~0.1 s of the current realization's end; with ``out`` the finished blocks stay in
+    out/checkpoint, and nothing else is written).
+    """
+    scene_file, scene_text = "", ""
+    if scene is None:
+        pass
+    elif isinstance(scene, dict):
+        scene_text = scene_toml(scene)
+    elif isinstance(scene, (str, os.PathLike)):
+        scene_file = os.fspath(scene)
+        if not scene_file:
+            raise ValueError("SCENE = '' is empty (a TOML file, a dict, or None for the default scene)")
+    else:
+        raise ValueError(f"SCENE = {scene!r} is not a TOML path, a dict or None")
+    sets = [f"{key}={_toml_value(value, key)}" for key, value in _flatten(overrides)]
+    raw = _coldblast.md_run(scene_file, scene_text, sets,
+                            0 if realizations is None else _integer(realizations, "--realizations"),
+                            -1 if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
+                            "" if out is None else os.fspath(out),
+                            _progress.callback(progress, "md run", "realizations"))
+    return SimpleNamespace(estimates=raw["estimates"], summary=raw["summary"],
+                           realization0_files=raw["realization0_files"],
+                           out=None if out is None else os.fspath(out))
+
+
+def _integer(value, name):
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise ValueError(f"{name} = {value!r} is not an integer")
+    return int(value)

@@ -1,0 +1,47 @@
+"""The paper's scaling laws as exact fractions (``coldblast theory``; paper Table 2, Eqs. (4)-(12), Sec. IV)."""
+from fractions import Fraction
+
+from . import _coldblast
+
+
+class Exponents(dict):
+    """Time exponents t^alpha by name (R, H, R_imp, C_imp, V_imp, u_imp, n0, T0, D0) as Fractions.
+
+    Attributes: ``d``; ``pathological`` (d = 1: no hydrodynamics); ``h_d`` (Eq. (4)) and ``omega_d``
+    (Eq. (7)); ``in_R_over_lambda`` (the same exponents in R/lambda, a dict of Fractions);
+    ``convection_diffusion`` (Sec. IV: drift, diffusion, spread, density, gaussian_coefficient).
+    """
+
+    def __repr__(self):
+        items = ", ".join(f"{k}={v}" for k, v in self.items())
+        return f"Exponents(d={self.d}: {items})"
+
+
+def exponents(d=2):
+    """Exact exponents of the paper for dimension d.
+
+    Parameters
+    ----------
+    d : int
+        Spatial dimension, 1 <= d <= 10000 (1 is pathological: the impurity is caged).
+
+    Returns
+    -------
+    Exponents
+        A dict of ``fractions.Fraction`` time exponents, e.g. ``exponents(2)["R_imp"] == Fraction(2, 5)``,
+        with attributes ``in_R_over_lambda``, ``h_d``, ``omega_d``, ``convection_diffusion``.
+
+    Raises ValueError (the CLI's message, e.g. ``--d = 0 is outside [1, 10000]``) for d out of range.
+    """
+    if isinstance(d, bool) or not isinstance(d, int):
+        raise ValueError(f"--d = {d!r} is not an integer")
+    raw = _coldblast.theory_exponents(d)
+    frac = lambda pair: Fraction(*pair)
+    result = Exponents({name: frac(value) for name, value in raw["in_time"].items()})
+    result.d = raw["d"]
+    result.pathological = raw["pathological"]
+    result.h_d = frac(raw["h_d"])
+    result.omega_d = frac(raw["omega_d"])
+    result.in_R_over_lambda = {name: frac(value) for name, value in raw["in_R_over_lambda"].items()}
+    result.convection_diffusion = {name: frac(value) for name, value in raw["convection_diffusion"].items()}
+    return result
