@@ -47,7 +47,8 @@ class Run:
             if required:
                 raise ValueError(f"run directory: cannot read {path}")
             return None
-        return pd.read_csv(path, comment="#")
+        # round_trip: the files hold 17 significant digits; pandas' default parser can be 1 ulp off
+        return pd.read_csv(path, comment="#", float_precision="round_trip")
 
     def estimate(self, observable):
         """Rows of observables.csv for one observable (t, mean, stderr, count), sorted by t."""

@@ -1,0 +1,44 @@
+"""coldblast.compare against `coldblast compare --format json` on the CLI tests' fixture run."""
+import os
+
+import pytest
+
+import coldblast
+from conftest import REPO, cli_error, cli_json
+
+FIXTURE = os.path.join(REPO, "tests", "cli", "data", "run_T0_wrong")
+
+
+@pytest.mark.parametrize("against", ["theory", "paper"])
+def test_verdict_equals_cli(against):
+    expected = cli_json("compare", FIXTURE, "--against", against, expect=3)
+    verdict = coldblast.compare(FIXTURE, against=against)
+    assert verdict == expected
+    assert verdict["pass"] is False
+    assert {v["name"]: v["pass"] for v in verdict["observables"]}["T0"] is False
+
+
+def test_subset_and_report(tmp_path):
+    expected = cli_json("compare", FIXTURE, "--observables", "R_imp,n0", "--until", 200)
+    verdict = coldblast.compare(FIXTURE, observables=["R_imp", "n0"], until=200, out=tmp_path / "report",
+                                figures=False)
+    assert verdict == expected and verdict["pass"] is True
+    assert (tmp_path / "report" / "verdict.json").exists()
+
+
+@pytest.mark.parametrize("kwargs,flags", [
+    ({"against": "md"}, ["--against", "md"]),
+    ({"sigma": -1}, ["--sigma", -1]),
+    ({"until": 0.5}, ["--until", 0.5]),
+    ({"observables": ["speed"]}, ["--observables", "speed"]),
+])
+def test_bad_input_is_the_cli_error(kwargs, flags):
+    with pytest.raises(ValueError) as error:
+        coldblast.compare(FIXTURE, **kwargs)
+    assert str(error.value) == cli_error("compare", FIXTURE, *flags)
+
+
+def test_not_a_run(tmp_path):
+    with pytest.raises(ValueError) as error:
+        coldblast.compare(tmp_path)
+    assert str(error.value) == cli_error("compare", tmp_path)

@@ -1,0 +1,49 @@
+"""coldblast.hydro.core against `coldblast hydro core --format json`."""
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import coldblast
+from conftest import cli_error, cli_json
+
+
+def test_core_equals_cli_and_arrays():
+    expected = cli_json("hydro", "core", "--until", 200, "--cells", 128)
+    r = coldblast.hydro.core(until=200, cells=128, progress=False)
+    for name in ("H", "n0", "T0", "R"):
+        assert r.final_exponents[name] == expected["exponents"][name]["measured"]
+        assert float(r.theory[name]) == expected["exponents"][name]["theory"]
+    assert r.theory["T0"] == Fraction(-4, 5)
+    assert r.R_over_lambda == expected["R_over_lambda"]
+    assert r.prefactors == expected["prefactors"]
+    assert r.energy_error == expected["energy_error"] and r.cells == 128
+    n = len(r.samples["t"])
+    assert n > 10
+    for key, values in r.samples.items():
+        assert values.dtype == np.float64 and values.shape == (n,), key
+    assert np.all(np.diff(r.samples["R_over_lambda"]) > 0)
+    m = len(r.exponents["t"])
+    assert all(v.shape == (m,) for v in r.exponents.values())
+    final = r.profiles[-1]
+    assert final["r"].dtype == np.float64 and final["density"].shape == final["r"].shape
+    # Energy conservation: total energy = E + what entered through the outer edge (projection on).
+    assert np.max(np.abs(r.samples["energy_error"])) < 1e-10
+
+
+def test_progress_callback_sees_R_over_lambda():
+    seen = []
+    coldblast.hydro.core(until=50, cells=64, progress=lambda x, until: seen.append((x, until)))
+    assert seen and seen[-1][1] == 50 and seen[-1][0] >= 0.9 * 50
+
+
+@pytest.mark.parametrize("kwargs,flags", [
+    ({"d": 0}, ["--d", 0]),
+    ({"cells": 8}, ["--cells", 8]),
+    ({"until": 1.0}, ["--until", 1.0]),
+    ({"kappa_prefactor": -1}, ["--kappa-prefactor", -1]),
+])
+def test_bad_input_is_the_cli_error(kwargs, flags):
+    with pytest.raises(ValueError) as error:
+        coldblast.hydro.core(progress=False, **kwargs)
+    assert str(error.value) == cli_error("hydro", "core", *flags)

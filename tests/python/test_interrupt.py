@@ -1,0 +1,48 @@
+"""Ctrl-C: SIGINT to a child process running a long md.run raises KeyboardInterrupt within a second,
+writes no output file (finished blocks stay in the checkpoint), and the module stays usable."""
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+CHILD = textwrap.dedent("""
+    import sys, coldblast
+    def progress(done, total):
+        print("progress", done, total, flush=True)
+    try:
+        coldblast.md.run(realizations=1000000, threads=1, out=sys.argv[1], progress=progress)
+    except KeyboardInterrupt:
+        print("KeyboardInterrupt", flush=True)
+        after = coldblast.md.run(realizations=2, t_max=20, progress=False)  # the stop request was cleared
+        print("usable", after.summary["realizations"], flush=True)
+        sys.exit(7)
+    print("finished", flush=True)
+""")
+
+
+def test_sigint_interrupts_md_run(tmp_path):
+    out = tmp_path / "run"
+    child = subprocess.Popen([sys.executable, "-c", CHILD, str(out)], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    try:
+        line = child.stdout.readline()
+        assert line.startswith("progress"), line + child.stderr.read()
+        time.sleep(0.3)
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        lines = []
+        for line in child.stdout:
+            lines.append(line.strip())
+            if line.startswith("KeyboardInterrupt"):
+                latency = time.monotonic() - sent
+        code = child.wait(timeout=60)
+    finally:
+        if child.poll() is None:
+            child.kill()
+    assert "KeyboardInterrupt" in lines, lines
+    assert latency < 1.0
+    assert "usable 2" in lines and code == 7
+    assert not (out / "observables.csv").exists() and not (out / "summary.json").exists()
+    assert not any(name.endswith(".tmp") or ".tmp" in name for _, _, files in os.walk(tmp_path) for name in files)
