@@ -45,7 +45,7 @@ class Run:
         path = os.path.join(self.directory, name)
         if not os.path.exists(path):
             if required:
-                raise ValueError(f"run directory: cannot read {path}")
+                raise ValueError(f"RUN_DIR file = {path} cannot be read")  # the library's wording
             return None
         # round_trip: the files hold 17 significant digits; pandas' default parser can be 1 ulp off
         return pd.read_csv(path, comment="#", float_precision="round_trip")

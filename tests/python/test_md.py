@@ -69,10 +69,10 @@ def test_read_run_cli_and_python_directories(runs):
 
 
 def test_read_run_not_a_run(tmp_path):
-    with pytest.raises(ValueError, match="cannot read .*summary.json"):
+    with pytest.raises(ValueError, match=r"summary\.json"):
         coldblast.read_run(tmp_path)
     (tmp_path / "summary.json").write_text('{"d": 2}')
-    with pytest.raises(ValueError, match="cannot read .*blocks.csv"):
+    with pytest.raises(ValueError, match=r"blocks\.csv"):
         coldblast.read_run(tmp_path)
 
 
