@@ -31,6 +31,15 @@ def test_core_equals_cli_and_arrays():
     assert np.max(np.abs(r.samples["energy_error"])) < 1e-10
 
 
+def test_dense_core_equals_cli():
+    expected = cli_json("hydro", "core", "--until", 50, "--cells", 64, "--eos", "henderson", "--phi", 0.118,
+                        "--transport", "enskog")
+    r = coldblast.hydro.core(until=50, cells=64, eos="henderson", phi=0.118, transport="enskog", progress=False)
+    assert (r.eos, r.phi, r.transport) == ("henderson", 0.118, "enskog")
+    for name in ("H", "n0", "T0", "R"):
+        assert r.final_exponents[name] == expected["exponents"][name]["measured"]
+
+
 def test_progress_callback_sees_R_over_lambda():
     seen = []
     coldblast.hydro.core(until=50, cells=64, progress=lambda x, until: seen.append((x, until)))
@@ -42,6 +51,9 @@ def test_progress_callback_sees_R_over_lambda():
     ({"cells": 8}, ["--cells", 8]),
     ({"until": 1.0}, ["--until", 1.0]),
     ({"kappa_prefactor": -1}, ["--kappa-prefactor", -1]),
+    ({"eos": "vdw"}, ["--eos", "vdw"]),
+    ({"transport": "magic"}, ["--transport", "magic"]),
+    ({"eos": "henderson", "phi": 0.95}, ["--eos", "henderson", "--phi", 0.95]),
 ])
 def test_bad_input_is_the_cli_error(kwargs, flags):
     with pytest.raises(ValueError) as error:
