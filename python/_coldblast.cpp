@@ -363,7 +363,9 @@ py::object read_run_summary(const std::string& directory) {
 
 py::object compare_run(const std::string& run_dir, const std::string& against, double sigma, double allowance,
                        double window_decades, double until, const std::vector<std::string>& observables,
-                       int hydro_cells, const std::string& out, bool figures, const py::object& progress_callback) {
+                       int hydro_cells, const std::string& hydro_eos, std::optional<double> hydro_phi,
+                       const std::string& hydro_transport, const std::string& out, bool figures,
+                       const py::object& progress_callback) {
   compare::CompareConfig config;
   config.run_dir = run_dir;
   config.against = compare::parse_reference(against);
@@ -373,6 +375,10 @@ py::object compare_run(const std::string& run_dir, const std::string& against, d
   config.until = until;
   config.observables = observables;
   config.hydro_cells = hydro_cells;
+  if (!hydro_eos.empty()) config.hydro_model.eos = hydro::eos_from_string(hydro_eos, "--hydro-eos");
+  if (!hydro_transport.empty())
+    config.hydro_model.transport = hydro::transport_from_string(hydro_transport, "--hydro-transport");
+  if (hydro_phi) config.hydro_model.phi = *hydro_phi;
   Progress progress(progress_callback);
   const std::function<compare::CompareResult()> work = [&] {
     compare::CompareResult result = compare::run_compare(config);
@@ -431,6 +437,7 @@ PYBIND11_MODULE(_coldblast, m) {
   m.def("default_scene_toml", [] { return md::default_scene_toml(); });
   m.def("read_run_summary", &read_run_summary, py::arg("directory"));
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
-        py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"), py::arg("out"),
-        py::arg("figures"), py::arg("progress"));
+        py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"),
+        py::arg("hydro_eos"), py::arg("hydro_phi"), py::arg("hydro_transport"), py::arg("out"), py::arg("figures"),
+        py::arg("progress"));
 }

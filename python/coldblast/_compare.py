@@ -6,7 +6,8 @@ from . import _progress
 
 
 def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades=0.5, until=None,
-            observables=None, hydro_cells=256, out=None, figures=True):
+            observables=None, hydro_cells=256, hydro_eos=None, hydro_phi=None, hydro_transport=None, out=None,
+            figures=True):
     """Compare a run directory's running exponents with a reference (the same call as ``coldblast compare``).
 
     Parameters
@@ -27,6 +28,9 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
         Subset of R_imp, C_imp, V_imp, u_imp, T0, n0; None: all recorded.
     hydro_cells : int
         Navier-Stokes cells for against="hydro", [16, 100000].
+    hydro_eos, hydro_phi, hydro_transport : str, float, str or None
+        The Navier-Stokes model for against="hydro" (``--hydro-eos --hydro-phi --hydro-transport``);
+        None: the default (the hard-particle EOS at the run's phi, Enskog transport; docs/compare.md).
     out : str, os.PathLike or None
         Report directory (report.md, verdict.json, exponents.csv, figures/), or None.
     figures : bool
@@ -39,4 +43,5 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
     return _coldblast.compare(os.fspath(run_dir), str(against), float(sigma),
                               -1.0 if allowance is None else float(allowance), float(window_decades),
                               0.0 if until is None else float(until), list(observables or []), int(hydro_cells),
+                              hydro_eos or "", None if hydro_phi is None else float(hydro_phi), hydro_transport or "",
                               "" if out is None else os.fspath(out), bool(figures), None)

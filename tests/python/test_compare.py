@@ -31,6 +31,8 @@ def test_subset_and_report(tmp_path):
     ({"sigma": -1}, ["--sigma", -1]),
     ({"until": 0.5}, ["--until", 0.5]),
     ({"observables": ["speed"]}, ["--observables", "speed"]),
+    ({"against": "hydro"}, ["--against", "hydro"]),  # the fixture has no lambda in summary.json
+    ({"hydro_eos": "vdw"}, ["--hydro-eos", "vdw"]),
 ])
 def test_bad_input_is_the_cli_error(kwargs, flags):
     with pytest.raises(ValueError) as error:
