@@ -50,9 +50,7 @@ void paper_2d_setup(benchmark::State& state) {
   long long index = 0;
   for (auto _ : state) {
     const InitialState<2> initial = blast_initial_state<2>(scene, ++index);
-    EngineConfig<2> config;
-    config.region_radius = scene.region_radius;
-    config.guard_radius = scene.guard_radius;
+    const EngineConfig<2> config = blast_engine_config<2>(scene);
     Engine<2, CalendarEventQueue> engine(config, initial);
     benchmark::DoNotOptimize(engine.size());
   }

@@ -70,9 +70,7 @@ int blast(int realization, double t_max, double width) {
   const ResolvedScene scene = resolve_scene(c);
   const double t0 = cpu_seconds();
   const InitialState<D> state = blast_initial_state<D>(scene, realization);
-  EngineConfig<D> config;
-  config.region_radius = scene.region_radius;
-  config.guard_radius = scene.guard_radius;
+  EngineConfig<D> config = blast_engine_config<D>(scene);
   config.cell_width = width;
   Engine<D, CalendarEventQueue> engine(config, state);
   const double t1 = cpu_seconds();

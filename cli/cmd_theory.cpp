@@ -3,10 +3,13 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "common/validate.hpp"
 #include "theory/exponents.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::cli {
 
@@ -70,14 +73,14 @@ void print_detail(int d) {
 }
 
 void print_table(int d_first, int d_last) {
-  // Column order of the paper's Table 2, then R, H and D0.
-  const char* names[] = {"C_imp", "R_imp", "V_imp", "u_imp", "n0", "T0", "R", "H", "D0"};
+  // Column order of the paper's Table 2, then R, H and D0 (the catalogue's table2_column).
+  const std::vector<std::string> names = theory::table2_names();
   std::cout << "time exponents t^alpha (paper Table 2 for any d)\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-4s %-11s %-11s", "d", "h_d", "omega_d");
   std::cout << line;
-  for (const char* name : names) {
-    std::snprintf(line, sizeof line, "%-13s", name);
+  for (const std::string& name : names) {
+    std::snprintf(line, sizeof line, "%-13s", name.c_str());
     std::cout << line;
   }
   std::cout << '\n';
@@ -86,7 +89,7 @@ void print_table(int d_first, int d_last) {
     std::snprintf(line, sizeof line, "%-4d %-11s %-11s", d, theory::to_string(s.h_d).c_str(),
                   theory::to_string(s.omega_d).c_str());
     std::cout << line;
-    for (const char* name : names) {
+    for (const std::string& name : names) {
       std::snprintf(line, sizeof line, "%-13s", theory::to_string(s.at(name).in_time).c_str());
       std::cout << line;
     }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "theory/exponents.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::compare {
 
@@ -52,7 +53,10 @@ double HydroReference::exponent(const std::string& observable, double R_over_lam
     throw std::invalid_argument("hydro reference: R/lambda = " + std::to_string(R_over_lambda) +
                                 " is outside the solved range [" + std::to_string(min_R_over_lambda()) + ", " +
                                 std::to_string(max_R_over_lambda()) + "]");
-  if (observable == "C_imp") {
+  const theory::ObservableInfo* info = theory::find_observable(observable);
+  const theory::HydroProxy proxy = info ? info->hydro : theory::HydroProxy{};
+  const std::string quantity = proxy.quantity;
+  if (quantity == "collisions") {  // Eq. (10) [C-imp] integrated along the hydro solution
     const double x = std::log(R_over_lambda);
     const auto upper = std::upper_bound(log_R_over_lambda_.begin(), log_R_over_lambda_.end(), x);
     const std::size_t i = std::min<std::size_t>(std::max<std::ptrdiff_t>(upper - log_R_over_lambda_.begin(), 1),
@@ -60,14 +64,21 @@ double HydroReference::exponent(const std::string& observable, double R_over_lam
     const double w = (x - log_R_over_lambda_[i - 1]) / (log_R_over_lambda_[i] - log_R_over_lambda_[i - 1]);
     return (1 - w) * collision_exponent_[i - 1] + w * collision_exponent_[i];
   }
+  // The catalogue's proxies: R_imp ~ H (Eq. (6) [R-imp]), V_imp ~ √T0 (Sec. III), u_imp ~ R_imp/t
+  // (Eq. (22)), and n0, T0, R, H themselves.
   const hydro::RunningExponents e = result_.exponents_at(R_over_lambda);
-  if (observable == "R_imp" || observable == "H") return e.H;             // R_imp ~ H, Eq. (6) [R-imp]
-  if (observable == "V_imp") return 0.5 * e.T0;                           // V_imp ~ √T0, Sec. III
-  if (observable == "u_imp" || observable == "u_flow") return e.H - 1.0;  // u_imp ~ R_imp/t, Eq. (22)
-  if (observable == "n0") return e.n0;
-  if (observable == "T0") return e.T0;
-  if (observable == "R") return e.R;
-  throw std::invalid_argument("observable = " + observable + " has no hydro prediction");
+  double alpha = 0.0;
+  if (quantity == "H")
+    alpha = e.H;
+  else if (quantity == "T0")
+    alpha = e.T0;
+  else if (quantity == "n0")
+    alpha = e.n0;
+  else if (quantity == "R")
+    alpha = e.R;
+  else
+    throw std::invalid_argument("observable = " + observable + " has no hydro prediction");
+  return proxy.scale * alpha + proxy.shift;
 }
 
 }  // namespace coldblast::compare

@@ -11,6 +11,7 @@
 
 #include "common/validate.hpp"
 #include "compare/figures.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::compare {
 
@@ -104,14 +105,8 @@ void run_gnuplot(const fs::path& folder, const std::string& script_name) {
 namespace {
 
 std::string label(const std::string& name) {
-  if (name == "R_imp") return "R_{imp}";
-  if (name == "V_imp") return "V_{imp}";
-  if (name == "C_imp") return "C_{imp}";
-  if (name == "u_imp") return "u_{imp}";
-  if (name == "u_flow") return "u_{flow}";
-  if (name == "n0") return "n_0";
-  if (name == "T0") return "T_0";
-  return name;
+  const theory::ObservableInfo* info = theory::find_observable(name);
+  return info && *info->label != '\0' ? info->label : name;
 }
 
 // Fig. 2 of the paper: log-log panels of the observables, the theory slope through the last

@@ -12,11 +12,10 @@
 namespace coldblast::compare {
 
 Transform transform_for(const std::string& observable) {
-  if (observable == "R_imp" || observable == "V_imp" || observable == "u_flow") return Transform::sqrt;
-  static const std::set<std::string> identity = {"C_imp", "u_imp", "n0", "T0", "R", "H"};
-  if (identity.count(observable)) return Transform::identity;
-  throw std::invalid_argument("observable = " + observable +
-                              " is unknown; allowed: R_imp, V_imp, C_imp, u_imp, u_flow, n0, T0, R, H");
+  const theory::ObservableInfo* info = theory::find_observable(observable);
+  if (info && theory::is_block_scalar(*info)) return info->transform;
+  throw std::invalid_argument("observable = " + observable + " is unknown; allowed: " +
+                              theory::join_names(theory::observable_names(theory::is_block_scalar)));
 }
 
 std::vector<double> BlockSeries::ensemble_values(long excluded) const {
@@ -29,7 +28,7 @@ std::vector<double> BlockSeries::ensemble_values(long excluded) const {
       count += counts[b][k];
     }
     const double mean = count > 0 ? sum / count : std::nan("");
-    values[k] = transform == Transform::sqrt ? std::sqrt(mean) : mean;
+    values[k] = theory::apply_transform(transform, mean);
   }
   return values;
 }

@@ -9,16 +9,16 @@
 
 #include "common/input.hpp"
 #include "common/output.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::compare {
 
-/// How an observable is built from the ensemble mean m of its per-realization inner value.
-enum class Transform {
-  identity,  ///< A = m (C_imp, u_imp, n0, T0, R)
-  sqrt       ///< A = sqrt(m) (R_imp = <r²/2>^(1/2), V_imp = <v²/2>^(1/2), Eq. (38))
-};
+/// How an observable is built from the ensemble mean m of its per-realization inner value
+/// (theory/observables.hpp: identity, or Eq. (38)'s square root).
+using theory::Transform;
 
-/// The transform of a known observable name; throws std::invalid_argument for an unknown one.
+/// The catalogue's transform of an observable that blocks.csv may hold; throws
+/// std::invalid_argument for any other name.
 Transform transform_for(const std::string& observable);
 
 /// Block sums of one observable: sums[b][k] over the realizations of block b at time t[k].

@@ -7,6 +7,7 @@
 #include "common/validate.hpp"
 #include "compare/hydro_reference.hpp"
 #include "theory/exponents.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
@@ -31,21 +32,15 @@ std::string to_string(Reference reference) {
 }
 
 const std::vector<std::string>& table1_observables() {
-  static const std::vector<std::string> names = {"R_imp", "C_imp", "V_imp", "u_imp", "T0", "n0"};
+  static const std::vector<std::string> names = theory::table1_names();
   return names;
 }
 
 PaperValue paper_table1(const std::string& observable) {
-  // Paper Table 1 (tbl:results; macros \aRimp ... \daTo of the source): 3e4 realizations
-  // (5e3 for the core quantities), N = 40000, n = 0.15, a = 1/2, exponent at the last two times.
-  if (observable == "R_imp") return {0.423, 0.014};
-  if (observable == "C_imp") return {0.363, 0.007};
-  if (observable == "V_imp") return {-0.399, 0.017};
-  if (observable == "u_imp") return {-0.446, 0.042};
-  if (observable == "T0") return {-0.692, 0.035};
-  if (observable == "n0") return {-0.168, 0.034};
-  throw std::invalid_argument("observable = " + observable +
-                              " is not in the paper's Table 1 (R_imp, C_imp, V_imp, u_imp, T0, n0)");
+  const theory::ObservableInfo* info = theory::find_observable(observable);
+  if (info && info->table1_row >= 0) return info->table1;
+  throw std::invalid_argument("observable = " + observable + " is not in the paper's Table 1 (" +
+                              theory::join_names(table1_observables()) + ")");
 }
 
 void CompareConfig::validate() const {
@@ -66,10 +61,10 @@ void CompareConfig::validate() const {
                                 to_string(against));
   }
   for (const auto& name : observables) {
-    const auto& known = table1_observables();
-    if (name != "u_flow" && std::find(known.begin(), known.end(), name) == known.end())
-      throw std::invalid_argument("--observables: " + name +
-                                  " is unknown; allowed: R_imp, C_imp, V_imp, u_imp, u_flow, T0, n0");
+    const theory::ObservableInfo* info = theory::find_observable(name);
+    if (!info || !info->verdict)
+      throw std::invalid_argument("--observables: " + name + " is unknown; allowed: " +
+                                  theory::join_names(theory::observable_names(theory::is_verdict)));
   }
 }
 
@@ -169,8 +164,8 @@ CompareResult run_compare(const CompareConfig& config, const ReferenceExponents&
   std::vector<std::string> names = config.observables;
   if (names.empty()) names = default_observables(result.run, config.against, result.notes);
   if (names.empty())
-    throw std::invalid_argument("RUN_DIR = " + config.run_dir.string() +
-                                ": blocks.csv holds none of R_imp, C_imp, V_imp, u_imp, T0, n0");
+    throw std::invalid_argument("RUN_DIR = " + config.run_dir.string() + ": blocks.csv holds none of " +
+                                theory::join_names(table1_observables()));
 
   const theory::ScalingExponents exact = theory::scaling_exponents(result.d);
   result.pass = true;
@@ -181,7 +176,7 @@ CompareResult run_compare(const CompareConfig& config, const ReferenceExponents&
     const BlockSeries& series = found->second;
     ObservableVerdict v;
     v.name = name;
-    const std::string law = name == "u_flow" ? "u_imp" : name;  // u_flow estimates the same flow speed
+    const std::string law = theory::observable_info(name).law;  // u_flow: the law of u_imp
     v.alpha_theory = theory::to_double(exact.at(law).in_time);
     v.alpha_theory_rational = theory::to_string(exact.at(law).in_time);
     v.running = running_exponents(series);

@@ -26,13 +26,12 @@ enum class Reference {
 Reference parse_reference(const std::string& text);
 std::string to_string(Reference reference);
 
-/// The impurity and core observables of Table 1, in the paper's column order.
+/// The impurity and core observables of Table 1, in the paper's column order (from the catalogue).
 const std::vector<std::string>& table1_observables();
 
-/// The paper's Table 1 value alpha_S ± delta alpha for one observable (d = 2, t = 4000).
-struct PaperValue {
-  double alpha, error;
-};
+/// The paper's Table 1 value alpha_S ± delta alpha for one observable (d = 2, t = 4000), from the
+/// catalogue theory/observables.hpp.
+using theory::PaperValue;
 /// Throws std::invalid_argument for an observable not in Table 1.
 PaperValue paper_table1(const std::string& observable);
 

@@ -10,6 +10,7 @@
 
 #include "common/validate.hpp"
 #include "md/initial_state.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::md {
@@ -171,13 +172,12 @@ std::string quoted(const std::string& s) {
 }  // namespace
 
 const std::vector<std::string>& scalar_observable_names() {
-  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp", "u_imp", "u_flow", "n0", "T0", "R"};
+  static const std::vector<std::string> names = theory::observable_names(theory::is_md_scalar);
   return names;
 }
 
 const std::vector<std::string>& known_observable_names() {
-  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp",    "u_imp", "u_flow",    "n0",
-                                              "T0",    "R",     "profiles", "p_imp", "snapshots", "trajectories"};
+  static const std::vector<std::string> names = theory::observable_names(theory::is_md_requestable);
   return names;
 }
 
@@ -233,9 +233,8 @@ void BlastConfig::validate() const {
   const auto& known = known_observable_names();
   for (const std::string& o : observables)
     if (std::find(known.begin(), known.end(), o) == known.end())
-      throw std::invalid_argument(
-          "observables: unknown observable " + o +
-          " (allowed: R_imp, V_imp, C_imp, u_imp, u_flow, n0, T0, R, profiles, p_imp, snapshots, trajectories)");
+      throw std::invalid_argument("observables: unknown observable " + o + " (allowed: " + theory::join_names(known) +
+                                  ")");
   for (const double t : snapshot_times)
     require_in_range("snapshot_times", t, 0.0, t_max, Bound::open, Bound::closed, " (within (0, t_max])");
 }

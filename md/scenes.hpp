@@ -45,9 +45,11 @@ struct BlastConfig {
   std::string to_toml() const;
 };
 
-/// Names of the scalar observables in output order (observables.csv / blocks.csv).
+/// Names of the scalar observables in output order (observables.csv / blocks.csv): the md_scalar
+/// entries of the catalogue theory/observables.hpp.
 const std::vector<std::string>& scalar_observable_names();
-/// Every name accepted in `observables` (scalars plus profiles, p_imp, snapshots, trajectories).
+/// Every name accepted in `observables` (scalars plus profiles, p_imp, snapshots, trajectories), from
+/// the catalogue.
 const std::vector<std::string>& known_observable_names();
 
 /// The embedded default scene (small: a few seconds on one core).
