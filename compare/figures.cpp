@@ -8,6 +8,7 @@
 
 #include "common/output.hpp"
 #include "common/validate.hpp"
+#include "compare/figure_blast.hpp"
 #include "compare/report.hpp"
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
@@ -240,73 +241,6 @@ std::string profile_figure(const RunData& run, const std::vector<ProfileCurve>& 
   return "profiles.png";
 }
 
-// Fig. 1 of the paper: moving and resting particles of realization 0 at up to four snapshot
-// times, the impurities' trajectories up to each time, and the circle of radius R_imp(t)
-// (Eq. (38), the ensemble value) around the origin.
-std::string snapshot_figure(const RunData& run, const fs::path& folder) {
-  std::vector<std::pair<double, fs::path>> snapshots;
-  for (const auto& entry : fs::directory_iterator(run.directory)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("snapshot_", 0) == 0 && entry.path().extension() == ".csv")
-      snapshots.emplace_back(std::stod(name.substr(9, name.size() - 13)), entry.path());
-  }
-  if (snapshots.empty() || run.d != 2) return "";
-  std::sort(snapshots.begin(), snapshots.end());
-  if (snapshots.size() > 4) snapshots.erase(snapshots.begin(), snapshots.end() - 4);
-  const bool have_trajectories = fs::exists(run.directory / "trajectories.csv");
-  CsvTable trajectories;
-  if (have_trajectories) trajectories = read_numeric_csv(run.directory / "trajectories.csv");
-  const double extent = 1.15 * md_R_over_lambda(run, snapshots.back().first) * run.summary["lambda"].get<double>();
-  std::ostringstream script;
-  const int columns = snapshots.size() > 1 ? 2 : 1, rows = snapshots.size() > 2 ? 2 : 1;
-  script << "set terminal pngcairo size " << 620 * columns << "," << 600 * rows << " font 'Sans,11'\n"
-         << "set output 'snapshot.png'\nset multiplot layout " << rows << "," << columns
-         << " title 'Realization 0: moving (red) and resting (blue) particles, impurity trajectories (black), "
-            "circle of radius R_{imp}(t)'\n"
-         << "set size ratio -1\nunset key\nset xrange [" << -extent << ":" << extent << "]\nset yrange [" << -extent
-         << ":" << extent << "]\nset xlabel 'x'\nset ylabel 'y'\n";
-  for (std::size_t i = 0; i < snapshots.size(); ++i) {
-    const double t = snapshots[i].first;
-    const CsvTable table = read_numeric_csv(snapshots[i].second);
-    const std::size_t cx = table.column("x"), cy = table.column("y"), cm = table.column("moving");
-    std::ostringstream resting, moving, paths;
-    for (const auto& row : table.rows) {
-      if (std::abs(row[cx]) > extent || std::abs(row[cy]) > extent) continue;
-      (row[cm] > 0 ? moving : resting) << row[cx] << ' ' << row[cy] << '\n';
-    }
-    if (have_trajectories) {
-      const std::size_t id = trajectories.column("id"), ct = trajectories.column("t"), tx = trajectories.column("x"),
-                        ty = trajectories.column("y");
-      double previous = -1;
-      for (const auto& row : trajectories.rows) {
-        if (row[ct] > t) continue;
-        if (previous >= 0 && row[id] != previous) paths << "\n";
-        paths << row[tx] << ' ' << row[ty] << '\n';
-        previous = row[id];
-      }
-    }
-    const std::string tag = std::to_string(i);
-    common::write_file_atomic(folder / ("snapshot_resting_" + tag + ".dat"), resting.str());
-    common::write_file_atomic(folder / ("snapshot_moving_" + tag + ".dat"), moving.str());
-    common::write_file_atomic(folder / ("snapshot_paths_" + tag + ".dat"), paths.str() + "\n");
-    double R_imp = 0;
-    if (run.series.count("R_imp")) {
-      const BlockSeries& series = run.series.at("R_imp");
-      const auto values = series.ensemble_values();
-      const auto k = static_cast<std::size_t>(std::lower_bound(series.t.begin(), series.t.end(), t) - series.t.begin());
-      R_imp = values[std::min(k, values.size() - 1)];
-    }
-    script << "set title '(" << static_cast<char>('A' + i) << ") t = " << common::format_number(t) << "'\n"
-           << "set object 1 circle at 0,0 size " << R_imp << " fs empty border lc rgb '#0000cc' lw 2 front\n"
-           << "plot 'snapshot_resting_" << tag << ".dat' w dots lc rgb '#6f8fd8', 'snapshot_moving_" << tag
-           << ".dat' w dots lc rgb '#d62728', 'snapshot_paths_" << tag << ".dat' w l lw 1.5 lc rgb 'black'\n";
-  }
-  script << "unset multiplot\n";
-  common::write_file_atomic(folder / "snapshot.gp", script.str());
-  run_gnuplot(folder, "snapshot.gp");
-  return "snapshot.png";
-}
-
 }  // namespace
 
 ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
@@ -315,7 +249,7 @@ ExtraFigures write_extra_figures(const RunData& run, const std::optional<Distrib
   if (fit) figures.distribution = distribution_figure(run, *fit, folder);
   if (fs::exists(run.directory / "profiles.csv") && run.summary.contains("lambda"))
     figures.profiles = profile_figure(run, continuum, t_profile, folder);
-  figures.snapshot = snapshot_figure(run, folder);
+  figures.blast = blast_figure(run, folder).file;
   return figures;
 }
 

@@ -2,7 +2,7 @@
 // Figures beyond the exponent panels, drawn from the optional files of an MD run: the Fig. 3-style
 // collapse of p_imp(r, t) with the fitted Gaussian of Eq. (39) [eq:pr], MD radial profiles against
 // continuum profiles computed beforehand (compare/continuum.hpp: no solver runs here), and the
-// Fig. 1-style snapshot of moving and resting particles.
+// paper's Fig. 1 (compare/figure_blast.hpp).
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -36,7 +36,7 @@ std::optional<DistributionFit> fit_impurity_distribution(const RunData& run);
 
 /// The figure files written into `folder` (empty names for figures whose data is absent).
 struct ExtraFigures {
-  std::string distribution, profiles, snapshot;
+  std::string distribution, profiles, blast;  ///< blast: the paper's Fig. 1 (compare/figure_blast.hpp)
 };
 
 /// Draws every figure whose data the run holds; returns the file names written. The profile figure

@@ -288,7 +288,11 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
     md << shape;
     if (!extra.distribution.empty()) md << "\n![p_imp collapse](figures/" << extra.distribution << ")\n";
   }
-  if (!extra.snapshot.empty()) md << "\n## Snapshots (paper Fig. 1)\n\n![snapshot](figures/" << extra.snapshot << ")\n";
+  if (!extra.blast.empty())
+    md << "\n## The blast (paper Fig. 1)\n\nRealization 0 at its snapshot times: moving and resting particles, the "
+          "impurities' paths, R_imp of Eq. (38) (the ensemble value) and the TvNS shock radius of Eq. (1).\n\n"
+          "![blast](figures/"
+       << extra.blast << ")\n";
   if (!extra.profiles.empty())
     md << "\n## Radial profiles against the continuum\n\nMD at its last time against ideal-gas TvNS, TvNS with "
           "the hard-particle EOS at the run's φ, and the Navier–Stokes blast(s) at the MD's own R/λ.\n\n"
