@@ -13,7 +13,6 @@
 #include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "compare/md_run.hpp"
-#include "hydro/tvns.hpp"
 #include "md/ensemble.hpp"
 #include "md/equilibrium.hpp"
 #include "md/scenes.hpp"
@@ -111,11 +110,9 @@ void run_md(const MdRunOptions& o) {
   request.seed = o.seed;
   request.threads = o.threads;
   const auto [shard_index, shard_count] = md::parse_shard(o.shard);
-  const compare::MdRunPlan plan = compare::plan_md_run(request);
+  compare::MdRunPlan plan = compare::plan_md_run(request);
   const md::BlastConfig& config = plan.config;
-  const std::string& A_d_source = plan.A_d_source;
-  md::RunOptions options;
-  options.threads = o.threads;
+  md::RunOptions& options = plan.options;
   options.shard_index = shard_index;
   options.shard_count = shard_count;
   Progress progress;
@@ -139,7 +136,6 @@ void run_md(const MdRunOptions& o) {
 #else
   md::BlastResult result = run_ensemble(config, options, out);
 #endif
-  if (!A_d_source.empty()) result.scene.A_d_source = A_d_source;
   md::write_blast_outputs(result, out);
   std::error_code ignored;
   std::filesystem::remove_all(options.checkpoint, ignored);

@@ -33,15 +33,8 @@ MdRunPlan plan_md_run(const MdRunRequest& request) {
   }
   MdRunPlan plan;
   plan.config = md::parse_scene(text, overrides, source);
-  // A_d = 0 means "not given": the hard-particle TvNS amplitude A_d(phi) from hydro (Henderson EOS
-  // in 2D, Carnahan-Starling in 3D) sizes the box and is written to the outputs.
-  if (plan.config.A_d == 0.0) {
-    const double phi = md::resolve_scene(plan.config).phi;
-    const hydro::TvnsSolution tvns = hydro::solve_tvns_for_md(plan.config.d, phi);
-    plan.config.A_d = tvns.A();
-    plan.A_d_source =
-        "hydro TvNS, " + hydro::to_string(tvns.config().eos) + " EOS at phi = " + common::format_number(phi);
-  }
+  plan.options.threads = request.threads;
+  plan.options.amplitude = hydro::md_amplitude;
   return plan;
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 // What `coldblast md run` does before the ensemble starts, as a library call shared by the CLI and
 // the Python module (coldblast.md.run): the flag checks with the CLI's messages, the scene (a TOML
-// file, its text or the embedded default) with `--set key=value` overrides, and A_d = 0 resolved
-// to hydro's hard-particle TvNS amplitude A_d(phi) (it sizes the box; docs/md-output.md).
+// file, its text or the embedded default) with `--set key=value` overrides, and the run options
+// with the project's A_d policy, hydro::md_amplitude, for a scene that leaves A_d = 0 (it sizes
+// the box; docs/md-output.md).
 #include <string>
 #include <vector>
 
+#include "md/ensemble.hpp"
 #include "md/scenes.hpp"
 
 namespace coldblast::compare {
@@ -19,10 +21,10 @@ struct MdRunRequest {
   int threads = 1;                     ///< worker threads, [1, 1024] (--threads)
 };
 
-/// The scene to run, ready for md::run_blast.
+/// The scene and options for md::run_blast (the caller adds shards, progress and checkpoints).
 struct MdRunPlan {
-  md::BlastConfig config;  ///< validated, with A_d resolved
-  std::string A_d_source;  ///< how A_d was obtained when the scene left it 0 (empty: the scene gave it)
+  md::BlastConfig config;  ///< validated; A_d = 0 when the scene leaves it to options.amplitude
+  md::RunOptions options;  ///< threads, and amplitude = hydro::md_amplitude
 };
 
 /// Validates the request and builds the scene; throws std::invalid_argument naming the flag or

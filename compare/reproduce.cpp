@@ -141,7 +141,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   const hydro::TvnsSolution a3 = hydro::solve_tvns({3, 0.0, hydro::Eos::ideal, 0.0, 1e-13});
   md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
   r.phi_md = theory::packing_fraction(scene.d, scene.n, scene.a);
-  // the amplitude `md run` uses, so that step 2 equals `coldblast md run` of the scene bit for bit
+  // the amplitude of hydro::md_amplitude, reported with its error (step 2's box takes it from there)
   const hydro::TvnsSolution a2_md = hydro::solve_tvns_for_md(2, r.phi_md);
   r.A2 = a2.A();
   r.A2_error = a2.A_error();
@@ -166,11 +166,11 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
     r.md = read_run(md_dir).summary;
   } else {
     say(progress, "step 2/5: MD ensemble of the paper's 2D scene");
-    scene.A_d = r.A2_md;
     scene.seed = config.seed;
     scene.realizations = config.realizations > 0 ? config.realizations : (quick ? 384 : 30000);
     scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
     md::RunOptions options;
+    options.amplitude = hydro::md_amplitude;  // as `md run`, so step 2 equals `coldblast md run` bit for bit
     options.threads =
         config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     options.progress = [&progress, total = scene.realizations](long long done, long long) {

@@ -33,7 +33,7 @@ std::vector<std::string> parts(const std::string& text) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // The scene of the seeds in fuzz/corpus/checkpoint (small blocks keep the inputs short).
   static const md::ResolvedScene scene = md::resolve_scene(md::parse_scene(
-      md::default_scene_toml(), {"realizations=4", "block_size=1", "observables=[\"R_imp\"]", "t_max=8"}));
+      md::default_scene_toml(), {"realizations=4", "block_size=1", "observables=[\"R_imp\"]", "t_max=8", "A_d=0.35"}));
   static const fs::path folder = fs::temp_directory_path() / ("coldblast_fuzz_checkpoint." + std::to_string(getpid()));
   const std::vector<std::string> files = parts(std::string(reinterpret_cast<const char*>(data), size));
   fs::remove_all(folder);

@@ -249,4 +249,9 @@ TvnsSolution solve_tvns_for_md(int d, double phi) {
   return solve_tvns({d, 0.0, d == 2 ? Eos::henderson : Eos::carnahan_starling, phi, 1e-8});
 }
 
+theory::AmplitudeChoice md_amplitude(int d, double phi) {
+  const TvnsSolution tvns = solve_tvns_for_md(d, phi);
+  return {tvns.A(), "hydro TvNS, " + to_string(tvns.config().eos) + " EOS at phi = " + common::format_number(phi)};
+}
+
 }  // namespace coldblast::hydro

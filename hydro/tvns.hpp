@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hydro/equation_of_state.hpp"
+#include "theory/prefactors.hpp"
 
 namespace coldblast::hydro {
 
@@ -121,12 +122,17 @@ class TvnsSolution {
 /// Solves the blast for a validated config; throws std::invalid_argument on bad config.
 TvnsSolution solve_tvns(const TvnsConfig& config);
 
-/// The hard-particle amplitude A_d(phi) that sizes an MD blast box: Henderson EOS in 2D,
-/// Carnahan-Starling in 3D, solved to relative accuracy 1e-8. `coldblast md run` and
-/// `coldblast reproduce` both call this, so a scene run either way gets the same box to the last
-/// bit and hence the same trajectories. Throws std::invalid_argument for d outside {2, 3} or phi
-/// out of range.
+/// The hard-particle TvNS solution at packing fraction phi: Henderson EOS in 2D, Carnahan-Starling
+/// in 3D, solved to relative accuracy 1e-8. Throws std::invalid_argument for d outside {2, 3} or
+/// phi out of range.
 TvnsSolution solve_tvns_for_md(int d, double phi);
+
+/// The A_d policy of the MD box, the project's one: a scene with A_d = 0 ("not given") is sized
+/// with the hard-particle amplitude A_d(phi) of solve_tvns_for_md. md cannot include hydro, so
+/// `md run`, `reproduce`, the Python module (through compare::plan_md_run) and md::run_blast's other
+/// callers inject this function as md::RunOptions::amplitude; the tracer calls it directly. A scene
+/// therefore gets the same box, and the same trajectories, whichever way it is run.
+theory::AmplitudeChoice md_amplitude(int d, double phi);
 
 /// Which branch applies for an ideal gas with this d and gamma.
 TvnsCase tvns_case(int d, double gamma);

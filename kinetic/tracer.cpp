@@ -180,10 +180,10 @@ double resolved_A_d(const md::BlastConfig& c, std::string& source) {
     source = "scene";
     return c.A_d;
   }
-  // As `md run`: the hard-particle TvNS amplitude A_d(φ), so p_imp's bins match the MD's.
-  const hydro::TvnsSolution tvns = hydro::solve_tvns_for_md(c.d, scene_phi(c));
-  source = "hydro TvNS, " + hydro::to_string(tvns.config().eos) + " EOS at phi = " + format_number(scene_phi(c));
-  return tvns.A();
+  // The A_d policy of `md run` (hydro::md_amplitude), so p_imp's bins match the MD's.
+  theory::AmplitudeChoice choice = hydro::md_amplitude(c.d, scene_phi(c));
+  source = std::move(choice.source);
+  return choice.A_d;
 }
 
 }  // namespace

@@ -186,7 +186,7 @@ BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* rea
 EnsemblePlan plan_ensemble(const BlastConfig& config, const RunOptions& options) {
   EnsemblePlan plan;
   BlastResult& result = plan.result;
-  result.scene = resolve_scene(config);
+  result.scene = resolve_scene(config, options.amplitude);
   result.threads = options.threads;
   result.shard_index = options.shard_index;
   result.shard_count = options.shard_count;

@@ -26,6 +26,9 @@ struct RunOptions {
   int threads = 1;      ///< worker threads, >= 1
   int shard_index = 0;  ///< this shard runs blocks shard_index, shard_index + shard_count, ...
   int shard_count = 1;  ///< number of shards, >= 1
+  /// The amplitude that sizes the box when the scene gives A_d = 0 (md/scenes.hpp); `md run`,
+  /// `reproduce` and the Python module pass hydro::md_amplitude. Empty: the scene must give A_d.
+  AmplitudePolicy amplitude;
   /// Called after each realization with (done, total); may be empty. Called under a lock.
   std::function<void(long long, long long)> progress;
   /// Folder where every finished block is saved at once (md/checkpoint.hpp); empty = no checkpoint.

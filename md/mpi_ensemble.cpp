@@ -244,7 +244,7 @@ BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options
 /// Ranks > 0: `threads` compute threads; this (the only MPI-calling) thread forwards each thread's
 /// finished block plus its request for the next one to rank 0 and hands back the answer.
 void run_worker(const BlastConfig& config, const RunOptions& options) {
-  const ResolvedScene scene = resolve_scene(config);
+  const ResolvedScene scene = resolve_scene(config, options.amplitude);
   struct Outgoing {
     int thread;
     std::vector<char> bytes;

@@ -28,7 +28,7 @@ d = 2
 n = 0.15
 a = 0.5
 E = 10.0
-A_d = 0.0            # 0: not given (the ideal-gas value, or hydro's A_d(phi) when the CLI has it)
+A_d = 0.0            # 0: not given (hydro's hard-particle TvNS A_d(phi): hydro::md_amplitude)
 t_min = 1.0
 t_max = 200.0
 realizations = 32
@@ -259,14 +259,24 @@ bool ResolvedScene::wants(const std::string& observable) const {
   return std::find(config.observables.begin(), config.observables.end(), observable) != config.observables.end();
 }
 
-ResolvedScene resolve_scene(const BlastConfig& config) {
+ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& amplitude) {
   config.validate();
   ResolvedScene s;
   s.config = config;
-  const BlastConfig& c = config;
-  s.A_d = c.A_d > 0.0 ? c.A_d : theory::ideal_gas_amplitude(c.d);
-  s.A_d_source = c.A_d > 0.0 ? "scene" : "ideal gas (gamma = 1 + 2/d)";
+  const BlastConfig& c = s.config;
   s.phi = theory::packing_fraction(c.d, c.n, c.a);
+  s.A_d = c.A_d;
+  s.A_d_source = "scene";
+  if (c.A_d == 0.0) {
+    if (!amplitude)
+      throw std::invalid_argument(
+          "A_d = 0 (not given) needs the caller's amplitude policy (hydro::md_amplitude, as "
+          "`md run` uses); give A_d > 0 in the scene or pass md::RunOptions::amplitude");
+    const theory::AmplitudeChoice choice = amplitude(c.d, s.phi);
+    require_in_range("A_d", choice.A_d, 0.0, inf, Bound::open, Bound::open, " (from " + choice.source + ")");
+    s.config.A_d = s.A_d = choice.A_d;  // written to summary.json's scene, so merges and resumes agree
+    s.A_d_source = choice.source;
+  }
   s.lambda = theory::mean_free_path(c.d, c.n, c.a);
   s.impurity_radius = c.impurities.radius > 0.0 ? c.impurities.radius : c.a;
   const theory::BlastParameters p{c.d, c.n, c.a, c.E, s.A_d};

@@ -3,9 +3,12 @@
 // the allowed ranges, the embedded default scene, and the quantities derived from a scene (A_d,
 // the auto-sized region from R(t_max) of Eq. (1), particle count, recording times t_k = t_0 2^(k/4)).
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "theory/prefactors.hpp"
 
 namespace coldblast::md {
 
@@ -23,7 +26,7 @@ struct BlastConfig {
   double n = 0.15;               ///< ambient number density n∞ (1/length^d), > 0
   double a = 0.5;                ///< host radius (length), > 0
   double E = 10.0;               ///< injected energy (m length²/time²), > 0
-  double A_d = 0.0;              ///< TvNS amplitude of Eq. (1); 0 = not given (ideal-gas value is used)
+  double A_d = 0.0;              ///< TvNS amplitude of Eq. (1); 0 = not given (the caller's AmplitudePolicy)
   ImpurityConfig impurities;
   double t_min = 1.0;           ///< first recording time t_0 (time), in (0, t_max]
   double t_max = 200.0;         ///< last recording time (time), > 0
@@ -59,11 +62,16 @@ const std::string& default_scene_toml();
 BlastConfig parse_scene(const std::string& toml_text, const std::vector<std::string>& overrides = {},
                         const std::string& source = "scene");
 
+/// The amplitude that sizes the box of a scene with A_d = 0 ("not given"), from (d, phi). md never
+/// includes hydro, so the caller injects it: hydro::md_amplitude, the hard-particle TvNS A_d(phi),
+/// is the project's one policy (docs/ARCHITECTURE.md, "The A_d policy").
+using AmplitudePolicy = std::function<theory::AmplitudeChoice(int d, double phi)>;
+
 /// Quantities derived from a validated scene.
 struct ResolvedScene {
-  BlastConfig config;
-  double A_d;                    ///< amplitude used (config.A_d or the ideal-gas value)
-  std::string A_d_source;        ///< "scene" or "ideal gas"
+  BlastConfig config;            ///< the scene, with A_d resolved (> 0)
+  double A_d;                    ///< amplitude used: config.A_d, or the policy's when the scene gave 0
+  std::string A_d_source;        ///< "scene", or the policy's source
   double phi, lambda;            ///< packing fraction (Eq. 2) and mean free path (Eq. 5)
   double impurity_radius;        ///< resolved impurity radius
   double shock_radius_at_t_max;  ///< Eq. (1) at t_max
@@ -75,7 +83,8 @@ struct ResolvedScene {
   bool wants(const std::string& observable) const;
 };
 
-/// Validates `config` and derives the region, particle count and recording times.
-ResolvedScene resolve_scene(const BlastConfig& config);
+/// Validates `config` and derives the amplitude, region, particle count and recording times. A_d = 0
+/// takes `amplitude`(d, phi); without a policy it throws std::invalid_argument naming A_d.
+ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& amplitude = {});
 
 }  // namespace coldblast::md

@@ -308,9 +308,8 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
   request.realizations = realizations;
   request.seed = seed;
   request.threads = threads;
-  const compare::MdRunPlan plan = compare::plan_md_run(request);
-  md::RunOptions options;
-  options.threads = threads;
+  compare::MdRunPlan plan = compare::plan_md_run(request);
+  md::RunOptions& options = plan.options;
   Progress progress(progress_callback);
   options.progress = [&progress](long long done, long long total) {
     progress.set(static_cast<double>(done), static_cast<double>(total));
@@ -320,7 +319,6 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
   if (!out.empty()) options.checkpoint = std::filesystem::path(out) / "checkpoint";
   const std::function<md::BlastResult()> work = [&] { return md::run_blast(plan.config, options); };
   md::BlastResult result = run_interruptible(work, progress);
-  if (!plan.A_d_source.empty()) result.scene.A_d_source = plan.A_d_source;
   if (!out.empty()) {
     md::write_blast_outputs(result, out);
     std::error_code ignored;

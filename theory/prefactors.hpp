@@ -2,6 +2,8 @@
 // Prefactor formulas of the paper (units m = 1, k_B = 1, a = particle radius): Omega_d and phi
 // (Eq. 2), lambda (Eq. 5), R(t) given A_d (Eq. 1), H (Eq. 4), the impurity and core estimates of
 // Eqs. (6)-(12), (21) without their unknown O(1) factors, and the Gaussian P(r,t) of Eq. (35).
+#include <string>
+
 namespace coldblast::theory {
 
 /// Eq. (2) [phi:def]: volume of the unit ball in d >= 0 dimensions, π^(d/2)/Γ(d/2+1) (Ω_0 = 1).
@@ -23,6 +25,13 @@ inline constexpr double ideal_gas_A_2 = 0.351935906848599;
 inline constexpr double ideal_gas_A_3 = 0.493590149582568;
 /// ideal_gas_A_2 or ideal_gas_A_3; throws std::invalid_argument for d outside [2, 3].
 double ideal_gas_amplitude(int d);
+
+/// An amplitude A_d of Eq. (1) chosen for a blast and where it came from (written to run outputs).
+/// The project's one choice for MD boxes is hydro::md_amplitude (docs/ARCHITECTURE.md, "The A_d policy").
+struct AmplitudeChoice {
+  double A_d = 0.0;
+  std::string source;
+};
 
 /// Physical parameters of a blast: dimension, ambient density n (1/length^d), radius a
 /// (length), energy E (m = 1 units) and the TvNS amplitude A_d of Eq. (1).

@@ -1,5 +1,5 @@
 # `coldblast reproduce` runs its MD step as `coldblast md run` of the paper scene would: the same
-# amplitude A_2(phi) sizes the box (hydro::solve_tvns_for_md), the same seed and block size, so
+# amplitude A_2(phi) sizes the box (hydro::md_amplitude), the same seed and block size, so
 # the two give the same per-realization values to the last digit and `md run` + `reproduce
 # --md-run` is the paper-scale reproduce in two resumable steps (docs/verification.md, Campaign 1).
 # Only the commented provenance headers differ (command line, where A_d came from).

@@ -79,9 +79,9 @@ TEST_CASE("malformed checkpoint blocks are rejected naming --resume", "[fast]") 
 }
 
 TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run", "[slow]") {
-  const BlastConfig config = parse_scene(
-      default_scene_toml(),
-      {"t_max=40", "realizations=9", "block_size=2", R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
+  const BlastConfig config =
+      parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2", "A_d=0.351935906848599",
+                                         R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
   const fs::path dir = fresh_directory("resume");
   RunOptions options;
   options.threads = 2;
@@ -109,9 +109,9 @@ TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run"
   CHECK(!full.realization0_files.empty());
 
   // A different scene is refused, naming the key.
-  const BlastConfig other = parse_scene(
-      default_scene_toml(),
-      {"t_max=40", "realizations=9", "block_size=2", "E=11", R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
+  const BlastConfig other =
+      parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2", "E=11", "A_d=0.351935906848599",
+                                         R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
   CHECK_THROWS_WITH(run_blast(other, options), Catch::Contains("--resume") && Catch::Contains("E = 10 there, 11 now"));
   fs::remove_all(dir);
   CHECK_THROWS_WITH(run_blast(config, options), Catch::Contains("no checkpoint"));
@@ -119,7 +119,8 @@ TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run"
 
 TEST_CASE("a stop request ends a run between realizations, and resuming it equals the uninterrupted run", "[slow]") {
   const BlastConfig config = parse_scene(
-      default_scene_toml(), {"t_max=40", "realizations=7", "block_size=2", R"(observables=["R_imp","n0"])"});
+      default_scene_toml(),
+      {"t_max=40", "realizations=7", "block_size=2", "A_d=0.351935906848599", R"(observables=["R_imp","n0"])"});
   RunOptions options;
   const BlastResult full = run_blast(config, options);
   const fs::path dir = fresh_directory("interrupt");

@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 BlastConfig small_scene() {
   return parse_scene(default_scene_toml(),
-                     {"t_max=60", "realizations=7", "block_size=2",
+                     {"t_max=60", "realizations=7", "block_size=2", "A_d=0.351935906848599",
                       R"(observables=["R_imp","V_imp","C_imp","u_imp","n0","T0","R","profiles","p_imp"])"});
 }
 std::string data_lines(const fs::path& file) {
@@ -42,11 +42,35 @@ TEST_CASE("scene parsing: overrides, dotted keys, unknown keys and ranges", "[fa
   CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"n=0.8"}), Catch::Contains("phi"));
   CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"d=3", "n=0.8"}), Catch::Contains("0.3841"));
   CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {R"(observables=["R_imp","magic"])"}), Catch::Contains("magic"));
-  CHECK_THROWS_WITH(resolve_scene(parse_scene(default_scene_toml(), {"impurities.count=100000"})),
+  CHECK_THROWS_WITH(resolve_scene(parse_scene(default_scene_toml(), {"impurities.count=100000", "A_d=0.3"})),
                     Catch::Contains("impurities.count"));
   // The resolved TOML reads back to the same scene.
   const BlastConfig again = parse_scene(c.to_toml());
   CHECK(again.to_toml() == c.to_toml());
+}
+
+TEST_CASE("A_d = 0 takes the injected amplitude policy, written into the resolved scene; none is an error", "[fast]") {
+  const BlastConfig c = parse_scene(default_scene_toml());
+  REQUIRE(c.A_d == 0.0);
+  CHECK_THROWS_WITH(resolve_scene(c), Catch::Contains("A_d = 0") && Catch::Contains("amplitude policy"));
+  double phi_seen = 0.0;
+  const AmplitudePolicy policy = [&](int d, double phi) {
+    phi_seen = phi;
+    return coldblast::theory::AmplitudeChoice{0.125 * d, "test policy"};
+  };
+  const ResolvedScene s = resolve_scene(c, policy);
+  CHECK(phi_seen == s.phi);
+  CHECK(s.A_d == 0.25);
+  CHECK(s.config.A_d == 0.25);  // summary.json's scene carries it, so merges and resumes resolve alike
+  CHECK(s.A_d_source == "test policy");
+  const ResolvedScene given = resolve_scene(parse_scene(default_scene_toml(), {"A_d=0.25"}), policy);
+  CHECK(given.A_d_source == "scene");
+  CHECK(given.region_radius == s.region_radius);
+  CHECK_THROWS_WITH(resolve_scene(c,
+                                  [](int, double) {
+                                    return coldblast::theory::AmplitudeChoice{-1.0, "bad"};
+                                  }),
+                    Catch::Contains("A_d = -1") && Catch::Contains("bad"));
 }
 
 TEST_CASE("impurity kick: energy exactly E, momentum exactly zero, the nearest particles", "[fast]") {
