@@ -41,10 +41,11 @@ TvnsConfig tvns_config(const TvnsOptions& options) {
 
 NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler) {
   common::require_integer_in_range("--d", options.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
-  common::require_integer_in_range("--cells", options.cells, 16, 100000);
+  const int cells = options.cells == 0 ? (euler ? default_euler_cells : default_core_cells) : options.cells;
+  common::require_integer_in_range("--cells", cells, 16, 100000, "(0 = the mode's default)");
   NavierStokesConfig config;
   config.physics.d = options.d;
-  config.numerics.cells = options.cells;
+  config.numerics.cells = cells;
   const double until = options.until == 0 ? (euler ? default_euler_until : default_core_until) : options.until;
   common::require_in_range("--until", until, config.numerics.start_R_over_lambda, 1e12, common::Bound::open,
                            common::Bound::closed,

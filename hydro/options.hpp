@@ -27,7 +27,7 @@ TvnsConfig tvns_config(const TvnsOptions& options);
 struct HydroOptions {
   int d = 2;                              ///< 1 planar, 2 cylindrical, 3 spherical
   double until = 0.0;                     ///< R/lambda at the end; 0 = the mode's default
-  int cells = 256;                        ///< finite-volume cells, [16, 100000]
+  int cells = 0;                          ///< finite-volume cells, [16, 100000]; 0 = the mode's default
   bool viscosity = false;                 ///< shear viscosity (core mode)
   std::optional<double> kappa_prefactor;  ///< c_kappa in [0, 1e6] (core mode); empty = Chapman-Enskog
   std::string eos = "ideal";              ///< ideal, henderson (d = 2) or carnahan-starling (d = 3)
@@ -37,6 +37,10 @@ struct HydroOptions {
 /// Default end of the run: R/lambda = 1e4 (core), 500 (Euler).
 inline constexpr double default_core_until = 1e4;
 inline constexpr double default_euler_until = 500;
+/// Default cells: 256 (core); 512 (Euler), where the check of A_d against the exact TvNS solution
+/// meets 0.1 % in d = 2 and 3 (-6.9e-4, -9.4e-4; first order in the cell size: docs/hydro.md).
+inline constexpr int default_core_cells = 256;
+inline constexpr int default_euler_cells = 512;
 /// The validated NavierStokesConfig of core (euler = false) or Euler (kappa = mu = 0) mode; throws
 /// std::invalid_argument naming the flag (--d, --cells, --until, --eos, --transport, --kappa-prefactor).
 NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler);

@@ -15,7 +15,7 @@ def _run(euler, d, until, cells, viscosity, kappa_prefactor, progress, eos="idea
     return SimpleNamespace(**raw)
 
 
-def core(d=2, until=1e4, cells=256, viscosity=False, kappa_prefactor=None, eos="ideal", phi=0.0, transport="dilute",
+def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="ideal", phi=0.0, transport="dilute",
          progress=True):
     """Heat-conducting blast up to R/lambda = until (the same call as ``coldblast hydro core``).
 
@@ -26,7 +26,7 @@ def core(d=2, until=1e4, cells=256, viscosity=False, kappa_prefactor=None, eos="
     until : float
         R/lambda at the end, (2, 1e12] (lambda = mean free path, Eq. (5)); seconds for 1e4.
     cells : int
-        Finite-volume cells, [16, 100000].
+        Finite-volume cells, [16, 100000]; 0 = the mode's default (256 here, 512 for :func:`euler`).
     viscosity : bool
         Shear viscosity mu = c_mu n lambda sqrt(T) on or off.
     kappa_prefactor : float or None
@@ -59,7 +59,7 @@ def core(d=2, until=1e4, cells=256, viscosity=False, kappa_prefactor=None, eos="
     return result
 
 
-def euler(d=2, until=500, cells=256, eos="ideal", phi=0.0, progress=True):
+def euler(d=2, until=500, cells=0, eos="ideal", phi=0.0, progress=True):
     """Euler limit (kappa = mu = 0) against the exact TvNS solution (``coldblast hydro euler``).
 
     Same arguments and result as :func:`core`, plus ``tvns`` (A_measured, A_exact,

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "hydro/navier_stokes.hpp"
+#include "hydro/options.hpp"
 #include "hydro/tvns.hpp"
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
@@ -156,6 +157,23 @@ TEST_CASE("Euler mode converges to the exact TvNS solution", "[slow]") {
   CHECK(std::log2(coarse.A_relative_error / fine.A_relative_error) > 0.5);
   CHECK(std::log2(coarse.L1_density / fine.L1_density) > 0.5);
   CHECK(std::log2(coarse.L1_pressure / fine.L1_pressure) > 0.5);
+}
+
+TEST_CASE("the default Euler check (hydro euler's defaults) meets 0.1 % on A_d in d = 2 and 3", "[slow]") {
+  // issue 12's acceptance: 512 cells, R/lambda = 500 (256 cells gave -1.34e-3 and -2.15e-3)
+  for (const int d : {2, 3}) {
+    hydro::HydroOptions defaults;
+    defaults.d = d;
+    const hydro::NavierStokesConfig config = hydro::navier_stokes_config(defaults, /*euler=*/true);
+    REQUIRE(config.numerics.cells == hydro::default_euler_cells);
+    const auto check = hydro::compare_to_tvns(run_navier_stokes(config));
+    INFO("d = " << d << ": A error " << check.A_relative_error << ", L1 density " << check.L1_density);
+    CHECK(std::abs(check.A_relative_error) < 1e-3);
+    CHECK(check.L1_density < 0.01);
+    CHECK(check.L1_pressure < 0.01);
+  }
+  hydro::HydroOptions core;
+  CHECK(hydro::navier_stokes_config(core, /*euler=*/false).numerics.cells == hydro::default_core_cells);
 }
 
 TEST_CASE("the temperature floor does not change the result when it moves two decades", "[slow]") {
