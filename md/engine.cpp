@@ -6,10 +6,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 namespace coldblast::md {
 
 namespace {
@@ -175,67 +171,36 @@ void Engine<D, Queue>::guard_tripped() const {
 
 template <int D, class Queue>
 double Engine<D, Queue>::crossing_time(const Particle<D>& p, std::uint8_t& code) const {
-  // An axis with v = 0 never crosses. The first axis reaching the smallest time wins (ties: the
-  // lower axis). The sign of v and the axis choice are coin flips for the branch predictor, so
-  // with SSE2 every select is a mask (g++ compiles the ternaries below into jumps); the
-  // arithmetic is the same either way, so the two versions give the same times bit for bit.
+  // The pair evaluator's crossing time (md/collision.hpp), or a SIMD version of it (bitwise the
+  // same: md/pair_kernel.hpp), on the span of the particle's cell.
   const auto c = cells_.coordinates(p.cell);
-  if constexpr (D == 3) {
-    if (simd_crossing_) {  // the same arithmetic, the three axes at once (md/pair_kernel.hpp)
-      double lower[3], width[3];
-      for (int k = 0; k < 3; ++k) {
-        lower[k] = cells_.lower()[k] + c[k] * cells_.width(k);
-        width[k] = cells_.width(k);
-      }
-      return p.time + earliest_crossing(p.position, p.velocity, lower, width, code);
-    }
-  }
-  double best = never;
-  code = 0;
+  double lower[D], width[D];
   for (int k = 0; k < D; ++k) {
-    const double v = p.velocity[k];
-    const double lo = cells_.lower()[k] + c[k] * cells_.width(k);
-#if defined(__SSE2__)
-    const __m128d zero = _mm_setzero_pd(), vv = _mm_set_sd(v), low = _mm_set_sd(lo);
-    const __m128d up = _mm_cmpgt_sd(vv, zero);  // v > 0
-    const __m128d wall =
-        _mm_or_pd(_mm_and_pd(up, _mm_add_sd(low, _mm_set_sd(cells_.width(k)))), _mm_andnot_pd(up, low));
-    const __m128d raw = _mm_max_sd(_mm_div_sd(_mm_sub_sd(wall, _mm_set_sd(p.position[k])), vv), zero);
-    const __m128d still = _mm_cmpeq_sd(vv, zero);  // v == 0
-    const __m128d dt = _mm_or_pd(_mm_and_pd(still, _mm_set_sd(never)), _mm_andnot_pd(still, raw));
-    const __m128d previous = _mm_set_sd(best);
-    const __m128d earlier = _mm_cmplt_sd(dt, previous);
-    best = _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(earlier, dt), _mm_andnot_pd(earlier, previous)));
-    const auto axis_code = static_cast<std::uint8_t>(2 * k + (_mm_movemask_pd(up) & 1));
-    const auto keep = static_cast<std::uint8_t>((_mm_movemask_pd(earlier) & 1) - 1);  // 0 if earlier, else 0xff
-    code = static_cast<std::uint8_t>((axis_code & ~keep) | (code & keep));
-#else
-    const double wall = v > 0.0 ? lo + cells_.width(k) : lo;
-    const double dt = v == 0.0 ? never : std::max(0.0, (wall - p.position[k]) / v);
-    const auto axis_code = static_cast<std::uint8_t>(2 * k + (v > 0.0 ? 1 : 0));
-    if (dt < best) {
-      best = dt;
-      code = axis_code;
-    }
-#endif
+    lower[k] = cells_.lower()[k] + c[k] * cells_.width(k);
+    width[k] = cells_.width(k);
   }
-  return p.time + best;
+  if constexpr (simd_built) {
+    if constexpr (D == 3)
+      if (simd_crossing_) return p.time + earliest_crossing(p.position, p.velocity, lower, width, code);
+    if (config_.simd) return p.time + cell_crossing_time_sse2<D>(p.position, p.velocity, lower, width, code);
+  }
+  return p.time + cell_crossing_time<D>(p.position, p.velocity, lower, width, code);
 }
 
 template <int D, class Queue>
-template <bool Shifted>
+template <bool Shifted, bool Simd>
 [[gnu::always_inline]] inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift,
                                                                const Vec<D>& position, const Vec<D>& velocity,
                                                                double time, const double* sigma2_row, bool same_radius,
                                                                Prediction& best) const {
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
     if (j == id) continue;
-    test_pair<Shifted>(j, shift, position, velocity, time, sigma2_row, same_radius, best);
+    test_pair<Shifted, Simd>(j, shift, position, velocity, time, sigma2_row, same_radius, best);
   }
 }
 
 template <int D, class Queue>
-template <bool Shifted>
+template <bool Shifted, bool Simd>
 [[gnu::always_inline]] inline void Engine<D, Queue>::test_pair(std::int32_t j, const Vec<D>& shift,
                                                                const Vec<D>& position, const Vec<D>& velocity,
                                                                double time, const double* sigma2_row, bool same_radius,
@@ -257,45 +222,29 @@ template <bool Shifted>
     dr = q.position + q.velocity * (reference - q.time) - own;
   const Vec<D> dv = q.velocity - velocity;
   const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
-#if defined(__SSE2__)
-  // contact_time_squared (collision.hpp) operation for operation, without its two early returns
-  // (a receding pair, a missing pair): each is a coin flip for the branch predictor, and a
-  // mispredicted branch costs more than the root computed for every candidate. g++ turns
-  // ternaries on doubles into jumps and std::sqrt into a jump around its errno path, so the
-  // selects are SSE2 masks (maxsd(x, 0) is x > 0 ? x : 0). A hit gets bitwise the same contact
-  // time; docs/benchmarks.md, "Branch-free pair test".
-  const double b = dr.dot(dv);
-  const double v2 = dv.squaredNorm();
-  const double c = dr.squaredNorm() - sigma2;
-  const double disc = b * b - v2 * c;
-  const __m128d zero = _mm_setzero_pd();
-  const __m128d root = _mm_sqrt_sd(zero, _mm_max_sd(_mm_set_sd(disc), zero));
-  const __m128d tau = _mm_div_sd(_mm_set_sd(c), _mm_add_sd(_mm_set_sd(-b), root));
-  const __m128d t = _mm_add_sd(_mm_set_sd(reference), _mm_max_sd(tau, zero));
-  const __m128d previous = _mm_set_sd(best.time);
-  // hit: approaching (b < 0), not missing (disc >= 0), and earlier than the best so far
-  const __m128d hit = _mm_and_pd(_mm_and_pd(_mm_cmplt_sd(_mm_set_sd(b), zero), _mm_cmpge_sd(_mm_set_sd(disc), zero)),
-                                 _mm_cmplt_sd(t, previous));
-  best.time = _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(hit, t), _mm_andnot_pd(hit, previous)));
-  const std::uint32_t keep = static_cast<std::uint32_t>(_mm_movemask_pd(hit) & 1) - 1u;  // 0 on a hit, else ~0
-  best.partner = static_cast<std::int32_t>((static_cast<std::uint32_t>(j) & ~keep) |
-                                           (static_cast<std::uint32_t>(best.partner) & keep));
-  best.partner_collisions = (q.collisions & ~keep) | (best.partner_collisions & keep);
-#else
-  const double t = reference + contact_time_squared<D>(dr, dv, sigma2);
-  if (t < best.time) {
-    best.time = t;
-    best.partner = j;
-    best.partner_collisions = q.collisions;
+  if constexpr (Simd && simd_built) {
+    // A branch-free contact_time_squared (md/pair_kernel.hpp): its two early returns are coin
+    // flips for the branch predictor, and a mispredicted branch costs more than the root computed
+    // for every candidate. The partner is selected with integer masks.
+    const std::uint32_t keep = earlier_contact_sse2(contact_terms<D>(dr, dv, sigma2), reference, best.time);
+    best.partner = static_cast<std::int32_t>((static_cast<std::uint32_t>(j) & ~keep) |
+                                             (static_cast<std::uint32_t>(best.partner) & keep));
+    best.partner_collisions = (q.collisions & ~keep) | (best.partner_collisions & keep);
+  } else {
+    const double t = reference + contact_time_squared<D>(dr, dv, sigma2);
+    if (t < best.time) {
+      best.time = t;
+      best.partner = j;
+      best.partner_collisions = q.collisions;
+    }
   }
-#endif
 }
 
 template <int D, class Queue>
 void Engine<D, Queue>::kernel_scan(std::int32_t id, std::int32_t* ids, int count, double* sx, double* sy, double* sz,
                                    const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2,
                                    Prediction& best) const {
-  if constexpr (D == 3) {
+  if constexpr (D == 3 && simd_built) {  // use_kernel_: pair_kernel_available()
     if (count == 0) return;
     // Pad to a multiple of 4 with the particle itself (zero separation: never a hit).
     while (count % 4 != 0) {
@@ -324,8 +273,13 @@ template <int D, class Queue>
   Prediction best = predictions_[id];
   const double* sigma2_row = sigma2_[species_[id]];
   const Vec<D> no_shift = Vec<D>::Zero();
-  for (const std::int32_t j : big_)
-    if (j != id) test_pair<false>(j, no_shift, position, velocity, time, sigma2_row, false, best);
+  for (const std::int32_t j : big_) {
+    if (j == id) continue;
+    if (config_.simd)
+      test_pair<false, true>(j, no_shift, position, velocity, time, sigma2_row, false, best);
+    else
+      test_pair<false, false>(j, no_shift, position, velocity, time, sigma2_row, false, best);
+  }
   predictions_[id] = best;
 }
 
@@ -374,7 +328,9 @@ template <bool Shifted>
     __builtin_prefetch(reinterpret_cast<const void*>(lines + static_cast<std::intptr_t>(j) * sizeof(Particle<D>)));
     n += 1 + (j >> 31);  // +1 for a particle, +0 for -1
   };
-  const auto flush = [&] {
+  // Always inlined: g++ called it out of line once scan_cells held the scalar branch (+6 %
+  // instructions in the 3D equilibrium loop).
+  const auto flush = [&]() __attribute__((always_inline)) {
     kernel_scan(id, ids, n, shift_x, shift_y, shift_z, position, velocity, time, sigma2, best);
     n = 0;
   };
@@ -395,6 +351,7 @@ template <bool Shifted>
 template <int D, class Queue>
 void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas,
                                           const Vec<D>* shifts, int count, bool gather) {
+  if (!config_.simd) return scan_plain(id, base, deltas, shifts, count);
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
@@ -409,7 +366,24 @@ void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, co
     }
   }
   for (int m = 0; m < count; ++m)
-    scan_list<true>(id, base + deltas[m], shifts[m], position, velocity, time, sigma2_row, same_radius, best);
+    scan_list<true, true>(id, base + deltas[m], shifts[m], position, velocity, time, sigma2_row, same_radius, best);
+  predictions_[id] = best;
+}
+
+template <int D, class Queue>
+[[gnu::noinline]] void Engine<D, Queue>::scan_plain(std::int32_t id, std::int32_t base, const std::int32_t* deltas,
+                                                    const Vec<D>* shifts, int count) {
+  const Particle<D>& p = particles_[id];
+  Prediction best = predictions_[id];
+  const double* sigma2_row = sigma2_[species_[id]];
+  const Vec<D> no_shift = Vec<D>::Zero();
+  for (int m = 0; m < count; ++m) {
+    const std::int32_t cell = base + deltas[m];
+    if (shifts != nullptr)
+      scan_list<true, false>(id, cell, shifts[m], p.position, p.velocity, p.time, sigma2_row, same_radius_, best);
+    else
+      scan_list<false, false>(id, cell, no_shift, p.position, p.velocity, p.time, sigma2_row, same_radius_, best);
+  }
   predictions_[id] = best;
 }
 
@@ -419,6 +393,8 @@ template <int D, class Queue>
                                                                 bool gather) {
   // Same arithmetic and visiting order as scan_wrapped_cells with zero shifts, with the particle's
   // data and its best prediction kept in registers across the cells.
+  if (!config_.simd) [[unlikely]]
+    return scan_plain(id, base, first, nullptr, static_cast<int>(last - first));
   const Particle<D>& p = particles_[id];
   const Vec<D> position = p.position, velocity = p.velocity;
   const double time = p.time;
@@ -435,7 +411,7 @@ template <int D, class Queue>
     }
   }
   for (; first != last; ++first)
-    scan_list<false>(id, base + *first, no_shift, position, velocity, time, sigma2_row, same_radius, best);
+    scan_list<false, true>(id, base + *first, no_shift, position, velocity, time, sigma2_row, same_radius, best);
   predictions_[id] = best;
 }
 

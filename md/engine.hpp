@@ -33,9 +33,10 @@ struct EngineConfig {
   /// Open geometry: keep cells as wide as the largest contact distance even for large impurities
   /// (the plain scheme; same trajectories bit for bit, much slower for radius ratios >> 1).
   bool wide_cells_for_big = false;
-  /// 3D: where the CPU has AVX2, the cell-crossing time takes the three axes at once and, with
-  /// equal radii, candidates are tested four at a time (md/pair_kernel.hpp). Trajectories are
-  /// bitwise the same either way (tested).
+  /// The SIMD versions of the pair evaluator (md/pair_kernel.hpp): the SSE2 pair test and crossing
+  /// time, and in 3D, where the CPU has AVX2, the crossing time's three axes at once and, with
+  /// equal radii, candidates tested four at a time. false: the scalar definitions
+  /// (md/collision.hpp). Trajectories are bitwise the same either way (tested).
   bool simd = true;
   bool overlap_check = false;                 ///< verify after every event that the touched particles overlap nobody
   bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
@@ -114,13 +115,17 @@ class Engine {
                           int count, bool gather);
   // The pair test both scans share: particle (position, velocity at `time`, sigma row) against
   // every particle of `cell`, displaced by `shift` when Shifted, keeping the earliest contact.
-  template <bool Shifted>
+  // Simd: the pair test of md/pair_kernel.hpp (SSE2), else the scalar definition (md/collision.hpp).
+  template <bool Shifted, bool Simd>
   void scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift, const Vec<D>& position,
                  const Vec<D>& velocity, double time, const double* sigma2_row, bool same_radius,
                  Prediction& best) const;
-  template <bool Shifted>
+  template <bool Shifted, bool Simd>
   void test_pair(std::int32_t j, const Vec<D>& shift, const Vec<D>& position, const Vec<D>& velocity, double time,
                  const double* sigma2_row, bool same_radius, Prediction& best) const;
+  // Both scans with the scalar pair evaluator (config.simd = false): the cells base + deltas[m],
+  // m < count, with their image shifts unless `shifts` is null.
+  void scan_plain(std::int32_t id, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts, int count);
   // The gathered candidates ids[0, count) through the SIMD kernel (D = 3; ids has room to pad
   // count to a multiple of 4, and so have the shift arrays when present).
   void kernel_scan(std::int32_t id, std::int32_t* ids, int count, double* sx, double* sy, double* sz,

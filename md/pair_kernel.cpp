@@ -1,13 +1,9 @@
+// The AVX2 kernels of md/pair_kernel.hpp, compiled where the build has the SIMD versions.
 #include "md/pair_kernel.hpp"
 
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
-
-#if defined(__x86_64__) || defined(__i386__)
-#include <immintrin.h>
-#define COLDBLAST_PAIR_KERNEL_X86 1
-#endif
 
 namespace coldblast::md {
 
@@ -16,9 +12,9 @@ static_assert(sizeof(Particle<3>) == 64 && alignof(Particle<3>) == 64,
 static_assert(offsetof(Particle<3>, velocity) == 24 && offsetof(Particle<3>, time) == 48,
               "the kernel's transposes assume this layout");
 
-#if defined(COLDBLAST_PAIR_KERNEL_X86)
+#if defined(COLDBLAST_SIMD)
 
-bool pair_kernel_available() {
+bool cpu_has_avx2() {
   static const bool available = [] {
     __builtin_cpu_init();  // needed if the first call comes from a static initializer
     return __builtin_cpu_supports("avx2") != 0;
@@ -140,21 +136,6 @@ __attribute__((target("avx2"))) double earliest_crossing(const Vec<3>& position,
   const int positive = (_mm256_movemask_pd(up) >> axis) & 1;
   code = static_cast<std::uint8_t>(2 * axis + positive);
   return _mm256_cvtsd_f64(m);
-}
-
-#else
-
-bool pair_kernel_available() {
-  return false;
-}
-
-double earliest_crossing(const Vec<3>&, const Vec<3>&, const double*, const double*, std::uint8_t&) {
-  throw std::logic_error("earliest_crossing: the AVX2 kernel is not built for this CPU");
-}
-
-EarliestContact earliest_contact(const Particle<3>*, const std::int32_t*, int, const CandidateShifts&, const Vec<3>&,
-                                 const Vec<3>&, double, double, double) {
-  throw std::logic_error("earliest_contact: the AVX2 pair kernel is not built for this CPU");
 }
 
 #endif

@@ -1,5 +1,5 @@
-// Pair evaluator: contact times and the elastic collision rule against their analytic solutions,
-// for equal and unequal masses, head-on and oblique.
+// Pair evaluator: contact times, cell-crossing times and the elastic collision rule against their
+// analytic solutions, for equal and unequal masses, head-on and oblique.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -23,6 +23,24 @@ TEST_CASE("contact time of a head-on and an oblique approach", "[fast]") {
   CHECK(contact_time<2>(Vec<2>(5.0, 0.0), Vec<2>(0.0, 0.0), 1.0) == never);
   // A round-off overlap that still approaches collides at once.
   CHECK(contact_time<2>(Vec<2>(1.0 - 1e-14, 0.0), Vec<2>(-1.0, 0.0), 1.0) == 0.0);
+}
+
+TEST_CASE("cell-crossing time: the earliest wall, the lower axis among equal times", "[fast]") {
+  const double lower[3] = {0.0, -2.0, 4.0}, width[3] = {1.0, 2.0, 0.5};
+  std::uint8_t code = 255;
+  // Axis 0 upward: (1 - 0.25) / 0.5 = 1.5; axis 1 downward: (-1.5 + 2) / 0.25 = 2; axis 2 at rest.
+  CHECK(cell_crossing_time<3>(Vec<3>(0.25, -1.5, 4.25), Vec<3>(0.5, -0.25, 0.0), lower, width, code) == 1.5);
+  CHECK(code == 1);  // 2 axis + (v > 0)
+  CHECK(cell_crossing_time<3>(Vec<3>(0.25, -1.5, 4.25), Vec<3>(0.0, -1.0, 0.0), lower, width, code) == 0.5);
+  CHECK(code == 2);
+  // Axes 0 and 2 reach their walls together at 0.5: the lower axis wins.
+  CHECK(cell_crossing_time<3>(Vec<3>(0.5, -1.0, 4.25), Vec<3>(-1.0, 0.0, 0.5), lower, width, code) == 0.5);
+  CHECK(code == 0);
+  // At rest: never, code 0; a hair outside its wall (round-off): at once.
+  CHECK(cell_crossing_time<3>(Vec<3>(0.5, -1.0, 4.25), Vec<3>::Zero(), lower, width, code) == never);
+  CHECK(code == 0);
+  CHECK(axis_crossing_time(1.0 + 1e-15, 1.0, 0.0, 1.0) == 0.0);
+  CHECK(axis_crossing_time(0.5, 2.0, 0.0, 1.0) == 0.25);
 }
 
 TEST_CASE("elastic collision: 1D formula along the line of centres, tangential parts unchanged", "[fast]") {

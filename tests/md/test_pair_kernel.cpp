@@ -1,8 +1,10 @@
-// The AVX2 pair kernel (md/pair_kernel.hpp) against the scalar pair test it replaces: the same
-// earliest contact time bit for bit and the same partner (the first among equal times), with and
-// without periodic image shifts; and whole engines with and without it give bit-identical
-// trajectories (a 3D periodic fluid, whose boundary cells use the shifts, and a 3D blast); the
-// AVX2 crossing time against the scalar rule, ties between axes included.
+// The SIMD versions of the pair evaluator (md/pair_kernel.hpp) against its scalar definitions
+// (md/collision.hpp): the AVX2 kernel gives the scalar pair test's earliest contact time bit for
+// bit and the same partner (the first among equal times), with and without periodic image shifts;
+// the SSE2 pair test gives contact_time_squared's time and decision bit for bit; the SSE2 and AVX2
+// crossing times give cell_crossing_time's time and face, ties between axes included; and whole
+// engines with simd = false (the scalar definitions) and true give bit-identical trajectories
+// (a 3D periodic fluid, whose boundary cells use the shifts, a 3D blast and a 2D blast).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -17,8 +19,9 @@
 using namespace coldblast::md;
 
 namespace {
-// The engine's scalar pair test (engine.cpp, test_pair), written out independently: evaluate the
-// pair at the later of the two stored times, keep strictly earlier contacts.
+// The engine's pair test with the scalar definition (engine.cpp, test_pair), written out
+// independently: evaluate the pair at the later of the two stored times, keep strictly earlier
+// contacts.
 EarliestContact scalar_earliest(const std::vector<Particle<3>>& particles, const std::vector<std::int32_t>& ids,
                                 const std::vector<Vec<3>>* shifts, const Particle<3>& self, double sigma2,
                                 double before) {
@@ -162,38 +165,40 @@ TEST_CASE("engines with and without the SIMD pair kernel give bit-identical traj
   }
 }
 
-TEST_CASE("the AVX2 crossing time gives the scalar crossing time and face bit for bit", "[fast]") {
-  if (!has_avx2_or_warn("the engine uses the scalar crossing time only, nothing to compare")) return;
-  std::mt19937_64 rng(23);
+namespace {
+// A random cell and a particle in it for the crossing-time comparisons: some axes at rest, every
+// 50th particle at rest, and every 7th with axes 0 and 1 reaching their walls at exactly the
+// same time (a tie: the lower axis wins).
+template <int D>
+void crossing_case(std::mt19937_64& rng, int trial, double (&lower)[D], double (&width)[D], Vec<D>& x, Vec<D>& v) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < D; ++k) {
+    lower[k] = -3.0 + 4.0 * u(rng);
+    width[k] = 1.0 + 0.1 * u(rng);
+    x[k] = lower[k] + width[k] * u(rng);
+    v[k] = u(rng) < 0.15 ? 0.0 : 2.0 * u(rng) - 1.0;
+  }
+  if (trial % 50 == 0) v = Vec<D>::Zero();
+  if (trial % 7 == 0) {
+    v[0] = v[1] = -0.5;
+    x[1] = lower[1] + (x[0] - lower[0]);
+  }
+}
+
+// Requires `crossing` (a SIMD version) to give cell_crossing_time's time and face code bit for
+// bit over many random cases, ties and particles at rest among them.
+template <int D, class Crossing>
+void require_scalar_crossing(Crossing&& crossing) {
+  std::mt19937_64 rng(23);
   int ties = 0, resting = 0;
   for (int trial = 0; trial < 20000; ++trial) {
-    const double lower[3] = {-3.0 + u(rng), 2.0 * u(rng), -u(rng)};
-    const double width[3] = {1.0 + 0.1 * u(rng), 1.0 + 0.1 * u(rng), 1.0 + 0.1 * u(rng)};
-    Vec<3> x, v;
-    for (int k = 0; k < 3; ++k) {
-      x[k] = lower[k] + width[k] * u(rng);
-      const double r = u(rng);
-      v[k] = r < 0.15 ? 0.0 : 2.0 * u(rng) - 1.0;
-    }
-    if (trial % 50 == 0) v = Vec<3>::Zero();
-    if (trial % 7 == 0) {  // two axes reaching their walls at exactly the same time
-      v[0] = v[1] = -0.5;
-      x[1] = lower[1] + (x[0] - lower[0]);
-    }
-    // The scalar rule (engine.cpp, crossing_time): the first axis with the smallest time.
-    double best = never;
-    std::uint8_t expected_code = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double wall = v[k] > 0.0 ? lower[k] + width[k] : lower[k];
-      const double dt = v[k] == 0.0 ? never : std::max(0.0, (wall - x[k]) / v[k]);
-      if (dt < best) {
-        best = dt;
-        expected_code = static_cast<std::uint8_t>(2 * k + (v[k] > 0.0 ? 1 : 0));
-      }
-    }
+    double lower[D], width[D];
+    Vec<D> x, v;
+    crossing_case<D>(rng, trial, lower, width, x, v);
+    std::uint8_t expected_code = 255;
+    const double best = cell_crossing_time<D>(x, v, lower, width, expected_code);
     std::uint8_t code = 255;
-    const double got = earliest_crossing(x, v, lower, width, code);
+    const double got = crossing(x, v, lower, width, code);
     INFO("trial " << trial);
     REQUIRE(got == best);
     REQUIRE(code == expected_code);
@@ -203,4 +208,82 @@ TEST_CASE("the AVX2 crossing time gives the scalar crossing time and face bit fo
   }
   REQUIRE(resting >= 300);  // particles at rest: never, code 0
   REQUIRE(ties > 100);
+}
+}  // namespace
+
+TEST_CASE("the AVX2 crossing time gives the scalar crossing time and face bit for bit", "[fast]") {
+  if (!has_avx2_or_warn("the engine uses the scalar crossing time only, nothing to compare")) return;
+  require_scalar_crossing<3>([](const Vec<3>& x, const Vec<3>& v, const double* lower, const double* width,
+                                std::uint8_t& code) { return earliest_crossing(x, v, lower, width, code); });
+}
+
+TEST_CASE("the SSE2 crossing time gives the scalar crossing time and face bit for bit (2D, 3D)", "[fast]") {
+  if constexpr (simd_built) {
+    require_scalar_crossing<2>([](const Vec<2>& x, const Vec<2>& v, const double* lower, const double* width,
+                                  std::uint8_t& code) { return cell_crossing_time_sse2<2>(x, v, lower, width, code); });
+    require_scalar_crossing<3>([](const Vec<3>& x, const Vec<3>& v, const double* lower, const double* width,
+                                  std::uint8_t& code) { return cell_crossing_time_sse2<3>(x, v, lower, width, code); });
+  } else {
+    WARN("this build has no SSE2: the engine runs the scalar definitions only, nothing to compare");
+  }
+}
+
+TEST_CASE("the SSE2 pair test gives contact_time_squared's contact time and decision bit for bit", "[fast]") {
+  if constexpr (simd_built) {
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int hits = 0, later = 0, overlapping = 0;
+    for (int trial = 0; trial < 50000; ++trial) {
+      // Pairs at random separations (some overlapping by round-off or more), approaching,
+      // receding, at rest relative to each other or passing without touching.
+      const Vec<3> dr = random_vec(rng, 3.0);
+      const Vec<3> dv = u(rng) < 0.05 ? Vec<3>::Zero() : random_vec(rng, 2.0);
+      const double sigma2 = trial % 10 == 0 ? dr.squaredNorm() * (1.0 + 1e-15 * u(rng)) : 0.5 + u(rng);
+      const double reference = 5.0 * u(rng);
+      const double before = u(rng) < 0.3 ? never : reference + 4.0 * u(rng);
+      const double t = reference + contact_time_squared<3>(dr, dv, sigma2);
+      double best = before;
+      const std::uint32_t keep = earlier_contact_sse2(contact_terms<3>(dr, dv, sigma2), reference, best);
+      INFO("trial " << trial);
+      REQUIRE(keep == (t < before ? 0u : ~0u));
+      REQUIRE(best == (t < before ? t : before));  // bitwise: exact equality of doubles
+      hits += t < before;
+      later += t < never && t >= before;
+      overlapping += t == reference && t < before;
+    }
+    REQUIRE(hits > 3000);        // many real contacts
+    REQUIRE(later > 200);        // contacts after the best so far, which must not replace it
+    REQUIRE(overlapping > 100);  // round-off overlaps that collide at once (τ = 0)
+  } else {
+    WARN("this build has no SSE2: the engine runs the scalar definitions only, nothing to compare");
+  }
+}
+
+TEST_CASE("engines with the SIMD and the scalar pair evaluator give bit-identical trajectories (2D)", "[fast]") {
+  // The 2D blast with equal radii, and with a big impurity (unequal radii: the species lookup of
+  // the contact distance, and the big particles' own scans).
+  for (const Species impurity : {Species{0.5, 1.0}, Species{2.5, 1.0}}) {
+    INFO("impurity radius " << impurity.radius);
+    auto rng = realization_rng(11, 0);
+    const double radius = 110.0;
+    InitialState<2> s;
+    s.host = {0.5, 1.0};
+    s.impurity = impurity;
+    const auto count = static_cast<std::size_t>(0.15 * M_PI * radius * radius);
+    s.position = random_sequential_addition<2>(rng, count, 0.5, radius);
+    s.velocity.assign(count, Vec<2>::Zero());
+    s.species.assign(count, host_species);
+    kick_impurities<2>(rng, s, 4, 5.7, radius);
+    EngineConfig<2> simd;
+    simd.region_radius = 140.0;
+    simd.guard_radius = 138.0;
+    simd.cell_width = 1.0;  // host-sized cells: the big impurity's wide stencil is in use
+    EngineConfig<2> scalar = simd;
+    scalar.simd = false;
+    Engine<2, CalendarEventQueue> a(simd, s), b(scalar, s);
+    a.run_until(400.0);
+    b.run_until(400.0);
+    testing::require_same_trajectory(a, b, 10000);
+    REQUIRE(a.stale_count() == b.stale_count());
+  }
 }
