@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "common/interrupt.hpp"
+
 namespace coldblast::hydro {
 
 namespace sh = sundials_handles;
@@ -37,7 +39,10 @@ CvodeBdf::CvodeBdf(const CvodeProblem& problem) : size_(static_cast<long>(proble
 double CvodeBdf::advance_to(double t_out, const std::function<std::string(double)>& context) {
   sh::check_cvode(CVodeSetStopTime(memory_.get(), t_out), "CVodeSetStopTime");
   const int flag = CVode(memory_.get(), t_out, y_.get(), &t_, CV_NORMAL);
-  if (flag < 0) sh::check_cvode(flag, "CVode", context ? context(t_) : std::string());
+  if (flag < 0) {
+    common::throw_if_stop_requested();  // the RHS refused to run on a stop request
+    sh::check_cvode(flag, "CVode", context ? context(t_) : std::string());
+  }
   return t_;
 }
 

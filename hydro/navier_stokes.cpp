@@ -12,6 +12,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "hydro/cvode_bdf.hpp"
 #include "hydro/enskog.hpp"
@@ -412,6 +413,9 @@ struct UserData {
 };
 
 int cvode_rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
+  // A pending stop (Ctrl-C, SIGTERM: common/interrupt.hpp) ends CVode within one RHS evaluation;
+  // CvodeBdf::advance_to then throws common::Interrupted (no exception crosses SUNDIALS' C frames).
+  if (common::stop_requested()) return -1;
   return static_cast<UserData*>(user_data)->blast->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
 }
 

@@ -46,3 +46,44 @@ def test_sigint_interrupts_md_run(tmp_path):
     assert "usable 2" in lines and code == 7
     assert not (out / "observables.csv").exists() and not (out / "summary.json").exists()
     assert not any(name.endswith(".tmp") or ".tmp" in name for _, _, files in os.walk(tmp_path) for name in files)
+
+
+HYDRO_CHILD = textwrap.dedent("""
+    import coldblast
+    def progress(x, until):
+        print("progress", x, flush=True)
+    try:
+        coldblast.hydro.core(until=1e12, cells=512, progress=progress)
+    except KeyboardInterrupt:
+        print("KeyboardInterrupt", flush=True)
+        after = coldblast.hydro.core(until=10, cells=32, progress=False)  # the stop request was cleared
+        print("usable", after.cells, flush=True)
+        raise SystemExit(7)
+    print("finished", flush=True)
+""")
+
+
+def test_sigint_interrupts_hydro_core():
+    """A Navier-Stokes run to R/lambda = 1e12 (minutes) stops within a second of SIGINT."""
+    child = subprocess.Popen([sys.executable, "-c", HYDRO_CHILD], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, env=dict(os.environ))
+    latency = None
+    try:
+        line = child.stdout.readline()
+        assert line.startswith("progress"), line + child.stderr.read()
+        time.sleep(0.3)
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        lines = []
+        for line in child.stdout:
+            lines.append(line.strip())
+            if line.startswith("KeyboardInterrupt"):
+                latency = time.monotonic() - sent
+        code = child.wait(timeout=60)
+    finally:
+        if child.poll() is None:
+            child.kill()
+    assert "KeyboardInterrupt" in lines, lines
+    assert "finished" not in lines
+    assert latency is not None and latency < 1.0
+    assert "usable 32" in lines and code == 7
