@@ -26,8 +26,7 @@ CellList<D> CellList<D>::periodic(const Vec<D>& box, double min_width, std::size
 }
 
 template <int D>
-CellList<D> CellList<D>::open(double region_radius, double guard_radius, double min_width, std::size_t particle_count,
-                              int margin_cells) {
+CellList<D> CellList<D>::open(double region_radius, double min_width, std::size_t particle_count, int margin_cells) {
   CellList list;
   list.periodic_ = false;
   const double cells_per_axis = 2.0 * std::ceil(region_radius / min_width) + 2.0 * std::max(2, margin_cells);
@@ -40,7 +39,6 @@ CellList<D> CellList<D>::open(double region_radius, double guard_radius, double 
     list.box_[k] = cells_per_axis * min_width;
   }
   list.set_up(particle_count);
-  (void)guard_radius;  // the engine checks positions against it directly
   return list;
 }
 

@@ -19,12 +19,10 @@ class CellList {
   /// Periodic box [0, box_k) with cells of width >= min_width (at least 3 cells per axis).
   static CellList periodic(const Vec<D>& box, double min_width, std::size_t particle_count);
   /// Open cube [-half, half)^D, half = region_radius + `margin_cells` (>= 2) cell widths (the engine
-  /// keeps moving particles inside guard_radius < region_radius, so their neighbour cells always
+  /// keeps moving particles inside its guard radius < region_radius, so their neighbour cells always
   /// exist; a wider stencil of reach k needs k + 1 cells of margin).
-  static CellList open(double region_radius, double guard_radius, double min_width, std::size_t particle_count,
-                       int margin_cells = 2);
+  static CellList open(double region_radius, double min_width, std::size_t particle_count, int margin_cells = 2);
 
-  bool is_periodic() const { return periodic_; }
   std::int32_t cell_count() const { return static_cast<std::int32_t>(head_.size()); }
   double width(int k) const { return width_[k]; }
   std::int32_t count(int k) const { return count_[k]; }

@@ -80,7 +80,7 @@ CellPlan plan_cells(const EngineConfig<D>& config, const InitialState<D>& state)
 template <int D>
 CellList<D> make_cells(const EngineConfig<D>& config, const CellPlan& plan, std::size_t count) {
   if (config.periodic) return CellList<D>::periodic(config.box, plan.width, count);
-  return CellList<D>::open(config.region_radius, config.guard_radius, plan.width, count, plan.big_reach + 1);
+  return CellList<D>::open(config.region_radius, plan.width, count, plan.big_reach + 1);
 }
 }  // namespace
 
@@ -189,30 +189,24 @@ double Engine<D, Queue>::crossing_time(const Particle<D>& p, std::uint8_t& code)
 
 template <int D, class Queue>
 template <bool Shifted, bool Simd>
-[[gnu::always_inline]] inline void Engine<D, Queue>::scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift,
-                                                               const Vec<D>& position, const Vec<D>& velocity,
-                                                               double time, const double* sigma2_row, bool same_radius,
-                                                               Prediction& best) const {
+[[gnu::always_inline]] inline void Engine<D, Queue>::scan_list(Scan& s, std::int32_t cell, const Vec<D>& shift) const {
   for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) {
-    if (j == id) continue;
-    test_pair<Shifted, Simd>(j, shift, position, velocity, time, sigma2_row, same_radius, best);
+    if (j == s.id) continue;
+    test_pair<Shifted, Simd>(s, j, shift);
   }
 }
 
 template <int D, class Queue>
 template <bool Shifted, bool Simd>
-[[gnu::always_inline]] inline void Engine<D, Queue>::test_pair(std::int32_t j, const Vec<D>& shift,
-                                                               const Vec<D>& position, const Vec<D>& velocity,
-                                                               double time, const double* sigma2_row, bool same_radius,
-                                                               Prediction& best) const {
+[[gnu::always_inline]] inline void Engine<D, Queue>::test_pair(Scan& s, std::int32_t j, const Vec<D>& shift) const {
   const Particle<D>& q = particles_[j];
   // The pair is evaluated at the later of the two stored times (the last time either changed
   // course), not at the time of the scan: the predicted contact time is then a function of the
   // two stored states alone, the same whichever of the two scans and whenever it scans, so
   // the trajectory does not depend on the cell grid (docs/benchmarks.md, "Large impurities").
   // One of the two extrapolations is by zero time, hence exact.
-  const double reference = std::max(time, q.time);
-  const Vec<D> own = position + velocity * (reference - time);
+  const double reference = std::max(s.time, q.time);
+  const Vec<D> own = s.position + s.velocity * (reference - s.time);
   Vec<D> dr;
   // The image shift is added last, so the pair seen from the other side (shift negated) gives
   // exactly -dr and the same contact time.
@@ -220,67 +214,54 @@ template <bool Shifted, bool Simd>
     dr = (q.position + q.velocity * (reference - q.time) - own) + shift;
   else
     dr = q.position + q.velocity * (reference - q.time) - own;
-  const Vec<D> dv = q.velocity - velocity;
-  const double sigma2 = same_radius ? sigma2_row[0] : sigma2_row[species_[j]];
+  const Vec<D> dv = q.velocity - s.velocity;
+  const double sigma2 = s.same_radius ? s.sigma2_row[0] : s.sigma2_row[species_[j]];
   if constexpr (Simd && simd_built) {
     // A branch-free contact_time_squared (md/pair_kernel.hpp): its two early returns are coin
     // flips for the branch predictor, and a mispredicted branch costs more than the root computed
     // for every candidate. The partner is selected with integer masks.
+    Prediction& best = s.best;
     const std::uint32_t keep = earlier_contact_sse2(contact_terms<D>(dr, dv, sigma2), reference, best.time);
     best.partner = static_cast<std::int32_t>((static_cast<std::uint32_t>(j) & ~keep) |
                                              (static_cast<std::uint32_t>(best.partner) & keep));
     best.partner_collisions = (q.collisions & ~keep) | (best.partner_collisions & keep);
   } else {
     const double t = reference + contact_time_squared<D>(dr, dv, sigma2);
-    if (t < best.time) {
-      best.time = t;
-      best.partner = j;
-      best.partner_collisions = q.collisions;
-    }
+    if (t < s.best.time) s.best = {t, j, q.collisions};
   }
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::kernel_scan(std::int32_t id, std::int32_t* ids, int count, double* sx, double* sy, double* sz,
-                                   const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2,
-                                   Prediction& best) const {
+void Engine<D, Queue>::kernel_scan(Scan& s, std::int32_t* ids, int count, double* sx, double* sy, double* sz) const {
   if constexpr (D == 3 && simd_built) {  // use_kernel_: pair_kernel_available()
     if (count == 0) return;
     // Pad to a multiple of 4 with the particle itself (zero separation: never a hit).
     while (count % 4 != 0) {
-      ids[count] = id;
+      ids[count] = s.id;
       if (sx != nullptr) sx[count] = sy[count] = sz[count] = 0.0;
       ++count;
     }
-    const EarliestContact hit =
-        earliest_contact(particles_.data(), ids, count, {sx, sy, sz}, position, velocity, time, sigma2, best.time);
-    if (hit.index >= 0) {
-      best.time = hit.time;
-      best.partner = ids[hit.index];
-      best.partner_collisions = particles_[best.partner].collisions;
-    }
+    // use_kernel_: every radius is equal, one contact distance
+    const EarliestContact hit = earliest_contact(particles_.data(), ids, count, {sx, sy, sz}, s.position, s.velocity,
+                                                 s.time, s.sigma2_row[0], s.best.time);
+    if (hit.index >= 0) s.best = {hit.time, ids[hit.index], particles_[ids[hit.index]].collisions};
   } else {
-    (void)id, (void)ids, (void)count, (void)sx, (void)sy, (void)sz, (void)position, (void)velocity, (void)time,
-        (void)sigma2, (void)best;
+    (void)s, (void)ids, (void)count, (void)sx, (void)sy, (void)sz;
   }
 }
 
 template <int D, class Queue>
 [[gnu::noinline]] void Engine<D, Queue>::scan_bigs(std::int32_t id) {
-  const Particle<D>& p = particles_[id];
-  const Vec<D> position = p.position, velocity = p.velocity;
-  const double time = p.time;
-  Prediction best = predictions_[id];
-  const double* sigma2_row = sigma2_[species_[id]];
+  Scan s = start_scan(id, false);
   const Vec<D> no_shift = Vec<D>::Zero();
   for (const std::int32_t j : big_) {
     if (j == id) continue;
     if (config_.simd)
-      test_pair<false, true>(j, no_shift, position, velocity, time, sigma2_row, false, best);
+      test_pair<false, true>(s, j, no_shift);
     else
-      test_pair<false, false>(j, no_shift, position, velocity, time, sigma2_row, false, best);
+      test_pair<false, false>(s, j, no_shift);
   }
-  predictions_[id] = best;
+  predictions_[id] = s.best;
 }
 
 template <int D, class Queue>
@@ -291,11 +272,8 @@ void Engine<D, Queue>::cover(std::int32_t cell, const std::vector<std::int32_t>&
 
 template <int D, class Queue>
 template <bool Shifted>
-[[gnu::always_inline]] inline void Engine<D, Queue>::gather_scan(std::int32_t id, std::int32_t base,
-                                                                 const std::int32_t* deltas, const Vec<D>* shifts,
-                                                                 int count, const Vec<D>& position,
-                                                                 const Vec<D>& velocity, double time, double sigma2,
-                                                                 Prediction& best) const {
+[[gnu::always_inline]] inline void Engine<D, Queue>::gather_scan(Scan& s, std::int32_t base, const std::int32_t* deltas,
+                                                                 const Vec<D>* shifts, int count) const {
   // The walk over the cell lists is a chain of short lists (about 0.6 particles per cell at
   // phi = 0.3), and a loop's exit at each list end is a coin flip for the branch predictor.
   // So the first two places of each list are taken without a branch (a missing particle, -1,
@@ -331,7 +309,7 @@ template <bool Shifted>
   // Always inlined: g++ called it out of line once scan_cells held the scalar branch (+6 %
   // instructions in the 3D equilibrium loop).
   const auto flush = [&]() __attribute__((always_inline)) {
-    kernel_scan(id, ids, n, shift_x, shift_y, shift_z, position, velocity, time, sigma2, best);
+    kernel_scan(s, ids, n, shift_x, shift_y, shift_z);
     n = 0;
   };
   for (int m = 0; m < count; ++m) {
@@ -352,39 +330,30 @@ template <int D, class Queue>
 void Engine<D, Queue>::scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas,
                                           const Vec<D>* shifts, int count, bool gather) {
   if (!config_.simd) return scan_plain(id, base, deltas, shifts, count);
-  const Particle<D>& p = particles_[id];
-  const Vec<D> position = p.position, velocity = p.velocity;
-  const double time = p.time;
-  Prediction best = predictions_[id];
-  const double* sigma2_row = sigma2_[species_[id]];
-  const bool same_radius = same_radius_;  // a local: stays in a register across the stores to best
+  Scan s = start_scan(id, same_radius_);
   if constexpr (D == 3) {
     if (gather) {
-      gather_scan<true>(id, base, deltas, shifts, count, position, velocity, time, sigma2_row[0], best);
-      predictions_[id] = best;
+      gather_scan<true>(s, base, deltas, shifts, count);
+      predictions_[id] = s.best;
       return;
     }
   }
-  for (int m = 0; m < count; ++m)
-    scan_list<true, true>(id, base + deltas[m], shifts[m], position, velocity, time, sigma2_row, same_radius, best);
-  predictions_[id] = best;
+  for (int m = 0; m < count; ++m) scan_list<true, true>(s, base + deltas[m], shifts[m]);
+  predictions_[id] = s.best;
 }
 
 template <int D, class Queue>
 [[gnu::noinline]] void Engine<D, Queue>::scan_plain(std::int32_t id, std::int32_t base, const std::int32_t* deltas,
                                                     const Vec<D>* shifts, int count) {
-  const Particle<D>& p = particles_[id];
-  Prediction best = predictions_[id];
-  const double* sigma2_row = sigma2_[species_[id]];
+  Scan s = start_scan(id, same_radius_);
   const Vec<D> no_shift = Vec<D>::Zero();
   for (int m = 0; m < count; ++m) {
-    const std::int32_t cell = base + deltas[m];
     if (shifts != nullptr)
-      scan_list<true, false>(id, cell, shifts[m], p.position, p.velocity, p.time, sigma2_row, same_radius_, best);
+      scan_list<true, false>(s, base + deltas[m], shifts[m]);
     else
-      scan_list<false, false>(id, cell, no_shift, p.position, p.velocity, p.time, sigma2_row, same_radius_, best);
+      scan_list<false, false>(s, base + deltas[m], no_shift);
   }
-  predictions_[id] = best;
+  predictions_[id] = s.best;
 }
 
 template <int D, class Queue>
@@ -395,24 +364,17 @@ template <int D, class Queue>
   // data and its best prediction kept in registers across the cells.
   if (!config_.simd) [[unlikely]]
     return scan_plain(id, base, first, nullptr, static_cast<int>(last - first));
-  const Particle<D>& p = particles_[id];
-  const Vec<D> position = p.position, velocity = p.velocity;
-  const double time = p.time;
-  Prediction best = predictions_[id];
-  const double* sigma2_row = sigma2_[species_[id]];
-  const bool same_radius = same_radius_;
+  Scan s = start_scan(id, same_radius_);
   const Vec<D> no_shift = Vec<D>::Zero();
   if constexpr (D == 3) {
     if (gather) {
-      gather_scan<false>(id, base, first, nullptr, static_cast<int>(last - first), position, velocity, time,
-                         sigma2_row[0], best);
-      predictions_[id] = best;
+      gather_scan<false>(s, base, first, nullptr, static_cast<int>(last - first));
+      predictions_[id] = s.best;
       return;
     }
   }
-  for (; first != last; ++first)
-    scan_list<false, true>(id, base + *first, no_shift, position, velocity, time, sigma2_row, same_radius, best);
-  predictions_[id] = best;
+  for (; first != last; ++first) scan_list<false, true>(s, base + *first, no_shift);
+  predictions_[id] = s.best;
 }
 
 template <int D, class Queue>

@@ -107,34 +107,45 @@ class Engine {
   }
   void collide(std::int32_t i, std::int32_t j, double t);
   void cross(std::int32_t id, double t);
+  // One particle's search for its earliest contact: what the scan helpers share. The particle's
+  // stored state, its row of squared contact distances (sigma2_[species]), whether every radius is
+  // equal (then row[0] serves every partner, without a species lookup), and the earliest contact
+  // found so far. A local copy: it stays in registers across the cells and is stored back once.
+  struct Scan {
+    std::int32_t id;
+    Vec<D> position, velocity;
+    double time;
+    const double* sigma2_row;
+    bool same_radius;
+    Prediction best;
+  };
+  Scan start_scan(std::int32_t id, bool same_radius) const {
+    const Particle<D>& p = particles_[id];
+    return {id, p.position, p.velocity, p.time, sigma2_[species_[id]], same_radius, predictions_[id]};
+  }
   // Scans the unwrapped cells base + delta for delta in [first, last) (no periodic image shift);
   // `gather`: through the SIMD kernel (requires use_kernel_).
   void scan_cells(std::int32_t id, std::int32_t base, const std::int32_t* first, const std::int32_t* last, bool gather);
   // Scans the cells base + deltas[m], m < count, each with its periodic image shift.
   void scan_wrapped_cells(std::int32_t id, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts,
                           int count, bool gather);
-  // The pair test both scans share: particle (position, velocity at `time`, sigma row) against
-  // every particle of `cell`, displaced by `shift` when Shifted, keeping the earliest contact.
-  // Simd: the pair test of md/pair_kernel.hpp (SSE2), else the scalar definition (md/collision.hpp).
+  // The pair test both scans share: the scanning particle against every particle of `cell`, or
+  // against particle j, displaced by `shift` when Shifted, keeping the earliest contact in s.best.
+  // Simd: the SSE2 pair test (md/pair_kernel.hpp), else the scalar definition (md/collision.hpp).
   template <bool Shifted, bool Simd>
-  void scan_list(std::int32_t id, std::int32_t cell, const Vec<D>& shift, const Vec<D>& position,
-                 const Vec<D>& velocity, double time, const double* sigma2_row, bool same_radius,
-                 Prediction& best) const;
+  void scan_list(Scan& s, std::int32_t cell, const Vec<D>& shift) const;
   template <bool Shifted, bool Simd>
-  void test_pair(std::int32_t j, const Vec<D>& shift, const Vec<D>& position, const Vec<D>& velocity, double time,
-                 const double* sigma2_row, bool same_radius, Prediction& best) const;
+  void test_pair(Scan& s, std::int32_t j, const Vec<D>& shift) const;
   // Both scans with the scalar pair evaluator (config.simd = false): the cells base + deltas[m],
   // m < count, with their image shifts unless `shifts` is null.
   void scan_plain(std::int32_t id, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts, int count);
   // The gathered candidates ids[0, count) through the SIMD kernel (D = 3; ids has room to pad
-  // count to a multiple of 4, and so have the shift arrays when present).
-  void kernel_scan(std::int32_t id, std::int32_t* ids, int count, double* sx, double* sy, double* sz,
-                   const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2, Prediction& best) const;
+  // count to a multiple of 4, and so have the image shift arrays sx, sy, sz when not null).
+  void kernel_scan(Scan& s, std::int32_t* ids, int count, double* sx, double* sy, double* sz) const;
   // The D = 3 kernel path of both scans: gathers the cells base + deltas[m] (m < count; with their
-  // image shifts when Shifted) and tests the candidates through kernel_scan into `best`.
+  // image shifts when Shifted) and tests the candidates through kernel_scan.
   template <bool Shifted>
-  void gather_scan(std::int32_t id, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts, int count,
-                   const Vec<D>& position, const Vec<D>& velocity, double time, double sigma2, Prediction& best) const;
+  void gather_scan(Scan& s, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts, int count) const;
   void full_scan(std::int32_t id);
   // Big particles (open geometry, impurities larger than the host: see engine.cpp).
   bool is_big(std::int32_t id) const { return big_reach_ != 0 && species_[id] != host_species; }

@@ -35,6 +35,21 @@ __attribute__((target("avx2"))) inline void transpose4(__m256d r0, __m256d r1, _
   c2 = _mm256_permute2f128_pd(t0, t2, 0x31);
   c3 = _mm256_permute2f128_pd(t1, t3, 0x31);
 }
+
+// The earliest of the four lanes' best contacts (candidate index -1: none), strictly before
+// `before`; among equal times the first candidate, as the scalar loop in order.
+EarliestContact earliest_lane(const double* times, const double* indices, double before) {
+  EarliestContact result{before, -1};
+  for (int lane = 0; lane < 4; ++lane) {
+    if (indices[lane] < 0.0) continue;
+    const int candidate = static_cast<int>(indices[lane]);
+    if (times[lane] < result.time || (result.index >= 0 && times[lane] == result.time && candidate < result.index)) {
+      result.time = times[lane];
+      result.index = candidate;
+    }
+  }
+  return result;
+}
 }  // namespace
 
 __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<3>* particles, const std::int32_t* ids,
@@ -103,17 +118,7 @@ __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<
   alignas(32) double times[4], indices[4];
   _mm256_store_pd(times, lane_best);
   _mm256_store_pd(indices, lane_index);
-  EarliestContact result{before, -1};
-  for (int lane = 0; lane < 4; ++lane) {
-    if (indices[lane] < 0.0) continue;
-    const int candidate = static_cast<int>(indices[lane]);
-    // earliest time; among equal times the first candidate, as the scalar loop in order
-    if (times[lane] < result.time || (result.index >= 0 && times[lane] == result.time && candidate < result.index)) {
-      result.time = times[lane];
-      result.index = candidate;
-    }
-  }
-  return result;
+  return earliest_lane(times, indices, before);
 }
 
 __attribute__((target("avx2"))) double earliest_crossing(const Vec<3>& position, const Vec<3>& velocity,
