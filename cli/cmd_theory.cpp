@@ -1,4 +1,6 @@
-// coldblast theory: the paper's Table 2 (exact rational exponents) for any dimension d.
+// coldblast theory: the paper's Table 2 (exact rational exponents) for any dimension d, and the impurity
+// prefactors computed by coldblast tracer (theory/computed_prefactors.hpp) where they are known.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -8,12 +10,18 @@
 
 #include "cli/commands.hpp"
 #include "common/validate.hpp"
+#include "theory/computed_prefactors.hpp"
 #include "theory/exponents.hpp"
 #include "theory/observables.hpp"
 
 namespace coldblast::cli {
 
 namespace {
+
+constexpr const char* prefactor_definition =
+    "X / (the paper's estimate of X with its O(1) factor set to 1: R_imp = C lambda (R/lambda)^h_d, Eq. (6); "
+    "V_imp, Eq. (8); C_imp, Eq. (10)), computed by coldblast tracer (Monte Carlo of Eq. (36) in the dense "
+    "Navier-Stokes blast), not derived; error: block-jackknife standard error";
 
 struct TheoryOptions {
   int d = 2;
@@ -23,6 +31,28 @@ struct TheoryOptions {
 
 common::Json rational_json(const theory::Rational& value) {
   return {{"rational", theory::to_string(value)}, {"value", theory::to_double(value)}};
+}
+
+/// The computed prefactors of dimension d (theory/computed_prefactors.hpp) with their sources.
+common::Json prefactors_json(int d) {
+  common::Json entries = common::Json::array();
+  std::vector<int> used;
+  for (const theory::ComputedPrefactor& p : theory::computed_prefactors(d)) {
+    entries.push_back({{"observable", p.observable},
+                       {"t", p.t},
+                       {"R_over_lambda", p.R_over_lambda},
+                       {"value", p.value},
+                       {"error", p.error},
+                       {"source", p.source}});
+    if (std::find(used.begin(), used.end(), p.source) == used.end()) used.push_back(p.source);
+  }
+  common::Json sources = common::Json::object();
+  for (const int i : used) {
+    const theory::PrefactorSource& s = theory::prefactor_sources().at(static_cast<std::size_t>(i));
+    sources[std::to_string(i)] = {
+        {"command", s.command}, {"trajectories", s.trajectories}, {"description", s.description}};
+  }
+  return {{"definition", prefactor_definition}, {"entries", entries}, {"sources", sources}};
 }
 
 common::Json dimension_json(int d) {
@@ -44,13 +74,54 @@ common::Json dimension_json(int d) {
             {"diffusion", rational_json(c.diffusion)},
             {"spread", rational_json(c.spread)},
             {"density", rational_json(c.density)},
-            {"gaussian_coefficient", rational_json(c.gaussian_coefficient)}}}};
+            {"gaussian_coefficient", rational_json(c.gaussian_coefficient)}}},
+          {"computed_prefactors", prefactors_json(d)}};
 }
 
 std::string cell(const theory::Rational& value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%-9s %9.6f", theory::to_string(value).c_str(), theory::to_double(value));
   return buffer;
+}
+
+/// The computed prefactors of dimension d, one line per recording time, then their sources.
+void print_prefactors(int d) {
+  const std::vector<theory::ComputedPrefactor> all = theory::computed_prefactors(d);
+  if (all.empty()) return;
+  std::cout << "\n  impurity prefactors C = X / (the paper's estimate of X with its O(1) factor 1: R_imp = C lambda "
+               "(R/lambda)^h_d,\n  Eq. (6); V_imp, Eq. (8); C_imp, Eq. (10)) computed by coldblast tracer (Monte Carlo "
+               "of Eq. (36)), not\n  derived in the paper; +- block-jackknife standard error\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "  %-12s %-22s %-22s %-22s %s\n", "R/lambda", "R_imp", "V_imp", "C_imp", "source");
+  std::cout << line;
+  std::vector<double> times;
+  for (const auto& p : all)
+    if (std::find(times.begin(), times.end(), p.t) == times.end()) times.push_back(p.t);
+  std::sort(times.begin(), times.end());
+  std::vector<int> used;
+  for (const double t : times) {
+    std::string cells[3];
+    double R_over_lambda = 0.0;
+    int source = -1;
+    for (const auto& p : all) {
+      if (p.t != t) continue;
+      const int column = std::string(p.observable) == "R_imp" ? 0 : std::string(p.observable) == "V_imp" ? 1 : 2;
+      char cell_text[64];
+      std::snprintf(cell_text, sizeof cell_text, "%.5g +- %.2g", p.value, p.error);
+      cells[column] = cell_text;
+      R_over_lambda = p.R_over_lambda;
+      source = p.source;
+    }
+    std::snprintf(line, sizeof line, "  %-12.5g %-22s %-22s %-22s [%d]\n", R_over_lambda, cells[0].c_str(),
+                  cells[1].c_str(), cells[2].c_str(), source);
+    std::cout << line;
+    if (std::find(used.begin(), used.end(), source) == used.end()) used.push_back(source);
+  }
+  for (const int i : used) {
+    const theory::PrefactorSource& s = theory::prefactor_sources().at(static_cast<std::size_t>(i));
+    std::cout << "  [" << i << "] " << s.command << " (" << s.trajectories << " trajectories; " << s.description
+              << ")\n";
+  }
 }
 
 void print_detail(int d) {
@@ -70,6 +141,7 @@ void print_detail(int d) {
             << "    P = t^(-" << theory::to_string(c.density) << ") Pscaled(eta), eta = r t^(-"
             << theory::to_string(c.spread) << "), Pscaled ~ exp(-" << theory::to_string(c.gaussian_coefficient)
             << " eta^2)\n";
+  print_prefactors(d);
 }
 
 void print_table(int d_first, int d_last) {

@@ -17,6 +17,7 @@
 #include "hydro/tvns.hpp"
 #include "kinetic/hydro_backgrounds.hpp"
 #include "kinetic/kinetic_theory.hpp"
+#include "kinetic/prefactors.hpp"
 #include "kinetic/trajectory.hpp"
 #include "md/observers.hpp"
 #include "theory/prefactors.hpp"
@@ -438,6 +439,7 @@ void write_tracer_outputs(const TracerResult& result, const std::filesystem::pat
         << format_number(m.v2_error) << ',' << format_number(m.v_ratio) << ',' << format_number(m.v_ratio_error)
         << '\n';
   common::write_file_atomic(directory / "moments.csv", out.str());
+  common::write_file_atomic(directory / "prefactors.csv", prefactors_csv(result));
   common::write_file_atomic(directory / "summary.json", tracer_summary(result).dump(2) + "\n");
 }
 

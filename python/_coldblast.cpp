@@ -27,6 +27,7 @@
 #include "compare/verdict.hpp"
 #include "hydro/options.hpp"
 #include "md/ensemble.hpp"
+#include "theory/computed_prefactors.hpp"
 #include "theory/exponents.hpp"
 
 namespace py = pybind11;
@@ -121,6 +122,26 @@ py::object json_to_python(const common::Json& document) {
 }
 
 // ---- theory -----------------------------------------------------------------------------------
+
+/// theory::computed_prefactors(d) as a list of dicts, each with its source's command and trajectories.
+py::list theory_computed_prefactors(int d) {
+  common::require_integer_in_range("--d", d, theory::min_dimension, theory::max_dimension);
+  py::list out;
+  for (const theory::ComputedPrefactor& p : theory::computed_prefactors(d)) {
+    const theory::PrefactorSource& s = theory::prefactor_sources().at(static_cast<std::size_t>(p.source));
+    py::dict row;
+    row["observable"] = p.observable;
+    row["t"] = p.t;
+    row["R_over_lambda"] = p.R_over_lambda;
+    row["value"] = p.value;
+    row["error"] = p.error;
+    row["source"] = p.source;
+    row["command"] = s.command;
+    row["trajectories"] = s.trajectories;
+    out.append(row);
+  }
+  return out;
+}
 
 py::dict theory_exponents(int d) {
   common::require_integer_in_range("--d", d, theory::min_dimension, theory::max_dimension);
@@ -399,6 +420,7 @@ PYBIND11_MODULE(_coldblast, m) {
   });
 
   m.def("theory_exponents", &theory_exponents, py::arg("d"));
+  m.def("theory_computed_prefactors", &theory_computed_prefactors, py::arg("d"));
 
   py::class_<hydro::TvnsSolution>(m, "TvnsSolution")
       .def_property_readonly("d", [](const hydro::TvnsSolution& s) { return s.config().d; })

@@ -1,4 +1,5 @@
-"""The paper's scaling laws as exact fractions (``coldblast theory``; paper Table 2, Eqs. (4)-(12), Sec. IV)."""
+"""The paper's scaling laws as exact fractions (``coldblast theory``; paper Table 2, Eqs. (4)-(12), Sec. IV)
+and the impurity prefactors computed by ``coldblast tracer`` (theory/computed_prefactors.hpp)."""
 from fractions import Fraction
 
 from . import _coldblast
@@ -45,3 +46,18 @@ def exponents(d=2):
     result.in_R_over_lambda = {name: frac(value) for name, value in raw["in_R_over_lambda"].items()}
     result.convection_diffusion = {name: frac(value) for name, value in raw["convection_diffusion"].items()}
     return result
+
+
+def computed_prefactors(d=2):
+    """The impurity prefactors of dimension d computed by ``coldblast tracer`` (not from the paper).
+
+    Returns a list of dicts with ``observable`` (R_imp, V_imp, C_imp), ``t``, ``R_over_lambda``,
+    ``value``, ``error`` (standard error), ``source``, ``command`` and ``trajectories`` of the run:
+    X divided by the paper's estimate of X with its O(1) factor set to 1 (Eqs. (6), (8), (10)), the
+    numbers ``coldblast theory --d D`` prints. Empty when none are known for d.
+
+    Raises ValueError (the CLI's message) for d out of [1, 10000].
+    """
+    if isinstance(d, bool) or not isinstance(d, int):
+        raise ValueError(f"--d = {d!r} is not an integer")
+    return _coldblast.theory_computed_prefactors(d)

@@ -79,7 +79,8 @@ TEST_CASE("tracer: the run directory has md run's files and the tracer's summary
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   write_tracer_outputs(r, dir);
-  for (const char* name : {"observables.csv", "blocks.csv", "p_imp.csv", "summary.json", "moments.csv"})
+  for (const char* name :
+       {"observables.csv", "blocks.csv", "p_imp.csv", "summary.json", "moments.csv", "prefactors.csv"})
     CHECK(std::filesystem::exists(dir / name));
   const auto summary = coldblast::common::Json::parse(read(dir / "summary.json"));
   for (const char* key : {"collision_rate", "collision_rate_error", "chi", "temperature_final", "rejection_rate", "d"})

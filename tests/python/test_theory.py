@@ -37,3 +37,20 @@ def test_bad_dimension_is_the_cli_error(d):
     with pytest.raises(ValueError) as error:
         coldblast.theory.exponents(d)
     assert str(error.value) == cli_error("theory", "--d", d)
+
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_computed_prefactors_equal_cli(d):
+    """`coldblast theory` prints the table of theory/computed_prefactors.cpp, value for value."""
+    printed = cli_json("theory", "--d", d)["computed_prefactors"]
+    table = coldblast.theory.computed_prefactors(d)
+    assert len(table) > 0 and len(printed["entries"]) == len(table)
+    for row, entry in zip(table, printed["entries"]):
+        for key in ("observable", "t", "R_over_lambda", "value", "error", "source"):
+            assert entry[key] == row[key]
+        assert row["error"] > 0 and row["value"] > 0
+        source = printed["sources"][str(row["source"])]
+        assert source["command"] == row["command"] and source["trajectories"] == row["trajectories"]
+        assert source["command"].startswith("coldblast tracer ")
+    assert {row["observable"] for row in table} == {"R_imp", "V_imp", "C_imp"}
+    assert coldblast.theory.computed_prefactors(7) == []

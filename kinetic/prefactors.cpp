@@ -1,0 +1,165 @@
+#include "kinetic/prefactors.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "common/output.hpp"
+#include "common/validate.hpp"
+#include "md/observers.hpp"
+#include "theory/observables.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::kinetic {
+
+using common::format_number;
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+/// The paper's estimate of an observable with its O(1) factor set to 1 (theory::scaling_estimates).
+double estimate_of(const theory::ScalingEstimates& s, const std::string& name) {
+  if (name == "R_imp") return s.R_imp;  // Eq. (6) [R-imp]
+  if (name == "V_imp") return s.V_imp;  // Eq. (8) [V-imp-phi]
+  return s.C_imp;                       // Eq. (10) [C-imp]
+}
+
+/// What is jackknifed: per time k and observable j the observable X (Eq. (38)'s transform of the
+/// ensemble mean of its inner value).
+struct Inputs {
+  std::vector<int> earlier;                   ///< index of the time a window earlier, -1 if none
+  std::vector<std::vector<int>> entry;        ///< [k][j] record entry of observable j at time k
+  std::vector<theory::Transform> transform;   ///< [j]
+  std::vector<std::vector<double>> estimate;  ///< [k][j]
+  std::vector<double> R_over_lambda;          ///< [k]
+};
+
+/// Prefactors then exponents, [2 * (k * J + j) + {0, 1}], from the per-entry means.
+std::vector<double> quantities(const Inputs& in, const std::vector<double>& sum, double count) {
+  const std::size_t K = in.entry.size(), J = in.transform.size();
+  std::vector<double> X(K * J), out(2 * K * J, nan);
+  for (std::size_t k = 0; k < K; ++k)
+    for (std::size_t j = 0; j < J; ++j)
+      X[k * J + j] = theory::apply_transform(in.transform[j], sum[static_cast<std::size_t>(in.entry[k][j])] / count);
+  for (std::size_t k = 0; k < K; ++k)
+    for (std::size_t j = 0; j < J; ++j) {
+      const double x = X[k * J + j];
+      if (!(x > 0.0)) continue;
+      out[2 * (k * J + j)] = x / in.estimate[k][j];
+      const int e = in.earlier[k];
+      if (e < 0) continue;
+      const double x0 = X[static_cast<std::size_t>(e) * J + j];
+      if (x0 > 0.0)
+        out[2 * (k * J + j) + 1] =
+            std::log(x / x0) / std::log(in.R_over_lambda[k] / in.R_over_lambda[static_cast<std::size_t>(e)]);
+    }
+  return out;
+}
+
+Inputs make_inputs(const TracerResult& result) {
+  const md::ResolvedScene& scene = result.ensemble.scene;
+  const md::BlastConfig& c = scene.config;
+  const md::ObservableLayout layout(scene);
+  const theory::BlastParameters p{c.d, c.n, c.a, c.E, scene.A_d};
+  Inputs in;
+  for (const std::string& name : prefactor_observables())
+    in.transform.push_back(theory::observable_info(name).transform);
+  const auto& times = scene.times;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const theory::ScalingEstimates s = theory::scaling_estimates(p, times[k]);
+    in.R_over_lambda.push_back(s.R_over_lambda);
+    std::vector<int> entries;
+    std::vector<double> estimates;
+    for (const std::string& name : prefactor_observables()) {
+      entries.push_back(layout.scalar(name, static_cast<int>(k)));
+      estimates.push_back(estimate_of(s, name));
+    }
+    in.entry.push_back(entries);
+    in.estimate.push_back(estimates);
+    int earlier = -1;
+    for (std::size_t e = 0; e < k; ++e)
+      if (std::abs(times[e] * prefactor_window / times[k] - 1.0) < 1e-9) earlier = static_cast<int>(e);
+    in.earlier.push_back(earlier);
+  }
+  return in;
+}
+
+}  // namespace
+
+const std::vector<std::string>& prefactor_observables() {
+  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp"};
+  return names;
+}
+
+std::vector<PrefactorRow> prefactor_rows(const TracerResult& result) {
+  const Inputs in = make_inputs(result);
+  const auto& blocks = result.ensemble.blocks;
+  std::vector<double> total;
+  double N = 0.0;
+  for (const auto& [b, s] : blocks) {
+    if (total.empty()) total.assign(s.sum.size(), 0.0);
+    for (std::size_t e = 0; e < total.size(); ++e) total[e] += s.sum[e];
+    N += static_cast<double>(s.count);
+  }
+  if (total.empty() || N <= 0.0) return {};
+  const std::vector<double> full = quantities(in, total, N);
+  // Block jackknife: leave one block out.
+  const double B = static_cast<double>(blocks.size());
+  std::vector<double> mean(full.size(), 0.0), square(full.size(), 0.0);
+  for (const auto& [b, s] : blocks) {
+    std::vector<double> rest(total);
+    for (std::size_t e = 0; e < rest.size(); ++e) rest[e] -= s.sum[e];
+    const std::vector<double> leave = quantities(in, rest, N - static_cast<double>(s.count));
+    for (std::size_t q = 0; q < full.size(); ++q) {
+      mean[q] += leave[q] / B;
+      square[q] += leave[q] * leave[q] / B;
+    }
+  }
+  const std::size_t J = in.transform.size();
+  std::vector<PrefactorRow> rows;
+  for (std::size_t k = 0; k < in.entry.size(); ++k) {
+    PrefactorRow row;
+    row.t = result.ensemble.scene.times[k];
+    row.R_over_lambda = in.R_over_lambda[k];
+    for (std::size_t j = 0; j < J; ++j)
+      for (int q = 0; q < 2; ++q) {
+        const std::size_t i = 2 * (k * J + j) + static_cast<std::size_t>(q);
+        const double error = B > 1 ? std::sqrt(std::max(0.0, (B - 1) * (square[i] - mean[i] * mean[i]))) : nan;
+        (q == 0 ? row.prefactor : row.exponent).push_back(full[i]);
+        (q == 0 ? row.prefactor_error : row.exponent_error).push_back(std::isnan(full[i]) ? nan : error);
+      }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string prefactors_csv(const TracerResult& result) {
+  const md::ResolvedScene& scene = result.ensemble.scene;
+  std::ostringstream out;
+  out << common::provenance_header({{"scene", scene.config.name},
+                                    {"seed", std::to_string(scene.config.seed)},
+                                    {"background", result.background_description},
+                                    {"A_d", format_number(scene.A_d)}},
+                                   "m = 1 (host mass), k_B = 1, lengths and times in the scene's units")
+      << "# X_prefactor = X / (the paper's estimate of X with its O(1) factor set to 1: theory::scaling_estimates,\n"
+         "#   Eqs. (6), (8), (10)), R/lambda from Eq. (1) with A_d; X_exponent = d ln X / d ln(R/lambda) over\n"
+         "#   [t/"
+      << format_number(prefactor_window)
+      << ", t]; errors: block jackknife\n"
+         "t,R_over_lambda";
+  for (const std::string& name : prefactor_observables())
+    out << ',' << name << "_prefactor," << name << "_prefactor_stderr," << name << "_exponent," << name
+        << "_exponent_stderr";
+  out << '\n';
+  for (const PrefactorRow& row : prefactor_rows(result)) {
+    out << format_number(row.t) << ',' << format_number(row.R_over_lambda);
+    for (std::size_t j = 0; j < row.prefactor.size(); ++j)
+      out << ',' << format_number(row.prefactor[j]) << ',' << format_number(row.prefactor_error[j]) << ','
+          << format_number(row.exponent[j]) << ',' << format_number(row.exponent_error[j]);
+    out << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace coldblast::kinetic
