@@ -14,6 +14,7 @@
 #include "common/validate.hpp"
 #include "md/checkpoint.hpp"
 #include "md/engine.hpp"
+#include "md/extxyz.hpp"
 #include "md/initial_state.hpp"
 #include "md/observers.hpp"
 
@@ -83,13 +84,17 @@ RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLa
   std::stable_sort(stops.begin(), stops.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<Vec<D>> start;
   for (const std::int32_t id : observer.impurities()) start.push_back(engine.position(id));
+  std::string extxyz;  // every snapshot as one frame of snapshots.extxyz (md/extxyz.hpp)
   for (const auto& [t, k] : stops) {
     engine.run_until(t);
-    if (k >= 0)
+    if (k >= 0) {
       observer.measure(k, out.record);
-    else
+    } else {
       out.files.push_back({"snapshot_" + format_number(t) + ".csv", snapshot_csv(scene, engine)});
+      extxyz += extxyz_frame(scene, engine);
+    }
   }
+  if (!extxyz.empty()) out.files.push_back({"snapshots.extxyz", extxyz});
   engine.run_until(c.t_max);
   out.collisions = engine.collision_count();
   out.energy_error = std::abs(engine.kinetic_energy() - c.E) / c.E;

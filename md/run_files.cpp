@@ -297,7 +297,7 @@ std::map<long long, BlockSums> read_block_sums(const fs::path& dir, const Observ
 }
 
 bool is_realization0_file(const std::string& name) {
-  return name == "trajectories.csv" ||
+  return name == "trajectories.csv" || name == "snapshots.extxyz" ||
          (name.rfind("snapshot_", 0) == 0 && name.size() > 4 && name.substr(name.size() - 4) == ".csv");
 }
 
