@@ -92,7 +92,9 @@ std::optional<DistributionFit> fit_impurity_distribution(const RunData& run) {
   // from a few hundred impurities are too noisy to weight with. Golden-section search on ln b
   // after a coarse scan; the error is the usual nonlinear least-squares one,
   // σ_b² = [RSS/(bins - 1)] / Σ_i (∂m_i/∂b)².
-  auto cost = [&](double b) { return residual_sum(bins, run.d, b * scale); };
+  // A structured binding cannot be captured in C++17 (clang rejects it): capture a reference.
+  const std::vector<Bin>& histogram = bins;
+  auto cost = [&](double b) { return residual_sum(histogram, run.d, b * scale); };
   const double scan_lo = std::log(1e-2), scan_hi = std::log(1e2);
   const int scan = 800;
   double best = scan_lo, best_cost = INFINITY;
