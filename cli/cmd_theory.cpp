@@ -169,24 +169,6 @@ void print_table(int d_first, int d_last) {
   }
 }
 
-std::pair<int, int> parse_range(const std::string& text) {
-  const auto dots = text.find("..");
-  int first = 0, last = 0;
-  try {
-    if (dots == std::string::npos) throw std::invalid_argument("");
-    std::size_t used1 = 0, used2 = 0;
-    first = std::stoi(text.substr(0, dots), &used1);
-    last = std::stoi(text.substr(dots + 2), &used2);
-    if (used1 != dots || used2 != text.size() - dots - 2) throw std::invalid_argument("");
-  } catch (const std::exception&) {
-    throw std::invalid_argument("--d-range = " + text + " is not of the form FIRST..LAST (e.g. 2..6)");
-  }
-  common::require_integer_in_range("--d-range first", first, theory::min_dimension, theory::max_dimension);
-  common::require_integer_in_range("--d-range last", last, first, std::min(first + 999, theory::max_dimension),
-                                   "(at most 1000 dimensions, last >= first)");
-  return {first, last};
-}
-
 void run(const TheoryOptions& options) {
   if (options.d_range.empty()) {
     common::require_integer_in_range("--d", options.d, theory::min_dimension, theory::max_dimension);
@@ -196,7 +178,7 @@ void run(const TheoryOptions& options) {
       print_detail(options.d);
     return;
   }
-  const auto [first, last] = parse_range(options.d_range);
+  const auto [first, last] = theory::parse_dimension_range(options.d_range);
   if (options.format == Format::json) {
     common::Json all = common::Json::array();
     for (int d = first; d <= last; ++d) all.push_back(dimension_json(d));

@@ -54,29 +54,6 @@ std::string number(double value, int digits = 17) {
   return buffer;
 }
 
-/// "0.1,0.5,1" -> {0.1, 0.5, 1}, each checked to lie in [0, 1].
-std::vector<double> parse_at(const std::string& text) {
-  std::vector<double> values;
-  std::vector<std::string> items = common::split_fields(text);
-  if (!items.empty() && items.back().empty()) items.pop_back();  // "0.1,0.5," as getline read it
-  for (const std::string& item : items) {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-      value = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size())
-      throw std::invalid_argument("--at = " + text + ": '" + item +
-                                  "' is not a number (expected r/R values in [0, 1], e.g. 0.1,0.5,1)");
-    common::require_in_range("--at r/R", value, 0.0, 1.0, common::Bound::closed, common::Bound::closed);
-    values.push_back(value);
-  }
-  if (values.empty()) throw std::invalid_argument("--at is empty (expected r/R values in [0, 1], e.g. 0.1,0.5,1)");
-  return values;
-}
-
 /// Maps the flags to a TvnsConfig (validation and messages in hydro/options.hpp).
 hydro::TvnsConfig make_config(const TvnsOptions& options) {
   return hydro::tvns_config({options.d, options.gamma, options.eos, options.phi, options.tolerance});
@@ -123,7 +100,7 @@ void run(const TvnsOptions& options) {
   const hydro::TvnsConfig config = make_config(options);
   std::vector<double> xs;
   if (!options.at.empty()) {
-    xs = parse_at(options.at);
+    xs = hydro::parse_profile_points(options.at);
   } else {
     common::require_integer_in_range("--points", options.points, 1, 10000000);
     for (int i = 1; i <= options.points; ++i) xs.push_back(static_cast<double>(i) / options.points);

@@ -1,10 +1,31 @@
 #include "hydro/options.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 
+#include "common/input.hpp"
 #include "common/validate.hpp"
 
 namespace coldblast::hydro {
+
+std::vector<double> parse_profile_points(const std::string& text) {
+  const std::string expected = " (expected r/R values in [0, 1], e.g. 0.1,0.5,1)";
+  std::vector<std::string> items = common::split_fields(text);
+  if (!items.empty() && items.back().empty()) items.pop_back();  // "0.1,0.5,"
+  std::vector<double> values;
+  for (const std::string& item : items) {
+    // strtod, not stod: an underflow such as 1e-400 reads as the nearest double (0 or subnormal)
+    // instead of throwing; overflow, NaN and infinity fail the range check below.
+    char* end = nullptr;
+    const double value = item.empty() ? 0.0 : std::strtod(item.c_str(), &end);
+    if (item.empty() || end != item.c_str() + item.size())
+      throw std::invalid_argument("--at = " + text + ": '" + item + "' is not a number" + expected);
+    common::require_in_range("--at r/R", value, 0.0, 1.0, common::Bound::closed, common::Bound::closed);
+    values.push_back(value);
+  }
+  if (values.empty()) throw std::invalid_argument("--at is empty" + expected);
+  return values;
+}
 
 TvnsConfig tvns_config(const TvnsOptions& options) {
   common::require_integer_in_range("--d", options.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");

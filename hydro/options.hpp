@@ -5,6 +5,7 @@
 // bad input with the same message.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "hydro/navier_stokes.hpp"
 #include "hydro/tvns.hpp"
@@ -22,6 +23,11 @@ struct TvnsOptions {
 /// The validated TvnsConfig; throws std::invalid_argument naming the flag (--d, --gamma, --eos,
 /// --phi, --tolerance).
 TvnsConfig tvns_config(const TvnsOptions& options);
+
+/// `coldblast tvns --at`: "0.1,0.5,1" -> {0.1, 0.5, 1}, each r/R in [0, 1] (a trailing comma is
+/// allowed); throws std::invalid_argument naming --at for an empty list, a field that is not a
+/// whole number, or a value outside [0, 1].
+std::vector<double> parse_profile_points(const std::string& text);
 
 /// `coldblast hydro core|euler` options.
 struct HydroOptions {

@@ -1,5 +1,6 @@
 #include "theory/exponents.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "common/validate.hpp"
@@ -11,6 +12,24 @@ void check_dimension(int d) {
   common::require_integer_in_range("d", d, min_dimension, max_dimension);
 }
 }  // namespace
+
+std::pair<int, int> parse_dimension_range(const std::string& text) {
+  const auto dots = text.find("..");
+  long long first = 0, last = 0;
+  try {
+    if (dots == std::string::npos) throw std::invalid_argument("");
+    std::size_t used1 = 0, used2 = 0;
+    first = std::stoll(text.substr(0, dots), &used1);
+    last = std::stoll(text.substr(dots + 2), &used2);
+    if (used1 != dots || used2 != text.size() - dots - 2) throw std::invalid_argument("");
+  } catch (const std::exception&) {  // no "..", a field that is not a whole integer, or beyond long long
+    throw std::invalid_argument("--d-range = " + text + " is not of the form FIRST..LAST (e.g. 2..6)");
+  }
+  common::require_integer_in_range("--d-range first", first, min_dimension, max_dimension);
+  common::require_integer_in_range("--d-range last", last, first, std::min<long long>(first + 999, max_dimension),
+                                   "(at most 1000 dimensions, last >= first)");
+  return {static_cast<int>(first), static_cast<int>(last)};
+}
 
 Rational h_d(int d) {
   check_dimension(d);

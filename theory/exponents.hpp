@@ -15,6 +15,10 @@ using Rational = boost::rational<long long>;
 inline constexpr int min_dimension = 1;
 inline constexpr int max_dimension = 10000;
 
+/// `coldblast theory --d-range FIRST..LAST`: min_dimension <= FIRST <= LAST <= max_dimension, at
+/// most 1000 dimensions; throws std::invalid_argument naming --d-range otherwise.
+std::pair<int, int> parse_dimension_range(const std::string& text);
+
 /// Eq. (4) [size-dim]: h_d = (4 + 3d^2)/(8 + 3d^2).
 Rational h_d(int d);
 /// Eq. (7) [V-imp]: omega_d = d/2 - d^2/(8 + 3d^2).
