@@ -6,13 +6,14 @@
 
 #include "common/input.hpp"
 #include "common/output.hpp"
+#include "tests/temp_path.hpp"
 
 namespace fs = std::filesystem;
 using namespace coldblast::common;
 using Catch::Matchers::Contains;
 
 TEST_CASE("read_text returns the bytes written and names the path it cannot read", "[fast]") {
-  const fs::path dir = fs::temp_directory_path() / "coldblast_test_input";
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_input");
   fs::remove_all(dir);
   const std::string content = std::string("a,b\r\n1,2\n") + '\0' + "tail";
   write_file_atomic(dir / "x.csv", content);

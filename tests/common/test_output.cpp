@@ -11,12 +11,13 @@
 #include <thread>
 
 #include "common/output.hpp"
+#include "tests/temp_path.hpp"
 
 namespace fs = std::filesystem;
 using namespace coldblast::common;
 
 TEST_CASE("write_file_atomic creates folders, replaces content and leaves no temporary", "[fast]") {
-  const fs::path dir = fs::temp_directory_path() / "coldblast_test_output";
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_output");
   fs::remove_all(dir);
   const fs::path file = dir / "sub" / "table.csv";
   write_file_atomic(file, "first\n");
@@ -43,7 +44,7 @@ std::string slurp(const fs::path& file) {
   return content.str();
 }
 fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
+  const fs::path dir = coldblast::test::unique_temp_path(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

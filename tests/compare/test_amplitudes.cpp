@@ -1,8 +1,6 @@
 // Amplitude verdicts of `compare --against hydro` on synthetic runs with known amplitudes, the
 // shared core-size rule, the NS model chosen from the run's φ (and inconsistent choices rejected
 // naming the option), the flow speed judged by u_flow, and a figure API that draws given curves.
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -14,6 +12,7 @@
 #include "compare/figures.hpp"
 #include "compare/verdict.hpp"
 #include "synthetic.hpp"
+#include "tests/temp_path.hpp"
 
 using namespace coldblast::compare;
 using coldblast::compare::testing::synthetic_series;
@@ -33,7 +32,7 @@ fs::path amplitude_run(double n0, double T0, double R, double sigma) {
       for (double& x : row) x *= value / 3.0;
     series[name] = s;
   }
-  const fs::path dir = fs::temp_directory_path() / ("coldblast_amplitudes_" + std::to_string(::getpid()));
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_amplitudes");
   coldblast::compare::testing::write_synthetic_run(dir, 2, series);
   coldblast::common::write_file_atomic(
       dir / "summary.json",
@@ -171,7 +170,7 @@ TEST_CASE("the flow speed is judged by u_flow against theory and hydro, u_imp on
 
 TEST_CASE("the profile figure draws the continuum curves it is given and solves nothing", "[fast]") {
   const RunData run = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "campaign3-3d");
-  const fs::path folder = fs::temp_directory_path() / ("coldblast_test_curves_" + std::to_string(::getpid()));
+  const fs::path folder = coldblast::test::unique_temp_path("coldblast_test_curves");
   fs::remove_all(folder);
   fs::create_directories(folder);
   // Curves no solver would produce: they must appear in the figure data exactly as given.

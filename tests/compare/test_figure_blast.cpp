@@ -2,14 +2,13 @@
 // particles fall in the frame and (3D) the slab, the impurity paths cut at each snapshot time and
 // ending at the impurity's snapshot position, R_imp interpolated in (ln t, ln R_imp) and the shock
 // radius of Eq. (1).
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <string>
 
 #include "compare/figure_blast.hpp"
+#include "tests/temp_path.hpp"
 #include "theory/prefactors.hpp"
 
 using namespace coldblast::compare;
@@ -18,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+  const fs::path dir = coldblast::test::unique_temp_path(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

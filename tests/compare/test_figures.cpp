@@ -1,8 +1,6 @@
 // The figure data compare/ writes from recorded runs: MD radial profiles stop at the edge of the
 // simulated ball (data/campaign3-3d: region radius 148.7 = 1.31 R at t_max), so empty bins beyond
 // it are not drawn as vacuum.
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -11,6 +9,7 @@
 
 #include "compare/figures.hpp"
 #include "compare/run_data.hpp"
+#include "tests/temp_path.hpp"
 #include "theory/prefactors.hpp"
 
 using namespace coldblast::compare;
@@ -19,7 +18,7 @@ namespace fs = std::filesystem;
 TEST_CASE("MD profile figure data stop at the simulated region's edge", "[fast]") {
   const RunData run = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "campaign3-3d");
   const double region = run.summary["region_radius"].get<double>();
-  const fs::path folder = fs::temp_directory_path() / "coldblast_test_figures";
+  const fs::path folder = coldblast::test::unique_temp_path("coldblast_test_figures");
   fs::remove_all(folder);
   fs::create_directories(folder);
   const ExtraFigures figures = write_extra_figures(run, std::nullopt, {}, folder);
@@ -54,7 +53,7 @@ namespace {
 // 0.02 on [0, 8), p = density(r), per-bin error 1e-3 sqrt(p) (counting statistics: 0 where empty).
 template <class Density>
 RunData histogram_run(const std::string& name, Density density) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+  const fs::path dir = coldblast::test::unique_temp_path(name);
   fs::create_directories(dir);
   std::ofstream csv(dir / "p_imp.csv");
   csv.precision(17);

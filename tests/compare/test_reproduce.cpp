@@ -5,13 +5,14 @@
 #include <filesystem>
 
 #include "compare/reproduce.hpp"
+#include "tests/temp_path.hpp"
 
 using namespace coldblast::compare;
 namespace fs = std::filesystem;
 
 TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   ReproduceConfig config;
-  config.out = fs::temp_directory_path() / "coldblast_test_reproduce";
+  config.out = coldblast::test::unique_temp_path("coldblast_test_reproduce");
   fs::remove_all(config.out);
   config.realizations = 4;
   config.hydro_until = 50;

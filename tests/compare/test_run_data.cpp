@@ -4,6 +4,7 @@
 
 #include "common/output.hpp"
 #include "compare/run_data.hpp"
+#include "tests/temp_path.hpp"
 
 using namespace coldblast::compare;
 namespace fs = std::filesystem;
@@ -46,7 +47,7 @@ TEST_CASE("malformed blocks.csv names the file, the line and the problem", "[fas
 
 TEST_CASE("read_run rejects a missing or incomplete directory", "[fast]") {
   CHECK_THROWS_WITH(read_run("/nonexistent/run"), Catch::Contains("RUN_DIR"));
-  const fs::path dir = fs::temp_directory_path() / "coldblast_test_run";
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_run");
   fs::remove_all(dir);
   fs::create_directories(dir);
   CHECK_THROWS_WITH(read_run(dir), Catch::Contains("summary.json"));

@@ -1,7 +1,5 @@
 // Verdicts on synthetic runs whose exponents are known: the exact rationals pass against theory,
 // a wrong exponent fails, the paper reference combines both errors, and bad configs are rejected.
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -12,6 +10,7 @@
 #include "compare/report.hpp"
 #include "compare/verdict.hpp"
 #include "synthetic.hpp"
+#include "tests/temp_path.hpp"
 #include "theory/exponents.hpp"
 
 using namespace coldblast::compare;
@@ -45,8 +44,7 @@ fs::path make_run(int d, const std::string& shifted = "", double shift = 0.0, do
     series[name] = s;
   }
   // one folder per test process: ctest -j runs the test cases that share a (d, shifted) run at once
-  const fs::path dir = fs::temp_directory_path() /
-                       ("coldblast_verdict_" + std::to_string(d) + shifted + "_" + std::to_string(::getpid()));
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_verdict_" + std::to_string(d) + shifted);
   write_synthetic_run(dir, d, series);
   run_folders.paths.push_back(dir);
   return dir;
@@ -195,7 +193,7 @@ TEST_CASE("an observable whose mean reaches zero has an undefined exponent, name
   CHECK_FALSE(result.pass);
   for (std::size_t k = 0; k + 1 < result.observables.size(); ++k) CHECK(result.observables[k].pass);
 
-  const fs::path out = fs::temp_directory_path() / "coldblast_verdict_undefined_report";
+  const fs::path out = coldblast::test::unique_temp_path("coldblast_verdict_undefined_report");
   write_report(result, {out, false});
   std::ifstream in(out / "report.md");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

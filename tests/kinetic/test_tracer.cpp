@@ -8,6 +8,7 @@
 
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/tracer.hpp"
+#include "tests/temp_path.hpp"
 
 using namespace coldblast::kinetic;
 
@@ -75,7 +76,7 @@ TEST_CASE("tracer: the run directory has md run's files and the tracer's summary
   TracerConfig c = small_config("tvns");
   c.trajectories = 64;
   const TracerResult r = run_tracer(c);
-  const auto dir = std::filesystem::temp_directory_path() / "coldblast-test-tracer-out";
+  const auto dir = coldblast::test::unique_temp_path("coldblast-test-tracer-out");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   write_tracer_outputs(r, dir);

@@ -14,6 +14,7 @@
 #include "md/ensemble.hpp"
 #include "md/observers.hpp"
 #include "md/scenes.hpp"
+#include "tests/temp_path.hpp"
 
 using namespace coldblast::md;
 namespace fs = std::filesystem;
@@ -43,7 +44,7 @@ BlockSums random_sums(std::size_t entries, std::uint64_t seed) {
 }
 
 fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("coldblast_test_checkpoint_" + name);
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_checkpoint_" + name);
   fs::remove_all(dir);
   return dir;
 }

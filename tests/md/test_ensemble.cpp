@@ -10,6 +10,7 @@
 #include "md/ensemble.hpp"
 #include "md/initial_state.hpp"
 #include "md/scenes.hpp"
+#include "tests/temp_path.hpp"
 
 using namespace coldblast::md;
 namespace fs = std::filesystem;
@@ -124,7 +125,7 @@ TEST_CASE("1 thread and 2 threads give bit-identical block sums", "[slow]") {
 
 TEST_CASE("shards merged equal the unsharded run", "[slow]") {
   const BlastConfig scene = small_scene();
-  const fs::path root = fs::temp_directory_path() / "coldblast_test_shards";
+  const fs::path root = coldblast::test::unique_temp_path("coldblast_test_shards");
   fs::remove_all(root);
   RunOptions all, first, second;
   first.shard_count = second.shard_count = 2;

@@ -2,8 +2,6 @@
 // the comment line's Lattice / Origin / Time / Properties, every particle once, the impurity count,
 // z = 0 with a third cell vector in 2D, and the kinetic energy from the velocity and mass columns
 // equal to E (elastic collisions conserve it exactly up to rounding).
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -16,6 +14,7 @@
 #include "md/ensemble.hpp"
 #include "md/run_files.hpp"
 #include "md/scenes.hpp"
+#include "tests/temp_path.hpp"
 
 using namespace coldblast::md;
 namespace fs = std::filesystem;
@@ -74,8 +73,7 @@ TEST_CASE("snapshots.extxyz parses back: frames, particles, impurities, cell, en
        "box_margin=6", "A_d=0.3", "snapshot_times=[5.0, 10.0, 20.0]", "impurities.count=3",
        "impurities.mass=" + std::to_string(mass), R"(observables=["R","snapshots"])"});
   const ResolvedScene resolved = resolve_scene(scene);
-  const fs::path dir =
-      fs::temp_directory_path() / ("coldblast_test_extxyz_" + std::to_string(::getpid()) + "_" + std::to_string(d));
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_extxyz_" + std::to_string(d));
   fs::remove_all(dir);
   write_blast_outputs(run_blast(scene, RunOptions{}), dir);
 

@@ -12,6 +12,7 @@
 #include "md/ensemble.hpp"
 #include "md/observers.hpp"
 #include "md/scenes.hpp"
+#include "tests/temp_path.hpp"
 #include "theory/prefactors.hpp"
 
 using namespace coldblast::md;
@@ -45,7 +46,7 @@ TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[s
   const BlastConfig scene = parse_scene(
       default_scene_toml(), {"t_max=400", "realizations=12", "seed=4", "A_d=0.2238", "snapshot_times=[100.0, 400.0]",
                              R"(observables=["R_imp","R","profiles","p_imp","snapshots","trajectories"])"});
-  const fs::path dir = fs::temp_directory_path() / "coldblast_test_observers";
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_observers");
   fs::remove_all(dir);
   RunOptions options;
   options.threads = 2;
