@@ -50,7 +50,10 @@ ClosedForm::ClosedForm(int d, double gamma) : d_(d), gamma_(gamma) {
   c_ = j2 * g / 2.0;
   e_ = (2.0 + j * (g - 1.0)) / 2.0;
   y_ = j2 / 2.0;
-  k3_ = j2 * (g + 1.0) / (g * (2.0 - j) + 3.0 * j - 2.0);  // = 1/(1 - e V2), exact form
+  // k3 = 1/(1 - e V2) in exact form. Its denominator g (2 - j) + 3j - 2 vanishes at d = 3, gamma = 7;
+  // written as (3j - 2) - g (j - 2) it is 7 - g there, exact in floating point (Sterbenz), so that
+  // k3 keeps full relative precision at gamma = 7 - 1e-9 (the other order lost 7 digits).
+  k3_ = j2 * (g + 1.0) / ((3.0 * j - 2.0) - g * (j - 2.0));
   // Eqs. 42-47: the exponents; alpha2 = -beta.
   alpha0_ = 2.0 / j2;
   beta_ = (g - 1.0) / (2.0 * (g - 1.0) + j);
@@ -69,6 +72,20 @@ ClosedForm::ClosedForm(int d, double gamma) : d_(d), gamma_(gamma) {
   if (vacuum_) cavity_radius_ = std::exp(logs({0.0, 1.0}).ln_x);
 }
 
+double ClosedForm::shock_ratio(double dV, double x4) const {  // x4 = 1 - b y dV
+  const double j = d_, epsilon = 2.0 - gamma_;
+  if (std::abs(epsilon) < 0.5) {  // near gamma = 2: 1 + eps A stays near 1; log1p_over is exact at eps = 0
+    const double V = V2_ + dV;
+    return 2.0 * (log1p_over(epsilon, j * b_ * V / (2.0 * x4)) - log1p_over(epsilon, j * b_ * V2_ / 2.0));
+  }
+  // Elsewhere 1 + eps A can approach 0 (at d = 3, gamma -> 7: 1 + eps A2 = b/k3 -> 0), where
+  // log1p(eps A) - log1p(eps A2) cancels. Exactly: x4 (1 + eps A) = N2 + dV b (eps j/2 - y) with
+  // N2 = 1 + eps A2 = b/k3, so L(A) - L(A2) = [log1p(dV b (eps j/2 - y)/N2) - ln x4]/eps, every term
+  // to full relative precision.
+  const double N2 = b_ / k3_;
+  return 2.0 * (std::log1p(dV * b_ * (epsilon * j / 2.0 - y_) / N2) - std::log1p(-b_ * y_ * dV)) / epsilon;
+}
+
 double ClosedForm::velocity_offset(Parameter t) const {
   if (vacuum_) return -span_ * t.q;
   return span_ * std::expm1(m_ * t.ln_p());
@@ -84,9 +101,8 @@ ClosedForm::Logs ClosedForm::logs(Parameter t) const {
     const double x1 = 1.0 + a_ * dV, x3 = 1.0 - k3_ * e_ * dV, x4 = 1.0 - b_ * y_ * dV;
     const double ln_x1 = std::log(x1), ln_x3 = std::log(x3);
     // x3^alpha4 x4^alpha5 = x3^(alpha4+alpha5) (x4/x3)^alpha5, and alpha5 ln(x4/x3) =
-    // 2 [L(A) - L(A2)] with L = log1p(eps A)/eps, eps = 2 - gamma, A = j V/(2(1 - y V)).
-    const double epsilon = 2.0 - gamma_, V = V2_ + dV;
-    const double ratio = 2.0 * (log1p_over(epsilon, j * b_ * V / (2.0 * x4)) - log1p_over(epsilon, j * b_ * V2_ / 2.0));
+    // 2 [L(A) - L(A2)] with L = log1p(eps A)/eps, eps = 2 - gamma, A = j b V/(2 x4).
+    const double ratio = shock_ratio(dV, x4);
     out.ln_x = -alpha0_ * ln_x1 + beta_ * ln_x2 - alpha1_ * ln_x3;
     out.ln_g = alpha3_ * ln_x2 + sum45_ * ln_x3 + ratio;
     out.ln_h = j * alpha0_ * ln_x1 + std::log(x4) - 2.0 * alpha1_ * ln_x3 + sum45_ * ln_x3 + ratio;

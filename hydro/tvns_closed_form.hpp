@@ -59,6 +59,8 @@ class ClosedForm {
   };
   Logs logs(Parameter t) const;
   double velocity_offset(Parameter t) const;
+  /// alpha5 ln(x4/x3) of the standard case, without cancellation near gamma = 7 (d = 3).
+  double shock_ratio(double dV, double x4) const;
   double energy_integrand(Parameter t, bool kinetic) const;
   Parameter parameter_at(double r_over_R) const;
   std::vector<double> break_points(bool shock_side) const;

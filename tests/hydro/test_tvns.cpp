@@ -248,6 +248,12 @@ TEST_CASE("A_d(gamma) is continuous across gamma = 2 and gamma = 7", "[fast]") {
   CHECK(below.method_agreement() < 1e-10);
   CHECK(above.method_agreement() < 1e-10);
   CHECK(above.cavity_radius() < 0.01);  // the cavity closes as gamma -> 7+
+  // Within 1e-9 of gamma = 7 both sides lie on the tangent: A(7 ± h) = A(7) ± A' h to O(h^2)
+  // (the standard side failed here with a QAGP round-off error, then was 3e-7 off).
+  const TvnsSolution below9 = ideal(3, 7.0 - 1e-9), above9 = ideal(3, 7.0 + 1e-9);
+  CHECK_THAT(below9.A() - A7, WithinAbs(-slope * 1e-9, 1e-3 * std::abs(slope) * 1e-9 + below9.A_error()));
+  CHECK_THAT(above9.A() - A7, WithinAbs(slope * 1e-9, 1e-3 * std::abs(slope) * 1e-9 + above9.A_error()));
+  CHECK(below9.method_agreement() < 1e-12);
 }
 
 TEST_CASE("near-centre power laws: rho ∝ x^(d/(gamma-1)), T ∝ x^(-d/(gamma-1)) (Eqs. 18a,b)", "[fast]") {

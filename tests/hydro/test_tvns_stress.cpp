@@ -11,10 +11,13 @@ using namespace coldblast::hydro;
 using Catch::Matchers::WithinRel;
 
 TEST_CASE("stress: d = 1..3, gamma in [1.001, 1000] with special values", "[slow]") {
-  const std::vector<double> gammas = {min_gamma,  1.01, 1.05,       1.1,    1.2,   1.4,      5.0 / 3.0, 1.999,
-                                      2.0 - 1e-6, 2.0,  2.0 + 1e-6, 2.001,  2.5,   3.0,      4.0,       5.0,
-                                      6.0,        6.9,  6.999,      6.9999, 7.0,   7.0001,   7.001,     7.1,
-                                      8.0,        10.0, 15.0,       20.0,   100.0, max_gamma};
+  // 7 - 1e-9 and 7 - 1e-12 failed with a GSL round-off error before the closed form's shock ratio
+  // was rewritten without cancellation (docs/stress.md).
+  const std::vector<double> gammas = {min_gamma, 1.01,       1.05,        1.1,  1.2,        1.4,        5.0 / 3.0,
+                                      1.999,     2.0 - 1e-6, 2.0 - 1e-9,  2.0,  2.0 + 1e-9, 2.0 + 1e-6, 2.001,
+                                      2.5,       3.0,        4.0,         5.0,  6.0,        6.9,        6.999,
+                                      6.9999,    7.0 - 1e-9, 7.0 - 1e-12, 7.0,  7.0 + 1e-9, 7.0001,     7.001,
+                                      7.1,       8.0,        10.0,        15.0, 20.0,       100.0,      max_gamma};
   const std::vector<double> xs = {1.0, 0.999, 0.99, 0.9, 0.7, 0.5, 0.3, 0.1, 0.01, 1e-3, 1e-6, 0.0};
   for (int d = 1; d <= 3; ++d) {
     for (const double gamma : gammas) {
