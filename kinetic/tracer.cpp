@@ -82,6 +82,7 @@ md::Vec<D> initial_velocity(const TracerConfig& c, const Background& background,
       for (int i = 0; i < D; ++i) x[i] = rng.normal();
       mean += x;
     }
+    if (k == 1) mean.setZero();  // one impurity: energy E in a random direction (md/initial_state.cpp)
     mean /= static_cast<double>(k);
     double energy = 0.0;
     for (auto& x : kicks) {

@@ -153,9 +153,9 @@ template <int D>
 void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
                      double region_radius) {
   const std::size_t n = state.size();
-  if (impurity_count < 2 || impurity_count > n)
-    throw std::invalid_argument("impurities = " + std::to_string(impurity_count) + " is outside [2, " +
-                                std::to_string(n) + "] (zero total momentum needs two)");
+  if (impurity_count < 1 || impurity_count > n)
+    throw std::invalid_argument("impurities = " + std::to_string(impurity_count) + " is outside [1, " +
+                                std::to_string(n) + "]");
   std::vector<std::int32_t> by_distance(n);
   std::iota(by_distance.begin(), by_distance.end(), 0);
   const auto nearer = [&](std::int32_t a, std::int32_t b) {
@@ -216,14 +216,16 @@ void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t i
     }
   }
 
-  // Random momenta, then exactly zero momentum and exactly energy E.
+  // Random momenta, then exactly zero momentum and exactly energy E. A single impurity cannot have
+  // zero momentum: it gets energy E in a uniformly random direction (an isotropic Gaussian's
+  // direction), and the blast then carries momentum sqrt(2 m E), which collisions conserve.
   const double m = state.impurity.mass;
   Vec<D> mean = Vec<D>::Zero();
   for (const std::int32_t id : order) {
     for (int k = 0; k < D; ++k) state.velocity[id][k] = standard_normal(rng);
     mean += state.velocity[id];
   }
-  mean /= static_cast<double>(impurity_count);
+  mean = impurity_count > 1 ? Vec<D>(mean / static_cast<double>(impurity_count)) : Vec<D>(Vec<D>::Zero());
   double energy = 0.0;
   for (const std::int32_t id : order) {
     state.velocity[id] -= mean;

@@ -218,8 +218,8 @@ void BlastConfig::validate() const {
                    " for d = " + std::to_string(d) + " (random sequential addition jams; lower n or a)");
   require_in_range("impurities.mass", impurities.mass, 0.0, inf);
   require_in_range("impurities.radius", impurities.radius, 0.0, inf, Bound::closed, Bound::open, " (0 = a)");
-  require_integer_in_range("impurities.count", impurities.count, 2, std::numeric_limits<int>::max(),
-                           " (zero total momentum needs at least two)");
+  require_integer_in_range("impurities.count", impurities.count, 1, std::numeric_limits<int>::max(),
+                           " (one impurity starts with momentum sqrt(2 m E); two or more with zero momentum)");
   require_in_range("t_max", t_max, 0.0, inf);
   require_in_range("t_min", t_min, 0.0, t_max, Bound::open, Bound::closed, " (t_min <= t_max)");
   require_integer_in_range("realizations", realizations, 1, 1000000000);
@@ -283,14 +283,26 @@ ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& am
   s.shock_radius_at_t_max = theory::shock_radius(p, c.t_max);  // Eq. (1) [R-shock]
   const double contact = 2.0 * std::max(c.a, s.impurity_radius);
   // The guard sits 2σ inside the outermost particles; the shock must stay inside box_margin × R.
-  s.region_radius = c.box_margin * s.shock_radius_at_t_max + 2.0 * contact + 2.0 * std::max(contact, c.cell_width);
+  // A small blast (small E or t_max, or a dilute gas) can end before Eq. (1) holds, with box_margin × R
+  // smaller than what the run needs from t = 0 on: the impurities (the `count` particles nearest the
+  // origin, within r_count) and the balls of 100 particles the observers measure around each of them
+  // and around the origin (radius r_100, md/observers.cpp). The region is never smaller than
+  // r_count + 2 r_100 (radii at the mean density; the factor 2 covers the fluctuation of the 100th
+  // neighbour's distance and the guard band), so such scenes run instead of stopping at t = 0.
+  const double per_volume = c.n * theory::unit_ball_volume(c.d);
+  // (count capped at 100: the floor is for small blasts, not a way to make room for more impurities
+  // than the region holds, which stays an error below)
+  const double r_count = std::pow(std::min(c.impurities.count, 100) / per_volume, 1.0 / c.d);
+  const double r_100 = std::pow(100.0 / per_volume, 1.0 / c.d);
+  s.region_radius = std::max(c.box_margin * s.shock_radius_at_t_max, r_count + 2.0 * r_100) + 2.0 * contact +
+                    2.0 * std::max(contact, c.cell_width);
   s.guard_radius = s.region_radius - 2.0 * contact;
   const double count = c.n * theory::unit_ball_volume(c.d) * std::pow(s.region_radius, c.d);
   if (count > 1.5e9)
     throw std::invalid_argument("the blast region holds " + format_number(count) +
                                 " particles (more than 1.5e9): lower t_max or E");
   s.particle_count = static_cast<std::size_t>(std::llround(count));
-  require_integer_in_range("impurities.count", c.impurities.count, 2, static_cast<long long>(s.particle_count),
+  require_integer_in_range("impurities.count", c.impurities.count, 1, static_cast<long long>(s.particle_count),
                            " (at most the " + std::to_string(s.particle_count) + " particles of the region)");
   for (int k = 0;; ++k) {
     const double t = c.t_min * std::pow(2.0, k / 4.0);

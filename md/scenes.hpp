@@ -14,7 +14,7 @@ namespace coldblast::md {
 
 /// Impurities: the `count` particles nearest the origin, with their own mass and radius.
 struct ImpurityConfig {
-  int count = 4;        ///< number of impurities, in [2, N]
+  int count = 4;        ///< number of impurities, in [1, N] (one: nonzero momentum)
   double mass = 1.0;    ///< impurity mass (host mass = 1), > 0
   double radius = 0.0;  ///< impurity radius (length); 0 means the host radius a
 };

@@ -149,3 +149,43 @@ TEST_CASE("shard specs are validated", "[fast]") {
   CHECK_THROWS_WITH(parse_shard("3/2"), Catch::Contains("--shard"));
   CHECK_THROWS_WITH(parse_shard("x"), Catch::Contains("--shard"));
 }
+
+TEST_CASE("a single impurity gets energy E in a random direction and its blast runs", "[fast]") {
+  // One impurity cannot have zero momentum: the kick gives it |p| = sqrt(2 m E) (all the energy),
+  // in a direction that varies with the seed; the run conserves energy like any other.
+  const double E = 3.5, mass = 2.0;
+  std::vector<double> directions;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    auto rng = realization_rng(seed, 0);
+    InitialState<3> s;
+    s.host = {0.5, 1.0};
+    s.impurity = {0.5, mass};
+    s.position = random_sequential_addition<3>(rng, 200, 0.5, 10.0);
+    s.velocity.assign(200, Vec<3>::Zero());
+    s.species.assign(200, host_species);
+    kick_impurities<3>(rng, s, 1, E, 10.0);
+    int impurities = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (s.species[i] != impurity_species) {
+        CHECK(s.velocity[i].squaredNorm() == 0.0);
+        continue;
+      }
+      ++impurities;
+      CHECK(0.5 * mass * s.velocity[i].squaredNorm() == Approx(E).epsilon(1e-14));
+      CHECK(mass * s.velocity[i].norm() == Approx(std::sqrt(2.0 * mass * E)).epsilon(1e-14));
+      directions.push_back(s.velocity[i].x() / s.velocity[i].norm());
+    }
+    CHECK(impurities == 1);
+  }
+  REQUIRE(directions.size() == 3);
+  CHECK(directions[0] != directions[1]);
+  CHECK(directions[1] != directions[2]);
+  for (const int d : {2, 3}) {
+    INFO("d = " << d);
+    const BlastConfig scene = parse_scene(default_scene_toml(), {"d=" + std::to_string(d), "impurities.count=1",
+                                                                 "t_max=20", "realizations=2", "A_d=0.3"});
+    const BlastResult result = run_blast(scene, RunOptions{});
+    CHECK(result.energy_error_max() < 1e-12);
+    CHECK(result.collisions() > 10);
+  }
+}
