@@ -10,6 +10,7 @@
 #include "common/validate.hpp"
 #include "compare/report.hpp"
 #include "compare/verdict.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
@@ -133,8 +134,8 @@ std::string gnuplot_script(const BlastFigure& figure, const RunData& run) {
       << "1/0 w p pt 7 ps 1.2 lc rgb '#d62728' t 'moving', 1/0 w p pt 7 ps 1.2 lc rgb '#8fb0e8' t 'resting', " << lines
       << " i 0:" << std::max<std::size_t>(figure.panels[i].paths.size(), 1) - 1
       << " w l lw 2 lc rgb 'black' t 'impurity paths', " << lines << " i "
-      << std::max<std::size_t>(figure.panels[i].paths.size(), 1)
-      << " w l lw 2.5 lc rgb '#1f3fbf' t 'R_{imp}, Eq. (38)', " << lines << " i "
+      << std::max<std::size_t>(figure.panels[i].paths.size(), 1) << " w l lw 2.5 lc rgb '#1f3fbf' t '"
+      << theory::observable_info("R_imp").label << ", Eq. (38)', " << lines << " i "
       << std::max<std::size_t>(figure.panels[i].paths.size(), 1) + 1
       << " w l lw 2 dt 2 lc rgb '#202020' t 'TvNS R(t), Eq. (1)'\n";
   }

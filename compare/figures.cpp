@@ -11,6 +11,7 @@
 #include "compare/figure_blast.hpp"
 #include "compare/report.hpp"
 #include "theory/exponents.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
@@ -138,15 +139,15 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
   const std::size_t first = times.size() > 5 ? times.size() - 5 : 0;
   std::ostringstream data, script;
   data.precision(10);
+  const std::string spread = "t^{" + theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time) + "}";
   script << "set terminal pngcairo size 800,560 font 'Sans,12'\nset output 'p_imp.png'\n"
-         << "set xlabel 'r / t^{" << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time) << "}'\n"
-         << "set ylabel 'p_{imp}(r,t) t^{" << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time)
-         << "}'\nset key top right\n"
+         << "set xlabel 'r / " << spread << "'\n"
+         << "set ylabel '" << theory::observable_info("p_imp").label << "(r,t) " << spread << "'\nset key top right\n"
          << "set title 'Impurity radial distribution (Fig. 3 style): fitted b = "
          << common::format_number(std::round(fit.b_fit * 1000) / 1000) << " ± "
-         << common::format_number(std::round(fit.b_fit_error * 1000) / 1000) << ", R_{imp}/t^{"
-         << theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time)
-         << "} = " << common::format_number(std::round(fit.b_direct * 1000) / 1000) << "'\n";
+         << common::format_number(std::round(fit.b_fit_error * 1000) / 1000) << ", "
+         << theory::observable_info("R_imp").label << "/" << spread << " = "
+         << common::format_number(std::round(fit.b_direct * 1000) / 1000) << "'\n";
   std::string plot = "plot ";
   for (std::size_t i = first; i < times.size(); ++i) {
     const double scale = std::pow(times[i], fit.spread);
@@ -176,9 +177,10 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
 // vacuum: they are left out.
 std::pair<double, std::string> md_profile_data(const RunData& run, double t_profile) {
   const CsvTable table = read_numeric_csv(run.directory / "profiles.csv");
+  const auto& fields = theory::profile_fields();
   const std::size_t ct = table.column("t"), lo = table.column("r_over_R_lo"), hi = table.column("r_over_R_hi"),
-                    cn = table.column("density_over_n"), ce = table.column("density_stderr"),
-                    cu = table.column("radial_velocity"), cT = table.column("temperature");
+                    cn = table.column(fields[0].column), ce = table.column("density_stderr"),
+                    cu = table.column(fields[1].column), cT = table.column(fields[2].column);
   double t_last = 0;
   for (const auto& row : table.rows)
     if (t_profile <= 0 || row[ct] <= t_profile * (1 + 1e-9)) t_last = std::max(t_last, row[ct]);
@@ -222,15 +224,16 @@ std::string profile_figure(const RunData& run, const std::vector<ProfileCurve>& 
               (key ? "'" + continuum[i].label + "'" : "''");
     return line + "\n";
   };
+  const auto& fields = theory::profile_fields();  // n/n∞, u/Ṙ, T/Ṙ²
   std::ostringstream script;
   script << "set terminal pngcairo size 1800,1000 font 'Sans,17'\nset output 'profiles.png'\n"
          << "set multiplot title 'MD (d = " << run.d << ") at t = " << common::format_number(t_last)
          << " against the continuum at the same R/{/Symbol l}'\n"
          << "set xlabel 'r/R'\nset xrange [0:1.5]\nset grid\n"
-         << "set size 0.5,0.47\nset origin 0,0.47\nunset key\nset ylabel 'n/n_{/Symbol \\245}'\n"
-         << plot(2, "1:2:5 w yerrorbars", false) << "set origin 0.5,0.47\nset ylabel 'u/(dR/dt)'\n"
-         << plot(3, "1:3 w p", false)
-         << "set origin 0,0\nset ylabel 'T/(dR/dt)^2'\nset logscale y\nset yrange [1e-3:*]\n"
+         << "set size 0.5,0.47\nset origin 0,0.47\nunset key\nset ylabel '" << fields[0].label << "'\n"
+         << plot(2, "1:2:5 w yerrorbars", false) << "set origin 0.5,0.47\nset ylabel '" << fields[1].label << "'\n"
+         << plot(3, "1:3 w p", false) << "set origin 0,0\nset ylabel '" << fields[2].label
+         << "'\nset logscale y\nset yrange [1e-3:*]\n"
          << plot(4, "1:($4>0?$4:1/0) w p", false) << "unset logscale y\nset yrange [*:*]\n"
          << "set origin 0.5,0\nunset border\nunset tics\nunset xlabel\nunset ylabel\nunset grid\n"
          << "set xrange [0:1]\nset yrange [0:1]\nset key at graph 0.05,0.95 left top Left reverse box spacing 1.3\n"

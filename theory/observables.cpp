@@ -180,6 +180,12 @@ std::vector<std::string> table2_names() {
   return by_column(&ObservableInfo::table2_column);
 }
 
+const std::vector<ProfileField>& profile_fields() {
+  static const std::vector<ProfileField> fields{
+      {"density_over_n", "n/n_{/Symbol \\245}"}, {"radial_velocity", "u/(dR/dt)"}, {"temperature", "T/(dR/dt)^2"}};
+  return fields;
+}
+
 double apply_transform(Transform transform, double mean) {
   return transform == Transform::sqrt ? std::sqrt(mean) : mean;
 }

@@ -78,6 +78,15 @@ std::vector<std::string> table1_names();
 /// Table 2 observables in `coldblast theory`'s column order.
 std::vector<std::string> table2_names();
 
+/// One field of the `profiles` observable (profiles.csv), as figures show it against r/R: scaled
+/// like the TvNS profile (Sec. I) by n∞, Ṙ and Ṙ².
+struct ProfileField {
+  const char* column;  ///< the profiles.csv column it is computed from
+  const char* label;   ///< gnuplot enhanced-text label of the scaled field
+};
+/// The density n/n∞, the radial velocity u/Ṙ and the temperature T/Ṙ², in this order.
+const std::vector<ProfileField>& profile_fields();
+
 /// The observable from the ensemble mean of its inner value: mean or sqrt(mean) (Eq. (38)).
 double apply_transform(Transform transform, double mean);
 /// The scaling law of `o` in dimension d; throws std::invalid_argument when it has none.

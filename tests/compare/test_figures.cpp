@@ -4,12 +4,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
 #include "compare/figures.hpp"
 #include "compare/run_data.hpp"
 #include "tests/temp_path.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 using namespace coldblast::compare;
@@ -45,6 +47,12 @@ TEST_CASE("MD profile figure data stop at the simulated region's edge", "[fast]"
   // 30 bins of width 0.05 R up to 1.5 R; those ending beyond 1.312 R (bins 27..30) are left out.
   CHECK(rows == 26);
   CHECK(largest < region / R);
+  // The panels' labels are the catalogue's (theory/observables.hpp), not retyped.
+  std::ifstream gp(folder / "profiles.gp");
+  const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
+  REQUIRE(coldblast::theory::profile_fields().size() == 3);
+  for (const auto& field : coldblast::theory::profile_fields())
+    CHECK(script.find(std::string("set ylabel '") + field.label + "'") != std::string::npos);
   fs::remove_all(folder);
 }
 
