@@ -7,11 +7,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 #include "common/validate.hpp"
 #include "hydro/tvns.hpp"
@@ -19,6 +17,7 @@
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/prefactors.hpp"
 #include "kinetic/trajectory.hpp"
+#include "md/ensemble.hpp"
 #include "md/observers.hpp"
 #include "theory/prefactors.hpp"
 
@@ -321,32 +320,14 @@ TracerResult run_tracer(const TracerConfig& config, const std::function<void(lon
   std::vector<long long> owned;
   for (long long b = config.shard_index; b < block_count; b += config.shard_count) owned.push_back(b);
   std::vector<BlockOutput> outputs(owned.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
   std::mutex mutex;
   long long done = 0;
-  auto worker = [&] {
-    while (!failed) {
-      const std::size_t slot = next++;
-      if (slot >= owned.size()) return;
-      try {
-        outputs[slot] = run_block(ctx, owned[slot], failed);
-        std::lock_guard<std::mutex> lock(mutex);
-        ++done;
-        if (progress) progress(done, static_cast<long long>(owned.size()));
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < config.threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  md::run_slots_in_parallel(owned.size(), config.threads, [&](std::size_t slot, const std::atomic<bool>& stop) {
+    outputs[slot] = run_block(ctx, owned[slot], stop);
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (progress) progress(done, static_cast<long long>(owned.size()));
+  });
   for (std::size_t slot = 0; slot < owned.size(); ++slot) {
     ensemble.blocks[owned[slot]] = std::move(outputs[slot].sums);
     result.blocks[owned[slot]] = std::move(outputs[slot].tracer);

@@ -188,6 +188,33 @@ BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* rea
   return s;
 }
 
+void run_slots_in_parallel(std::size_t count, int threads,
+                           const std::function<void(std::size_t slot, const std::atomic<bool>& stop)>& work) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex mutex;
+  auto worker = [&] {
+    while (!failed) {
+      const std::size_t slot = next++;
+      if (slot >= count) return;
+      try {
+        common::throw_if_stop_requested();  // finished slots stay done (md: saved in the checkpoint)
+        work(slot, failed);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
 EnsemblePlan plan_ensemble(const BlastConfig& config, const RunOptions& options) {
   EnsemblePlan plan;
   BlastResult& result = plan.result;
@@ -228,9 +255,6 @@ BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
   const long long total = plan.pending_realizations;
 
   std::vector<BlockSums> sums(owned.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
   std::mutex mutex;
   long long done = 0;
   const auto realization_done = [&] {
@@ -238,32 +262,17 @@ BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
     ++done;
     if (options.progress) options.progress(done, total);
   };
-  auto worker = [&] {
-    while (!failed) {
-      const std::size_t slot = next++;
-      if (slot >= owned.size()) return;
-      try {
-        NamedFiles files;
-        sums[slot] = run_block(scene, owned[slot], &files, realization_done, &failed);
-        if (failed) return;
-        if (!options.checkpoint.empty())
-          save_checkpoint_block(options.checkpoint, owned[slot], sums[slot], owned[slot] == 0 ? &files : nullptr);
-        if (owned[slot] == 0) {
-          std::lock_guard<std::mutex> lock(mutex);
-          result.realization0_files = std::move(files);
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!error) error = std::current_exception();
-        failed = true;
-      }
+  run_slots_in_parallel(owned.size(), options.threads, [&](std::size_t slot, const std::atomic<bool>& stop) {
+    NamedFiles files;
+    sums[slot] = run_block(scene, owned[slot], &files, realization_done, &stop);
+    if (stop) return;
+    if (!options.checkpoint.empty())
+      save_checkpoint_block(options.checkpoint, owned[slot], sums[slot], owned[slot] == 0 ? &files : nullptr);
+    if (owned[slot] == 0) {
+      std::lock_guard<std::mutex> lock(mutex);
+      result.realization0_files = std::move(files);
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < options.threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  });
   for (std::size_t slot = 0; slot < owned.size(); ++slot) result.blocks[owned[slot]] = std::move(sums[slot]);
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return std::move(plan.result);

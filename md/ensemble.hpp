@@ -73,6 +73,15 @@ long long block_realizations(const BlastConfig& config, long long block);
 /// true (the partial sums must then be discarded). Throws like run_blast.
 BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* realization0_files = nullptr,
                     const std::function<void()>& realization_done = {}, const std::atomic<bool>* stop = nullptr);
+/// The one worker pool of ensembles (md::run_blast, the tracer kinetic::run_tracer): runs
+/// work(slot, stop) once for every slot in [0, count) on `threads` threads, the calling thread among
+/// them, handing slots out in increasing order. A slot's work must write only its own results (and
+/// merge them in slot order afterwards), so the outcome is bit-identical for any thread count. A
+/// stop request (SIGINT/SIGTERM, common/interrupt.hpp) is checked before every slot; the first
+/// exception sets `stop` (long work should poll it and return), no slot starts after it, and it is
+/// rethrown once every thread has joined.
+void run_slots_in_parallel(std::size_t count, int threads,
+                           const std::function<void(std::size_t slot, const std::atomic<bool>& stop)>& work);
 /// Parses "i/n" (0 <= i < n); throws std::invalid_argument naming --shard otherwise.
 std::pair<int, int> parse_shard(const std::string& text);
 

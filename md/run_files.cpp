@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -310,6 +311,11 @@ struct MergedSummary {
   double wall_seconds = 0.0;
   long long resumed_realizations = 0, resumed_collisions = 0;
   int threads = 1;
+  // As the shards resolved the scene (absent in old files): where A_d came from, and the region
+  // (the tracer's has no particles), which md's resolve_scene would otherwise size anew.
+  std::optional<std::string> A_d_source;
+  std::optional<long long> particles;
+  std::optional<double> region_radius;
 };
 
 /// Reads summary.json of a shard: a malformed file or field is bad input (std::invalid_argument
@@ -342,6 +348,17 @@ MergedSummary read_merged_summary(const std::filesystem::path& path) {
     m.resumed_realizations = count("resumed_realizations", 0, std::numeric_limits<long long>::max());
     m.resumed_collisions = count("resumed_collisions", 0, std::numeric_limits<long long>::max());
     m.threads = static_cast<int>(count("threads", -1, 1 << 20));
+    if (s.contains("A_d_source")) {
+      if (!s.at("A_d_source").is_string()) throw bad("'A_d_source' is not a string");
+      m.A_d_source = s.at("A_d_source").get<std::string>();
+    }
+    if (s.contains("particles")) m.particles = count("particles", -1, std::numeric_limits<long long>::max());
+    if (s.contains("region_radius")) {
+      const common::Json& v = s.at("region_radius");
+      if (!v.is_number() || !(v.get<double>() > 0.0) || !std::isfinite(v.get<double>()))
+        throw bad("'region_radius' = " + v.dump() + " is not a finite number > 0");
+      m.region_radius = v.get<double>();
+    }
     return m;
   } catch (const common::Json::exception& e) {
     throw bad(e.what());
@@ -359,6 +376,9 @@ BlastResult merge_blast_outputs(const std::vector<fs::path>& directories) {
     if (scene_toml.empty()) {
       scene_toml = toml_text;
       merged.scene = resolve_scene(parse_scene(toml_text, {}, (dir / "summary.json").string()));
+      if (summary.A_d_source) merged.scene.A_d_source = *summary.A_d_source;
+      if (summary.particles) merged.scene.particle_count = static_cast<std::size_t>(*summary.particles);
+      if (summary.region_radius) merged.scene.region_radius = *summary.region_radius;
     } else if (toml_text != scene_toml) {
       throw std::invalid_argument("md merge: " + dir.string() + " ran a different scene than " +
                                   directories.front().string());
