@@ -11,6 +11,7 @@
 #include "compare/report.hpp"
 #include "compare/verdict.hpp"
 #include "hydro/equation_of_state.hpp"
+#include "hydro/options.hpp"
 
 namespace coldblast::cli {
 
@@ -25,6 +26,7 @@ struct CompareOptions {
   Format format = Format::table;
   compare::CompareConfig config;
   std::string hydro_eos, hydro_transport;
+  std::string hydro_config;  // --hydro-config FILE: its [hydro] table (flags win)
   double hydro_phi = 0;
   CLI::Option* hydro_phi_option = nullptr;
 };
@@ -83,15 +85,31 @@ void print_table(const compare::CompareResult& result) {
   std::printf("\nverdict: %s\n", result.pass ? "PASS" : "FAIL");
 }
 
+/// The Navier-Stokes model of --against hydro: --hydro-config's [hydro] keys, then the flags (which
+/// win, and take over the name in messages).
+compare::HydroModelOptions hydro_model(const CompareOptions& options) {
+  compare::HydroModelOptions model;
+  if (!options.hydro_config.empty()) {
+    // The [hydro] keys first; a flag given as well replaces its key (and its name in messages).
+    const hydro::HydroModelKeys keys =
+        hydro::read_hydro_model_keys(common::read_text(options.hydro_config, "--hydro-config"), options.hydro_config);
+    if (keys.eos) model.eos = hydro::eos_from_string(*keys.eos, model.eos_name = "hydro.eos");
+    if (keys.phi) model.phi = *keys.phi, model.phi_name = "hydro.phi";
+    if (keys.transport)
+      model.transport = hydro::transport_from_string(*keys.transport, model.transport_name = "hydro.transport");
+  }
+  if (!options.hydro_eos.empty()) model.eos = hydro::eos_from_string(options.hydro_eos, model.eos_name = "--hydro-eos");
+  if (!options.hydro_transport.empty())
+    model.transport = hydro::transport_from_string(options.hydro_transport, model.transport_name = "--hydro-transport");
+  if (options.hydro_phi_option->count() > 0) model.phi = options.hydro_phi, model.phi_name = "--hydro-phi";
+  return model;
+}
+
 void run(CompareOptions& options) {
   options.config.run_dir = options.run_dir;
   options.config.against = compare::parse_reference(options.against);
   options.config.observables = split_list(options.observables);
-  if (!options.hydro_eos.empty())
-    options.config.hydro_model.eos = hydro::eos_from_string(options.hydro_eos, "--hydro-eos");
-  if (!options.hydro_transport.empty())
-    options.config.hydro_model.transport = hydro::transport_from_string(options.hydro_transport, "--hydro-transport");
-  if (options.hydro_phi_option->count() > 0) options.config.hydro_model.phi = options.hydro_phi;
+  options.config.hydro_model = hydro_model(options);
   const compare::CompareResult result = compare::run_compare(options.config);
   if (!options.out.empty()) {
     const auto files = compare::write_report(result, {options.out, !options.no_figures});
@@ -134,6 +152,9 @@ void add_compare_command(CLI::App& app) {
       ->add_option("--hydro-cells", options->config.hydro_cells,
                    "Navier–Stokes cells for --against hydro, [16, 100000]")
       ->capture_default_str();
+  command->add_option("--hydro-config", options->hydro_config,
+                      "TOML file whose [hydro] table sets eos, phi, transport of --against hydro (a scene file may "
+                      "carry it; --hydro-eos/--hydro-phi/--hydro-transport win; docs/hydro.md)");
   command->add_option("--hydro-eos", options->hydro_eos,
                       "NS equation of state for --against hydro: ideal, henderson (2D), carnahan-starling (3D); "
                       "default: the run's hard-particle EOS");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "common/input.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "hydro/navier_stokes.hpp"
@@ -28,6 +29,8 @@ struct HydroOptions {
   std::string eos = "ideal";
   double phi = 0;  // 0: the library's default for a hard-particle EOS
   std::string transport = "dilute";
+  std::string config_file;  // --config FILE: its [hydro] table's eos, phi, transport (flags win)
+  hydro::HydroModelKeys file_keys;
   std::string out;
   Format format = Format::table;
 };
@@ -49,7 +52,7 @@ hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
   o.eos = options.eos;
   o.phi = options.phi;
   o.transport = options.transport;
-  hydro::NavierStokesConfig config = hydro::navier_stokes_config(o, euler);
+  hydro::NavierStokesConfig config = hydro::navier_stokes_config(o, euler, options.file_keys);
   if (!euler && options.viscosity != "on" && options.viscosity != "off")
     throw std::invalid_argument("--viscosity = " + options.viscosity + " is not one of on, off");
   return config;
@@ -231,8 +234,21 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
       ->capture_default_str();
   command.add_option("--phi", options.phi,
                      "Ambient packing fraction for a hard-particle --eos (default 0.118, the paper's MD)");
+  command.add_option("--config", options.config_file,
+                     "TOML file whose [hydro] table sets eos, phi, transport (a scene file may carry it; flags win; "
+                     "docs/hydro.md)");
   command.add_option("--out", options.out, "Folder for samples.csv, exponents.csv, profile.csv (none if empty)");
   add_format_option(command, options.format);
+}
+
+/// Reads --config's [hydro] keys, minus those whose flag was given (flags win).
+void read_config_keys(const CLI::App& command, HydroOptions& options) {
+  if (options.config_file.empty()) return;
+  options.file_keys =
+      hydro::read_hydro_model_keys(common::read_text(options.config_file, "--config"), options.config_file);
+  if (command.count("--eos")) options.file_keys.eos.reset();
+  if (command.count("--phi")) options.file_keys.phi.reset();
+  if (command.get_option_no_throw("--transport") && command.count("--transport")) options.file_keys.transport.reset();
 }
 
 }  // namespace
@@ -259,13 +275,19 @@ void add_hydro_command(CLI::App& app) {
       },
       "c_kappa in kappa = c_kappa n_inf lambda sqrt(T), >= 0 (default: Chapman-Enskog, 2/sqrt(pi) in 2D, "
       "75 sqrt(pi)/256 in 3D)");
-  core->callback([core_options] { run_core(*core_options); });
+  core->callback([core_options, core] {
+    read_config_keys(*core, *core_options);
+    run_core(*core_options);
+  });
 
   auto euler_options = std::make_shared<HydroOptions>();
   CLI::App* euler = hydro->add_subcommand("euler", "kappa = mu = 0: A_d and profiles against the exact TvNS solution");
   add_common_options(*euler, *euler_options,
                      "Stop at R/lambda (default 500; the initial hot region has R/lambda = 0.4)");
-  euler->callback([euler_options] { run_euler(*euler_options); });
+  euler->callback([euler_options, euler] {
+    read_config_keys(*euler, *euler_options);
+    run_euler(*euler_options);
+  });
 }
 
 }  // namespace coldblast::cli

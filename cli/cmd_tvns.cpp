@@ -96,62 +96,51 @@ void write_profile(const std::string& path, const hydro::TvnsSolution& s, const 
   std::cerr << "tvns: wrote " << path << " (" << points.size() << " points)\n";
 }
 
-void run(const TvnsOptions& options) {
-  const hydro::TvnsConfig config = make_config(options);
-  std::vector<double> xs;
+common::Json summary_json(const TvnsOptions& options, const hydro::TvnsSolution& s,
+                          const std::vector<hydro::TvnsPoint>& points) {
+  const auto finite_or_null = [](double value) { return std::isfinite(value) ? common::Json(value) : common::Json(); };
+  const hydro::TvnsConfig& config = s.config();
+  common::Json document = {{"d", config.d},
+                           {"gamma", s.gamma()},
+                           {"eos", hydro::to_string(config.eos)},
+                           {"phi", config.phi},
+                           {"A", s.A()},
+                           {"A_error", s.A_error()},
+                           {"method_agreement", s.method_agreement()},
+                           {"A_closed_form", finite_or_null(s.A_closed_form())},
+                           {"A_ode", s.A_ode()},
+                           {"case", case_name(s.solution_case())},
+                           {"tolerance", config.tolerance},
+                           {"shock_compression", s.shock_compression()},
+                           {"shock_packing_fraction", s.shock_packing_fraction()},
+                           {"cavity_radius", s.cavity_radius()},
+                           {"density_exponent", s.density_exponent()},
+                           {"temperature_exponent", s.temperature_exponent()}};
+  if (!options.profile.empty()) document["profile_file"] = options.profile;
   if (!options.at.empty()) {
-    xs = hydro::parse_profile_points(options.at);
-  } else {
-    common::require_integer_in_range("--points", options.points, 1, 10000000);
-    for (int i = 1; i <= options.points; ++i) xs.push_back(static_cast<double>(i) / options.points);
+    common::Json profile = common::Json::array();
+    for (const hydro::TvnsPoint& p : points) profile.push_back(point_json(p));
+    document["profile"] = profile;
   }
-  const hydro::TvnsSolution s = hydro::solve_tvns(config);
-  std::vector<hydro::TvnsPoint> points;
-  if (!options.profile.empty() || !options.at.empty()) points = s.profile(xs);
-  if (!options.profile.empty()) write_profile(options.profile, s, points);
+  return document;
+}
 
-  if (options.format == Format::json) {
-    const auto finite_or_null = [](double value) {
-      return std::isfinite(value) ? common::Json(value) : common::Json();
-    };
-    common::Json document = {{"d", config.d},
-                             {"gamma", s.gamma()},
-                             {"eos", hydro::to_string(config.eos)},
-                             {"phi", config.phi},
-                             {"A", s.A()},
-                             {"A_error", s.A_error()},
-                             {"method_agreement", s.method_agreement()},
-                             {"A_closed_form", finite_or_null(s.A_closed_form())},
-                             {"A_ode", s.A_ode()},
-                             {"case", case_name(s.solution_case())},
-                             {"tolerance", config.tolerance},
-                             {"shock_compression", s.shock_compression()},
-                             {"shock_packing_fraction", s.shock_packing_fraction()},
-                             {"cavity_radius", s.cavity_radius()},
-                             {"density_exponent", s.density_exponent()},
-                             {"temperature_exponent", s.temperature_exponent()}};
-    if (!options.profile.empty()) document["profile_file"] = options.profile;
-    if (!options.at.empty()) {
-      common::Json profile = common::Json::array();
-      for (const hydro::TvnsPoint& p : points) profile.push_back(point_json(p));
-      document["profile"] = profile;
-    }
-    print_json(document);
-    return;
-  }
+void print_table(const hydro::TvnsSolution& s, const std::vector<hydro::TvnsPoint>& points) {
+  const hydro::TvnsConfig& config = s.config();
+  const bool ideal = config.eos == hydro::Eos::ideal;
   std::cout << "TvNS blast, d = " << config.d << " (" << geometry(config.d) << "), "
-            << (config.eos == hydro::Eos::ideal ? "ideal gas, gamma = " + number(s.gamma(), 15)
-                                                : hydro::to_string(config.eos) + ", phi = " + number(config.phi, 15))
+            << (ideal ? "ideal gas, gamma = " + number(s.gamma(), 15)
+                      : hydro::to_string(config.eos) + ", phi = " + number(config.phi, 15))
             << ", " << case_name(s.solution_case()) << " case\n"
             << "  A_d = " << number(s.A(), 15) << " +- " << number(s.A_error(), 2)
             << "   (Eq. 1: R = (E t^2/(A_d n))^(1/(d+2)))\n";
-  if (config.eos == hydro::Eos::ideal)
+  if (ideal)
     std::cout << "  closed form " << number(s.A_closed_form(), 15) << ", ODE " << number(s.A_ode(), 15);
   else
     std::cout << "  Bulirsch-Stoer " << number(s.A(), 15) << ", Dormand-Prince check";
   std::cout << ", relative agreement " << number(s.method_agreement(), 2) << "\n"
             << "  shock: rho1/rho0 = " << number(s.shock_compression(), 12);
-  if (config.eos != hydro::Eos::ideal) std::cout << ", phi1 = " << number(s.shock_packing_fraction(), 12);
+  if (!ideal) std::cout << ", phi1 = " << number(s.shock_packing_fraction(), 12);
   std::cout << "\n";
   if (s.solution_case() == hydro::TvnsCase::vacuum)
     std::cout << "  empty cavity for r/R < " << number(s.cavity_radius(), 12) << "; at its edge rho ∝ (r/R - "
@@ -160,15 +149,36 @@ void run(const TvnsOptions& options) {
   else
     std::cout << "  near the centre (Eqs. 18a,b): rho ∝ (r/R)^" << number(s.density_exponent(), 12) << ", T ∝ (r/R)^"
               << number(s.temperature_exponent(), 12) << "\n";
-  if (!options.at.empty()) {
-    std::cout << "\n  r/R                  rho/rho0             u/Rdot               p/(rho0 Rdot^2)      T/Rdot^2\n";
-    for (const hydro::TvnsPoint& p : points) {
-      char line[200];
-      std::snprintf(line, sizeof line, "  %-20.15g %-20.15g %-20.15g %-20.15g %-20.15g\n", p.r_over_R, p.density,
-                    p.velocity, p.pressure, p.temperature);
-      std::cout << line;
-    }
+  if (points.empty()) return;
+  std::cout << "\n  r/R                  rho/rho0             u/Rdot               p/(rho0 Rdot^2)      T/Rdot^2\n";
+  for (const hydro::TvnsPoint& p : points) {
+    char line[200];
+    std::snprintf(line, sizeof line, "  %-20.15g %-20.15g %-20.15g %-20.15g %-20.15g\n", p.r_over_R, p.density,
+                  p.velocity, p.pressure, p.temperature);
+    std::cout << line;
   }
+}
+
+/// The r/R of --at, or i/N of --points.
+std::vector<double> profile_points(const TvnsOptions& options) {
+  if (!options.at.empty()) return hydro::parse_profile_points(options.at);
+  common::require_integer_in_range("--points", options.points, 1, 10000000);
+  std::vector<double> xs;
+  for (int i = 1; i <= options.points; ++i) xs.push_back(static_cast<double>(i) / options.points);
+  return xs;
+}
+
+void run(const TvnsOptions& options) {
+  const hydro::TvnsConfig config = make_config(options);
+  const std::vector<double> xs = profile_points(options);
+  const hydro::TvnsSolution s = hydro::solve_tvns(config);
+  std::vector<hydro::TvnsPoint> points;
+  if (!options.profile.empty() || !options.at.empty()) points = s.profile(xs);
+  if (!options.profile.empty()) write_profile(options.profile, s, points);
+  if (options.format == Format::json)
+    print_json(summary_json(options, s, points));
+  else
+    print_table(s, options.at.empty() ? std::vector<hydro::TvnsPoint>{} : points);
 }
 
 }  // namespace

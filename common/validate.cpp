@@ -43,4 +43,23 @@ void require_integer_in_range(const std::string& name, long long value, long lon
                               hi_text + "]" + (context.empty() ? "" : " " + context));
 }
 
+std::string rename_fields(const std::string& message, const FieldNames& names) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < message.size()) {
+    const bool word_start = i == 0 || message[i - 1] == ' ' || message[i - 1] == '(' || message[i - 1] == ',';
+    const FieldNames::value_type* match = nullptr;
+    if (word_start)
+      for (const auto& entry : names)
+        if (message.compare(i, entry.first.size() + 3, entry.first + " = ") == 0) match = &entry;
+    if (match) {
+      out += match->second;
+      i += match->first.size();
+    } else {
+      out += message[i++];
+    }
+  }
+  return out;
+}
+
 }  // namespace coldblast::common

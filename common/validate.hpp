@@ -1,7 +1,10 @@
 #pragma once
 // Input validation at the boundaries: every failure throws std::invalid_argument naming the
 // parameter, its value and the allowed range (STYLE.md, "Errors: loud at the boundary").
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace coldblast::common {
 
@@ -19,5 +22,24 @@ void require_integer_in_range(const std::string& name, long long value, long lon
 
 /// Shortest round-trip decimal form of a double (17 significant digits at most).
 std::string format_number(double value);
+
+/// A front end's names for a library config's fields, {field, name} (e.g. {"phi", "--phi"} for a
+/// flag, {"phi", "hydro.phi"} for a TOML key): the one place a command maps its flags or keys.
+using FieldNames = std::vector<std::pair<std::string, std::string>>;
+
+/// `message` with every field of `names` that stands as a word before " = " renamed: "phi = 0.8 is
+/// outside ..." becomes "--phi = 0.8 is outside ...".
+std::string rename_fields(const std::string& message, const FieldNames& names);
+
+/// Returns f(); a std::invalid_argument thrown by f (a config's validate(), a parser) is rethrown
+/// with rename_fields, so the library validates and the message names the caller's flag or key.
+template <class F>
+auto with_field_names(const FieldNames& names, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(rename_fields(e.what(), names));
+  }
+}
 
 }  // namespace coldblast::common

@@ -37,7 +37,7 @@ HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double r
     model.eos = *options.eos;
     const int dimension = hydro::eos_dimension(model.eos);
     if (dimension != 0 && dimension != d)
-      throw std::invalid_argument("--hydro-eos = " + hydro::to_string(model.eos) + " is for d = " +
+      throw std::invalid_argument(options.eos_name + " = " + hydro::to_string(model.eos) + " is for d = " +
                                   std::to_string(dimension) + ", the run has d = " + std::to_string(d) +
                                   "; allowed: ideal, " + (d == 2 ? "henderson" : "carnahan-starling"));
     if (model.eos == hydro::Eos::ideal) {
@@ -49,20 +49,20 @@ HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double r
   }
   if (options.phi) {
     if (model.eos == hydro::Eos::ideal)
-      throw std::invalid_argument("--hydro-phi = " + common::format_number(*options.phi) +
-                                  " needs a hard-particle --hydro-eos (henderson in 2D, carnahan-starling in 3D); "
-                                  "the ideal gas has no packing fraction");
+      throw std::invalid_argument(options.phi_name + " = " + common::format_number(*options.phi) +
+                                  " needs a hard-particle " + options.eos_name +
+                                  " (henderson in 2D, carnahan-starling in 3D); the ideal gas has no packing fraction");
     model.phi = *options.phi;
   }
   if (options.transport) model.transport = *options.transport;
   if (model.eos == hydro::Eos::ideal && model.transport == hydro::Transport::enskog)
-    throw std::invalid_argument(
-        "--hydro-transport = enskog needs a hard-particle --hydro-eos (its contact value chi comes from the EOS); "
-        "allowed with --hydro-eos ideal: dilute");
+    throw std::invalid_argument(options.transport_name + " = enskog needs a hard-particle " + options.eos_name +
+                                " (its contact value chi comes from the EOS); allowed with " + options.eos_name +
+                                " = ideal: dilute");
   if (model.eos != hydro::Eos::ideal) {
     const double top = hydro::max_ambient_packing_fraction(model.eos);
     if (!(model.phi > 0 && model.phi < top))
-      throw std::invalid_argument("--hydro-phi = " + common::format_number(model.phi) + " is outside (0, " +
+      throw std::invalid_argument(options.phi_name + " = " + common::format_number(model.phi) + " is outside (0, " +
                                   common::format_number(top) + ") for the " + hydro::to_string(model.eos) + " EOS");
   }
   return model;

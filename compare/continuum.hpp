@@ -31,6 +31,8 @@ struct HydroModelOptions {
   std::optional<hydro::Eos> eos;
   std::optional<double> phi;
   std::optional<hydro::Transport> transport;
+  /// How messages name each field: the flag, or hydro.<key> for a value from --hydro-config's file.
+  std::string eos_name = "--hydro-eos", phi_name = "--hydro-phi", transport_name = "--hydro-transport";
   bool any() const { return eos || phi || transport; }
 };
 

@@ -54,8 +54,10 @@ void CompareConfig::validate() const {
                                 " must be a positive finite time (0: all times)");
   common::require_integer_in_range("--hydro-cells", hydro_cells, 16, 100000);
   if (against != Reference::hydro && hydro_model.any()) {
-    const char* option = hydro_model.eos ? "--hydro-eos" : hydro_model.phi ? "--hydro-phi" : "--hydro-transport";
-    throw std::invalid_argument(std::string(option) +
+    const std::string& option = hydro_model.eos   ? hydro_model.eos_name
+                                : hydro_model.phi ? hydro_model.phi_name
+                                                  : hydro_model.transport_name;
+    throw std::invalid_argument(option +
                                 " chooses the Navier-Stokes model of --against hydro; the "
                                 "comparison is --against " +
                                 to_string(against));

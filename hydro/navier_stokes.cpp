@@ -591,7 +591,7 @@ void validate_dense_physics(const NavierStokesPhysics& physics) {
 
 void NavierStokesConfig::validate() const {
   using common::Bound;
-  common::require_integer_in_range("d", physics.d, 1, 3);
+  common::require_integer_in_range("d", physics.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
   validate_dense_physics(physics);
   if (physics.frozen_flow && (!physics.heat_conduction || physics.viscosity))
     throw std::invalid_argument(
@@ -606,7 +606,9 @@ void NavierStokesConfig::validate() const {
   common::require_integer_in_range("cells", numerics.cells, 16, 100000);
   common::require_in_range("start_R_over_lambda", numerics.start_R_over_lambda, 0, 1e6);
   common::require_in_range("until_R_over_lambda", until_R_over_lambda, numerics.start_R_over_lambda, 1e12, Bound::open,
-                           Bound::closed, " (must exceed start_R_over_lambda)");
+                           Bound::closed,
+                           " (R/lambda at the end; must exceed the initial size R/lambda = " +
+                               common::format_number(numerics.start_R_over_lambda) + ")");
   common::require_in_range("initial_width", numerics.initial_width, 0, 0.8, Bound::open, Bound::closed);
   common::require_in_range("temperature_floor", numerics.temperature_floor, 0, 1e-2, Bound::open, Bound::closed);
   common::require_in_range("relative_tolerance", numerics.relative_tolerance, 1e-12, 1e-2, Bound::closed,

@@ -1,12 +1,23 @@
 #include "hydro/options.hpp"
 
+#include <toml++/toml.h>
+
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 
 #include "common/input.hpp"
 #include "common/validate.hpp"
 
 namespace coldblast::hydro {
+
+namespace {
+const common::FieldNames tvns_flags = {
+    {"d", "--d"}, {"gamma", "--gamma"}, {"eos", "--eos"}, {"phi", "--phi"}, {"tolerance", "--tolerance"}};
+const common::FieldNames hydro_flags = {
+    {"d", "--d"},     {"cells", "--cells"},         {"until_R_over_lambda", "--until"},      {"eos", "--eos"},
+    {"phi", "--phi"}, {"transport", "--transport"}, {"kappa_prefactor", "--kappa-prefactor"}};
+}  // namespace
 
 std::vector<double> parse_profile_points(const std::string& text) {
   const std::string expected = " (expected r/R values in [0, 1], e.g. 0.1,0.5,1)";
@@ -28,67 +39,81 @@ std::vector<double> parse_profile_points(const std::string& text) {
 }
 
 TvnsConfig tvns_config(const TvnsOptions& options) {
-  common::require_integer_in_range("--d", options.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
-  TvnsConfig config;
-  config.d = options.d;
-  config.eos = eos_from_string(options.eos, "--eos");
-  if (config.eos == Eos::ideal) {
-    if (options.gamma != 0.0)
-      common::require_in_range("--gamma", options.gamma, min_gamma, max_gamma, common::Bound::closed,
-                               common::Bound::closed, "(0 selects 1 + 2/d)");
-    if (options.phi != 0.0)
-      throw std::invalid_argument("--phi = " + common::format_number(options.phi) +
-                                  " needs a hard-particle --eos (henderson for d = 2, carnahan-starling for d = 3)");
-    config.gamma = options.gamma;
-  } else {
-    const int eos_d = eos_dimension(config.eos);
-    if (eos_d != options.d)
-      throw std::invalid_argument("--eos = " + options.eos + " is for --d = " + std::to_string(eos_d) +
-                                  " only, not --d = " + std::to_string(options.d));
-    if (options.gamma != 0.0)
-      throw std::invalid_argument("--gamma = " + common::format_number(options.gamma) +
-                                  " cannot be set with --eos = " + options.eos + " (hard particles: e = (d/2) T)");
-    common::require_in_range("--phi", options.phi, 0.0, max_ambient_packing_fraction(config.eos), common::Bound::open,
-                             common::Bound::open,
-                             "for --eos = " + options.eos + " (post-shock phi must stay below close packing " +
-                                 common::format_number(close_packing_fraction(config.eos)) + ")");
-    config.phi = options.phi;
-  }
-  common::require_in_range("--tolerance", options.tolerance, 1e-14, 1e-3, common::Bound::closed, common::Bound::closed);
-  config.tolerance = options.tolerance;
-  config.validate();
-  return config;
+  // TvnsConfig::validate holds the rules; the flags only rename its fields.
+  return common::with_field_names(tvns_flags, [&] {
+    const TvnsConfig config{options.d, options.gamma, eos_from_string(options.eos, "eos"), options.phi,
+                            options.tolerance};
+    config.validate();
+    return config;
+  });
 }
 
-NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler) {
-  common::require_integer_in_range("--d", options.d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
-  const int cells = options.cells == 0 ? (euler ? default_euler_cells : default_core_cells) : options.cells;
-  common::require_integer_in_range("--cells", cells, 16, 100000, "(0 = the mode's default)");
-  NavierStokesConfig config;
-  config.physics.d = options.d;
-  config.numerics.cells = cells;
-  const double until = options.until == 0 ? (euler ? default_euler_until : default_core_until) : options.until;
-  common::require_in_range("--until", until, config.numerics.start_R_over_lambda, 1e12, common::Bound::open,
-                           common::Bound::closed,
-                           " (R/lambda at the end; must exceed the initial size R/lambda = " +
-                               common::format_number(config.numerics.start_R_over_lambda) + ")");
-  config.until_R_over_lambda = until;
-  config.physics.eos = eos_from_string(options.eos, "--eos");
-  config.physics.phi = options.phi;
-  config.physics.transport = transport_from_string(options.transport, "--transport");
-  if (euler) {
-    config.physics.heat_conduction = false;
-    config.physics.viscosity = false;
-  } else {
-    if (options.kappa_prefactor) {
-      common::require_in_range("--kappa-prefactor", *options.kappa_prefactor, 0, 1e6, common::Bound::closed,
-                               common::Bound::closed);
-      config.physics.kappa_prefactor = *options.kappa_prefactor;
-    }
-    config.physics.viscosity = options.viscosity;
+HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(std::string_view(toml_text), std::string_view(source));
+  } catch (const toml::parse_error& e) {
+    std::ostringstream message;
+    message << source << ": " << e.description() << " (line " << e.source().begin.line << ")";
+    throw std::invalid_argument(message.str());
   }
-  config.validate();
-  return config;
+  HydroModelKeys keys;
+  const toml::node_view<toml::node> node = root["hydro"];
+  if (!node) return keys;
+  const toml::table* table = node.as_table();
+  if (!table) throw std::invalid_argument("hydro in " + source + " must be a table ([hydro])");
+  for (auto&& [key_view, value] : *table) {
+    const std::string key(key_view.str());
+    const auto text = [&] {
+      if (const auto* s = value.as_string()) return s->get();
+      throw std::invalid_argument("hydro." + key + " in " + source + " must be a string");
+    };
+    if (key == "eos")
+      keys.eos = text();
+    else if (key == "transport")
+      keys.transport = text();
+    else if (key == "phi") {
+      const std::optional<double> phi = value.value<double>();
+      if (!phi) throw std::invalid_argument("hydro.phi in " + source + " must be a number");
+      keys.phi = *phi;
+    } else {
+      throw std::invalid_argument("unknown key hydro." + key + " in " + source + " (allowed: eos, phi, transport)");
+    }
+  }
+  return keys;
+}
+
+NavierStokesConfig navier_stokes_config(const HydroOptions& flags, bool euler, const HydroModelKeys& file) {
+  // The file's keys replace the flags' values, and its key names replace theirs in messages.
+  HydroOptions options = flags;
+  common::FieldNames names = hydro_flags;
+  const auto from_file = [&](const char* field) {
+    for (auto& entry : names)
+      if (entry.first == field) entry.second = std::string("hydro.") + field;
+  };
+  if (file.eos) options.eos = *file.eos, from_file("eos");
+  if (file.phi) options.phi = *file.phi, from_file("phi");
+  if (file.transport) options.transport = *file.transport, from_file("transport");
+  // NavierStokesConfig::validate holds the rules; the flags and keys only rename its fields.
+  return common::with_field_names(names, [&] {
+    NavierStokesConfig config;
+    config.physics.d = options.d;
+    config.numerics.cells = options.cells == 0 ? (euler ? default_euler_cells : default_core_cells) : options.cells;
+    config.until_R_over_lambda =
+        options.until == 0 ? (euler ? default_euler_until : default_core_until) : options.until;
+    config.physics.eos = eos_from_string(options.eos, "eos");
+    config.physics.phi = options.phi;
+    config.physics.transport = transport_from_string(options.transport, "transport");
+    if (euler) {
+      config.physics.heat_conduction = false;
+      config.physics.viscosity = false;
+    } else {
+      config.physics.kappa_prefactor = options.kappa_prefactor;
+      config.physics.viscosity = options.viscosity;
+    }
+    config.validate();
+    return config;
+  });
 }
 
 }  // namespace coldblast::hydro

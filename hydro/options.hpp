@@ -40,6 +40,18 @@ struct HydroOptions {
   double phi = 0.0;                  ///< ambient packing fraction; 0 = the library's default for a hard-particle EOS
   std::string transport = "dilute";  ///< transport coefficients (hydro::transport_from_string)
 };
+/// The Navier–Stokes model keys of a TOML file's [hydro] table (docs/hydro.md): the same values as
+/// --eos, --phi, --transport. An unset key leaves the flag's value.
+struct HydroModelKeys {
+  std::optional<std::string> eos;
+  std::optional<double> phi;
+  std::optional<std::string> transport;
+};
+/// Reads the [hydro] table of TOML text (no table: no keys); other tables and keys of the file (a
+/// scene's) are left alone. Throws std::invalid_argument naming hydro.<key> for an unknown key or a
+/// value of the wrong type, and naming `source` for a TOML syntax error.
+HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::string& source);
+
 /// Default end of the run: R/lambda = 1e4 (core), 500 (Euler).
 inline constexpr double default_core_until = 1e4;
 inline constexpr double default_euler_until = 500;
@@ -47,8 +59,10 @@ inline constexpr double default_euler_until = 500;
 /// meets 0.1 % in d = 2 and 3 (-6.9e-4, -9.4e-4; first order in the cell size: docs/hydro.md).
 inline constexpr int default_core_cells = 256;
 inline constexpr int default_euler_cells = 512;
-/// The validated NavierStokesConfig of core (euler = false) or Euler (kappa = mu = 0) mode; throws
-/// std::invalid_argument naming the flag (--d, --cells, --until, --eos, --transport, --kappa-prefactor).
-NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler);
+/// The validated NavierStokesConfig of core (euler = false) or Euler (kappa = mu = 0) mode, with the
+/// keys of `file` replacing the options' eos, phi and transport (the caller drops the keys whose flag
+/// was given). Throws std::invalid_argument naming the flag (--d, --cells, --until, --eos, --phi,
+/// --transport, --kappa-prefactor), or hydro.<key> for a value taken from the file.
+NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler, const HydroModelKeys& file = {});
 
 }  // namespace coldblast::hydro

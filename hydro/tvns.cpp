@@ -23,21 +23,21 @@
 namespace coldblast::hydro {
 
 void TvnsConfig::validate() const {
-  common::require_integer_in_range("d", d, 1, 3, "(TvNS: planar, cylindrical or spherical)");
+  common::require_integer_in_range("d", d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
   if (eos == Eos::ideal) {
     if (gamma != 0.0)
       common::require_in_range("gamma", gamma, min_gamma, max_gamma, common::Bound::closed, common::Bound::closed,
                                "(0 selects 1 + 2/d)");
     if (phi != 0.0)
       throw std::invalid_argument("phi = " + common::format_number(phi) +
-                                  " needs eos = henderson (d = 2) or carnahan_starling (d = 3), not ideal");
+                                  " needs a hard-particle eos = henderson (d = 2) or carnahan-starling (d = 3)");
   } else {
     if (eos_dimension(eos) != d)
       throw std::invalid_argument("eos = " + to_string(eos) + " is for d = " + std::to_string(eos_dimension(eos)) +
                                   " only, not d = " + std::to_string(d));
     if (gamma != 0.0 && gamma != 1.0 + 2.0 / d)
       throw std::invalid_argument("gamma = " + common::format_number(gamma) +
-                                  " cannot be set with eos = " + to_string(eos) + " (hard particles fix it)");
+                                  " cannot be set with eos = " + to_string(eos) + " (hard particles: e = (d/2) T)");
     common::require_in_range("phi", phi, 0.0, max_ambient_packing_fraction(eos), common::Bound::open,
                              common::Bound::open,
                              "for eos = " + to_string(eos) + " (post-shock phi must stay below close packing " +

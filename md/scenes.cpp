@@ -150,12 +150,16 @@ BlastConfig config_from_table(const toml::table& table) {
     } else if (key == "impurities") {
       if (!node.is_table()) throw std::invalid_argument("scene key impurities must be a table");
       apply_impurities(*node.as_table(), c.impurities);
+    } else if (key == "hydro") {
+      // The continuum model of `hydro core|euler --config` and `compare --hydro-config`
+      // (hydro::read_hydro_model_keys, docs/hydro.md); not part of the MD.
+      if (!node.is_table()) throw std::invalid_argument("scene key hydro must be a table ([hydro])");
     } else {
       throw std::invalid_argument(
           "unknown scene key " + key +
           " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius}, t_min, t_max, realizations, seed, "
           "block_size, observables, box_margin, cell_width, queue, snapshot_times, profile_bins, p_imp_bins, "
-          "overlap_check)");
+          "overlap_check, [hydro])");
     }
   }
   return c;

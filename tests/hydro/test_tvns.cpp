@@ -357,7 +357,7 @@ TEST_CASE("ODE profiles and cavity edge agree with the closed form", "[fast]") {
 TEST_CASE("phi with the ideal EOS is rejected, not ignored", "[fast]") {
   TvnsConfig config;
   config.phi = 0.1;
-  CHECK_THROWS_WITH(solve_tvns(config), Contains("phi = 0.1 needs eos = henderson"));
+  CHECK_THROWS_WITH(solve_tvns(config), Contains("phi = 0.1 needs a hard-particle eos = henderson"));
 }
 
 TEST_CASE("per-method error estimates cover the actual error at loose tolerances", "[fast]") {
