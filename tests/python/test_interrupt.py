@@ -22,17 +22,18 @@ CHILD = textwrap.dedent("""
 """)
 
 
-def test_sigint_interrupts_md_run(tmp_path):
-    out = tmp_path / "run"
-    child = subprocess.Popen([sys.executable, "-c", CHILD, str(out)], stdout=subprocess.PIPE,
+def interrupt_child(script, *args):
+    """Runs `script` in a child Python, sends SIGINT 0.3 s after its first progress line, and returns
+    (the child's stdout lines, its exit code, seconds from SIGINT to its "KeyboardInterrupt" line)."""
+    child = subprocess.Popen([sys.executable, "-c", script, *map(str, args)], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    latency, lines = None, []
     try:
         line = child.stdout.readline()
         assert line.startswith("progress"), line + child.stderr.read()
         time.sleep(0.3)
         sent = time.monotonic()
         child.send_signal(signal.SIGINT)
-        lines = []
         for line in child.stdout:
             lines.append(line.strip())
             if line.startswith("KeyboardInterrupt"):
@@ -41,12 +42,17 @@ def test_sigint_interrupts_md_run(tmp_path):
     finally:
         if child.poll() is None:
             child.kill()
+    return lines, code, latency
+
+
+def test_sigint_interrupts_md_run(tmp_path):
+    out = tmp_path / "run"
+    lines, code, latency = interrupt_child(CHILD, out)
     assert "KeyboardInterrupt" in lines, lines
     assert latency < 1.0
     assert "usable 2" in lines and code == 7
     assert not (out / "observables.csv").exists() and not (out / "summary.json").exists()
     assert not any(name.endswith(".tmp") or ".tmp" in name for _, _, files in os.walk(tmp_path) for name in files)
-
 
 HYDRO_CHILD = textwrap.dedent("""
     import coldblast
@@ -65,24 +71,7 @@ HYDRO_CHILD = textwrap.dedent("""
 
 def test_sigint_interrupts_hydro_core():
     """A Navier-Stokes run to R/lambda = 1e12 (minutes) stops within a second of SIGINT."""
-    child = subprocess.Popen([sys.executable, "-c", HYDRO_CHILD], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             text=True, env=dict(os.environ))
-    latency = None
-    try:
-        line = child.stdout.readline()
-        assert line.startswith("progress"), line + child.stderr.read()
-        time.sleep(0.3)
-        sent = time.monotonic()
-        child.send_signal(signal.SIGINT)
-        lines = []
-        for line in child.stdout:
-            lines.append(line.strip())
-            if line.startswith("KeyboardInterrupt"):
-                latency = time.monotonic() - sent
-        code = child.wait(timeout=60)
-    finally:
-        if child.poll() is None:
-            child.kill()
+    lines, code, latency = interrupt_child(HYDRO_CHILD)
     assert "KeyboardInterrupt" in lines, lines
     assert "finished" not in lines
     assert latency is not None and latency < 1.0
