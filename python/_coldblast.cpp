@@ -297,15 +297,7 @@ py::dict hydro_result(const hydro::NavierStokesResult& r) {
 py::dict hydro_run(bool euler, int d, double until, int cells, bool viscosity, std::optional<double> kappa_prefactor,
                    const std::string& eos, double phi, const std::string& transport,
                    const py::object& progress_callback) {
-  hydro::HydroOptions options;
-  options.d = d;
-  options.until = until;
-  options.cells = cells;
-  options.viscosity = viscosity;
-  options.kappa_prefactor = kappa_prefactor;
-  options.eos = eos;
-  options.phi = phi;
-  options.transport = transport;
+  const hydro::HydroOptions options{d, until, cells, viscosity, kappa_prefactor, eos, phi, transport};
   const hydro::NavierStokesConfig config = hydro::navier_stokes_config(options, euler);
   Progress progress(progress_callback);
   const std::function<hydro::NavierStokesResult()> work = [&] {
@@ -322,13 +314,7 @@ py::dict hydro_run(bool euler, int d, double until, int cells, bool viscosity, s
 py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
                 long long realizations, long long seed, int threads, const std::string& out,
                 const py::object& progress_callback) {
-  compare::MdRunRequest request;
-  request.scene_file = scene_file;
-  request.scene_text = scene_text;
-  request.overrides = overrides;
-  request.realizations = realizations;
-  request.seed = seed;
-  request.threads = threads;
+  const compare::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
   compare::MdRunPlan plan = compare::plan_md_run(request);
   md::RunOptions& options = plan.options;
   Progress progress(progress_callback);
