@@ -170,6 +170,16 @@ void equilibrium_md(const MdEquilibriumOptions& o) {
   j["collisions_total"] = r.collisions_total;
   j["wall_seconds"] = r.wall_seconds;
   j["seed"] = r.config.seed;
+  if (r.config.diffusion_lag > 0.0) {
+    j["diffusion"] = r.diffusion;
+    j["diffusion_error"] = r.diffusion_error;
+    j["diffusion_lag"] = r.config.diffusion_lag;
+    j["diffusion_windows"] = r.config.diffusion_windows;
+    j["msd_lag"] = r.msd_lag;
+    j["msd_lag_error"] = r.msd_lag_error;
+    j["diffusion_sample_interval"] = r.diffusion_sample_interval;
+    j["center_of_mass_error"] = r.center_of_mass_error;
+  }
   if (o.format == Format::json) {
     print_json(j);
     return;
@@ -180,6 +190,9 @@ void equilibrium_md(const MdEquilibriumOptions& o) {
   std::printf("  Z from collision rate          %.6f ± %.6f\n", r.Z_from_collision_rate, r.Z_from_collision_rate_error);
   std::printf("  %-30s %.6f\n", r.reference_name.c_str(), r.Z_reference);
   std::printf("  collision rate per particle    %.6f ± %.6f\n", r.collision_rate, r.collision_rate_error);
+  if (r.config.diffusion_lag > 0.0)
+    std::printf("  self-diffusion D (MSD, lag %g) %.6f ± %.6f\n", r.config.diffusion_lag, r.diffusion,
+                r.diffusion_error);
   std::printf("  %.3g collisions in %.2f s: %.3g collisions/s\n", static_cast<double>(r.collisions_total),
               r.wall_seconds, r.collisions_per_second);
 }
@@ -227,7 +240,7 @@ void add_md_command(CLI::App& app) {
 
   auto eq = std::make_shared<MdEquilibriumOptions>();
   CLI::App* eq_command = md->add_subcommand(
-      "equilibrium", "Equilibrium hard spheres in a periodic box: Z = beta P/n and the collision rate");
+      "equilibrium", "Equilibrium hard spheres in a periodic box: Z = beta P/n, the collision rate, self-diffusion");
   eq_command->add_option("--d", eq->config.d, "Dimension (2 or 3)")->capture_default_str();
   eq_command->add_option("--phi", eq->config.phi, "Packing fraction (0..0.7 in 2D, 0..0.5 in 3D)")
       ->capture_default_str();
@@ -237,6 +250,12 @@ void add_md_command(CLI::App& app) {
   eq_command->add_option("--blocks", eq->config.blocks, "Blocks for the error bars")->capture_default_str();
   eq_command->add_option("--seed", eq->config.seed, "Random seed")->capture_default_str();
   eq_command->add_option("--queue", eq->config.queue, "Event calendar: calendar or heap")->capture_default_str();
+  eq_command
+      ->add_option("--diffusion-lag", eq->config.diffusion_lag,
+                   "Self-diffusion from the mean squared displacement over windows of 2 x this lag (0: off)")
+      ->capture_default_str();
+  eq_command->add_option("--diffusion-windows", eq->config.diffusion_windows, "Windows for the self-diffusion")
+      ->capture_default_str();
   add_format_option(*eq_command, eq->format);
   eq_command->callback([eq] { equilibrium_md(*eq); });
 }

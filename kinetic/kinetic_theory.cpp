@@ -42,6 +42,14 @@ double first_sonine_tracer_diffusion(int d, double n, double chi, double sigma_c
   return 1.0 / (4.0 * n * chi * sigma_c) * std::sqrt(2.0 * T / (pi * mu));
 }
 
+double periodic_box_diffusion_correction(double T, double eta, double L) {
+  common::require_in_range("T", T, 0.0, INFINITY);
+  common::require_in_range("eta", eta, 0.0, INFINITY);
+  common::require_in_range("L", L, 0.0, INFINITY);
+  constexpr double xi = 2.837297;  // simple cubic lattice (Yeh & Hummer 2004)
+  return xi * T / (6.0 * pi * eta * L);
+}
+
 double pair_contact_value(int d, double phi, double a, double a_imp) {
   require_dimension(d);
   common::require_in_range("phi", phi, 0.0, 1.0, common::Bound::closed, common::Bound::open);

@@ -28,6 +28,12 @@ double equilibrium_collision_rate(int d, double n, double chi, double sigma_c, d
 /// equal to Gass's 1/(2 n sigma chi) √(T/π) for equal discs (J. Chem. Phys. 54, 1898 (1971)).
 double first_sonine_tracer_diffusion(int d, double n, double chi, double sigma_c, double T, double M);
 
+/// Finite-size correction of a self-diffusion coefficient measured in a 3D periodic cubic box of
+/// side L with shear viscosity eta: D_inf = D_L + xi T/(6 π eta L), xi = 2.837297 (the hydrodynamic
+/// self-interaction with the periodic images; Dünweg & Kremer, J. Chem. Phys. 99, 6983 (1993);
+/// Yeh & Hummer, J. Phys. Chem. B 108, 15873 (2004), Eq. 11). Returns xi T/(6 π eta L).
+double periodic_box_diffusion_correction(double T, double eta, double L);
+
 /// Contact value chi of the host–impurity pair correlation in a one-component hard-particle fluid
 /// at packing fraction phi (infinite dilution of the impurity). q = a_imp/(a + a_imp):
 /// 2D (Jenkins & Mancini 1987, J. Appl. Mech. 54, 27): 1/(1-phi) + (9/8) q phi/(1-phi)²;

@@ -1,5 +1,6 @@
 #include "md/equilibrium.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -33,9 +34,68 @@ void EquilibriumConfig::validate() const {
   require_in_range("equilibration_per_particle", equilibration_per_particle, 0.0, 1e6, common::Bound::closed);
   if (queue != "calendar" && queue != "heap")
     throw std::invalid_argument("queue = " + queue + " is not one of: calendar, heap");
+  require_in_range("diffusion_lag", diffusion_lag, 0.0, 1e12, common::Bound::closed, common::Bound::closed,
+                   " (0: no diffusion measurement)");
+  require_integer_in_range("diffusion_windows", diffusion_windows, 2, 100000);
 }
 
 namespace {
+/// Mean of x and its standard error (independent blocks).
+void mean_error(const std::vector<double>& x, double& mean, double& error) {
+  mean = 0.0;
+  for (const double v : x) mean += v;
+  mean /= x.size();
+  double var = 0.0;
+  for (const double v : x) var += (v - mean) * (v - mean);
+  error = std::sqrt(var / (x.size() - 1) / x.size());
+}
+
+/// Self-diffusion from the mean squared displacement of all N particles (result fields in
+/// equilibrium.hpp). Positions are sampled every δ = Δ/k, with δ √(2E/m) < 0.4 L: no particle
+/// can be faster than √(2E/m) (E the conserved kinetic energy), so each coordinate moves less than
+/// L/2 between samples and the minimum image of the wrapped difference is the true displacement.
+template <int D, class Queue>
+void measure_self_diffusion(Engine<D, Queue>& engine, const EquilibriumConfig& c, double box, EquilibriumResult& r) {
+  const std::size_t N = engine.size();
+  const double lag = c.diffusion_lag, v_max = std::sqrt(2.0 * engine.kinetic_energy());
+  const long long k = std::max(1LL, static_cast<long long>(std::ceil(lag * v_max / (0.4 * box))));
+  r.diffusion_sample_interval = lag / static_cast<double>(k);
+  const Vec<D> drift = engine.momentum() * (2.0 * lag / static_cast<double>(N));  // m = 1
+  std::vector<Vec<D>> last(N), moved(N);
+  std::vector<double> D_window, msd_window;
+  const auto squares = [&] {
+    double sum = 0.0;
+    for (const Vec<D>& x : moved) sum += x.squaredNorm();
+    return sum / static_cast<double>(N);
+  };
+  for (int w = 0; w < c.diffusion_windows; ++w) {
+    const double t0 = engine.now();
+    for (std::size_t i = 0; i < N; ++i) {
+      last[i] = engine.position(static_cast<std::int32_t>(i));
+      moved[i].setZero();
+    }
+    double msd_lag = 0.0;
+    for (long long step = 1; step <= 2 * k; ++step) {
+      engine.run_until(t0 + lag * static_cast<double>(step) / static_cast<double>(k));
+      for (std::size_t i = 0; i < N; ++i) {
+        const Vec<D> x = engine.position(static_cast<std::int32_t>(i));
+        Vec<D> dx = x - last[i];
+        for (int a = 0; a < D; ++a) dx[a] -= box * std::round(dx[a] / box);
+        moved[i] += dx;
+        last[i] = x;
+      }
+      if (step == k) msd_lag = squares();
+    }
+    Vec<D> centre = Vec<D>::Zero();
+    for (const Vec<D>& x : moved) centre += x;
+    r.center_of_mass_error = std::max(r.center_of_mass_error, (centre / static_cast<double>(N) - drift).norm());
+    msd_window.push_back(msd_lag);
+    D_window.push_back((squares() - msd_lag) / (2.0 * D * lag));
+  }
+  mean_error(D_window, r.diffusion, r.diffusion_error);
+  mean_error(msd_window, r.msd_lag, r.msd_lag_error);
+}
+
 template <int D, class Queue>
 EquilibriumResult run(const EquilibriumConfig& c) {
   EquilibriumResult r;
@@ -66,17 +126,10 @@ EquilibriumResult run(const EquilibriumConfig& c) {
     nu.push_back(rate);
     Z_rate.push_back(1.0 + rate * sigma * std::sqrt(M_PI / (4.0 * T)) / D);
   }
+  if (c.diffusion_lag > 0.0) measure_self_diffusion(engine, c, r.box_side, r);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   r.collisions_total = engine.collision_count();
   r.collisions_per_second = r.collisions_total / r.wall_seconds;
-  const auto mean_error = [](const std::vector<double>& x, double& mean, double& error) {
-    mean = 0.0;
-    for (const double v : x) mean += v;
-    mean /= x.size();
-    double var = 0.0;
-    for (const double v : x) var += (v - mean) * (v - mean);
-    error = std::sqrt(var / (x.size() - 1) / x.size());
-  };
   mean_error(Z, r.Z, r.Z_error);
   mean_error(nu, r.collision_rate, r.collision_rate_error);
   mean_error(Z_rate, r.Z_from_collision_rate, r.Z_from_collision_rate_error);

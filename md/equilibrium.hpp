@@ -1,7 +1,9 @@
 #pragma once
 // Equilibrium hard spheres in a periodic box (the engine's validation and benchmark): reduced
 // pressure Z = βP/n from the collisional virial, the collision frequency per particle, and the
-// exact kinetic-theory link between them, Z - 1 = ν σ √(π m/(4 k_B T)) / d (docs/verification.md).
+// exact kinetic-theory link between them, Z - 1 = ν σ √(π m/(4 k_B T)) / d (docs/verification.md);
+// optionally the self-diffusion coefficient from the mean squared displacement (every particle is
+// a tagged particle: the impurity of equal mass and radius, compared with coldblast tracer).
 #include <cstdint>
 #include <string>
 
@@ -18,6 +20,8 @@ struct EquilibriumConfig {
   int blocks = 20;                         ///< block averages for error bars, in [2, 10000]
   std::uint64_t seed = 1;                  ///< random seed (velocities)
   std::string queue = "calendar";          ///< "calendar" or "heap"
+  double diffusion_lag = 0.0;              ///< Δ (time) of the self-diffusion estimator; 0 = not measured
+  int diffusion_windows = 20;              ///< windows of length 2Δ after the pressure blocks, in [2, 100000]
   void validate() const;
 };
 
@@ -31,6 +35,16 @@ struct EquilibriumResult {
   std::string reference_name;
   double temperature = 0.0;   ///< 2 E_kin / (d (N - 1)), = 1 by construction
   double energy_error = 0.0;  ///< relative kinetic-energy drift over the run
+  /// Self-diffusion (config.diffusion_lag > 0): D = (⟨|Δr(2Δ)|²⟩ − ⟨|Δr(Δ)|²⟩)/(2dΔ) per window of
+  /// length 2Δ (the difference removes the ballistic offset of the mean squared displacement),
+  /// mean and standard error over the windows; the displacements are unwrapped across the
+  /// periodic faces, averaged over all N particles.
+  double diffusion = 0.0, diffusion_error = 0.0;
+  double msd_lag = 0.0, msd_lag_error = 0.0;  ///< ⟨|Δr(Δ)|²⟩ (length²)
+  double diffusion_sample_interval = 0.0;     ///< time between position samples (unwrapping)
+  /// Largest |Σ Δr_i / N − P 2Δ / (N m)| over the windows: the centre of mass moves with the total
+  /// momentum P, so this is round-off unless a periodic image was missed (length).
+  double center_of_mass_error = 0.0;
   std::uint64_t collisions_total = 0;
   double wall_seconds = 0.0, collisions_per_second = 0.0;
 };

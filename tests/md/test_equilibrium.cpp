@@ -43,6 +43,31 @@ TEST_CASE("3D equilibrium pressure: Carnahan-Starling and the collision-rate ide
   check_equilibrium(3, 0.3, 32);
 }
 
+TEST_CASE("self-diffusion: unwrapped displacements keep the centre of mass and the ballistic limit", "[fast]") {
+  // Over a lag of 60 the particles cross the box (L = 17.4) many times; the unwrapped
+  // displacements must still sum to the centre of mass's motion, P t / (N m), to round-off.
+  EquilibriumConfig c;
+  c.d = 3;
+  c.phi = 0.05;
+  c.particles = 500;
+  c.collisions = 20000;
+  c.seed = 7;
+  c.diffusion_lag = 60.0;
+  c.diffusion_windows = 4;
+  const EquilibriumResult r = run_equilibrium(c);
+  INFO("L = " << r.box_side << ", <|dr(lag)|^2> = " << r.msd_lag << ", D = " << r.diffusion);
+  CHECK(r.msd_lag > 2.0 * r.box_side * r.box_side);  // the images were crossed
+  CHECK(r.center_of_mass_error < 1e-12 * r.box_side);
+  CHECK(r.diffusion_sample_interval * std::sqrt(2.0 * 1.5 * (c.particles - 1)) <= 0.4 * r.box_side);
+  // Far below the collision time 1/ν (ν ≈ 0.77), ⟨|Δr|²⟩ = Δ² Σv²/N = Δ² d T (N − 1)/N up to the
+  // fraction νΔ = 8e-4 of particles that collide within the lag.
+  c.diffusion_lag = 1e-3;
+  c.diffusion_windows = 10;
+  const EquilibriumResult b = run_equilibrium(c);
+  const double ballistic = 3.0 * b.temperature * (c.particles - 1.0) / c.particles * 1e-6;
+  CHECK(std::abs(b.msd_lag / ballistic - 1.0) < 1e-2);
+}
+
 TEST_CASE("equilibrium input is validated", "[fast]") {
   EquilibriumConfig c;
   c.phi = 0.6;
@@ -53,4 +78,10 @@ TEST_CASE("equilibrium input is validated", "[fast]") {
   c = EquilibriumConfig{};
   c.collisions = 5;
   CHECK_THROWS_WITH(run_equilibrium(c), Catch::Contains("collisions"));
+  c = EquilibriumConfig{};
+  c.diffusion_lag = -1;
+  CHECK_THROWS_WITH(run_equilibrium(c), Catch::Contains("diffusion_lag = -1"));
+  c = EquilibriumConfig{};
+  c.diffusion_windows = 1;
+  CHECK_THROWS_WITH(run_equilibrium(c), Catch::Contains("diffusion_windows = 1"));
 }
