@@ -1,9 +1,10 @@
 // coldblast's MD self-diffusion (md::run_equilibrium's mean squared displacement) against the
 // kinetic theory of kinetic/kinetic_theory.hpp: in a dilute 3D hard-sphere fluid the MD's D,
 // corrected to the infinite box (Yeh & Hummer), lies above the first Sonine Enskog value by the
-// higher Sonine orders (+1.9 % at second order for equal spheres; Chapman & Cowling, 3rd ed.,
-// §10.21) and the correlated collisions that Enskog's theory leaves out (a few per cent at low
-// density: Alder, Gass & Wainwright, J. Chem. Phys. 53, 3813 (1970)), and by at most 8 %.
+// higher Sonine orders (about +2 % for equal spheres: the tracer's exact Monte Carlo of the linear
+// Boltzmann–Enskog equation gives 1.019 ± 0.001, docs/verification.md) and by the correlated
+// collisions that Enskog's theory leaves out (a few per cent at low density: Alder, Gass &
+// Wainwright, J. Chem. Phys. 53, 3813 (1970)), and by at most 8 %.
 #include <catch2/catch.hpp>
 #include <cmath>
 
