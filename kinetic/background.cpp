@@ -14,13 +14,20 @@ namespace coldblast::kinetic {
 
 using common::format_number;
 
-double ContactModel::chi(double n) const {
+double ContactModel::packing_per_density() const {
+  return theory::unit_ball_volume(d) * std::pow(a, d);
+}
+
+double ContactModel::chi_at_phi(double phi) const {
   if (!enskog) return 1.0;
-  const double phi = n * theory::unit_ball_volume(d) * std::pow(a, d);
   // Equal radii: hydro's contact value, the one the dense Navier–Stokes solver uses (consistent
   // with Z = 1 + 2^(d-1) φ χ); unequal radii: the mixture contact value of kinetic_theory.hpp.
   if (a_imp == a) return hydro::contact_value(d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling, phi);
   return pair_contact_value(d, phi, a, a_imp);
+}
+
+double ContactModel::chi(double n) const {
+  return enskog ? chi_at_phi(n * packing_per_density()) : 1.0;
 }
 
 double host_mean_speed(int d, double T) {
@@ -46,6 +53,7 @@ GridBackground::GridBackground(int d, std::vector<double> x, double edge, std::v
       x_(std::move(x)),
       edge_(edge),
       n_inf_(n_inf),
+      phi_per_n_(contact.packing_per_density()),
       frames_(std::move(frames)),
       contact_(contact),
       self_similar_after_(self_similar_after) {
@@ -64,10 +72,23 @@ GridBackground::GridBackground(int d, std::vector<double> x, double edge, std::v
       if (!(f.n[i] >= 0.0) || !(f.T[i] >= 0.0) || !std::isfinite(f.u[i]) || !std::isfinite(f.T[i]))
         throw std::invalid_argument("background grid: negative or non-finite field in frame " + std::to_string(k));
   }
+  const double step = (x_.back() - x_.front()) / static_cast<double>(x_.size() - 1);
+  uniform_ = true;
+  for (std::size_t i = 0; i < x_.size() && uniform_; ++i)
+    uniform_ = std::abs(x_[i] - (x_.front() + static_cast<double>(i) * step)) <= 1e-9 * step;
+  x_step_inverse_ = 1.0 / step;
+  for (const BackgroundFrame& f : frames_) {
+    log_t_.push_back(std::log(f.t));
+    log_scale_.push_back(std::log(f.scale));
+  }
+  for (std::size_t k = 0; k + 1 < frames_.size(); ++k)
+    window_slope_inverse_.push_back(1.0 / (log_t_[k + 1] - log_t_[k]));
   n_chi_max_ = n_inf_ * contact_.chi(n_inf_);
   for (const BackgroundFrame& f : frames_)
     for (const double n : f.n) n_chi_max_ = std::max(n_chi_max_, n * contact_.chi(n));
   band_width_ = std::max<std::size_t>(1, x_.size() / 64);
+  for (std::size_t i = 0; i < x_.size(); i += band_width_) band_start_.push_back(x_[i]);
+  if (band_start_.back() < x_.back()) band_start_.push_back(x_.back());
   for (std::size_t k = 0; k + 1 < frames_.size(); ++k) window_bands_.push_back(band_bounds(k, k + 1));
   first_bands_ = band_bounds(0, 0);
   last_bands_ = band_bounds(frames_.size() - 1, frames_.size() - 1);
@@ -97,27 +118,45 @@ GridBackground::BandBounds GridBackground::band_bounds(std::size_t k0, std::size
 }
 
 double GridBackground::scale_at(const WindowBound& window, double t) const {
-  if (window.index >= 0) {
-    const BackgroundFrame& a = frames_[static_cast<std::size_t>(window.index)];
-    const BackgroundFrame& b = frames_[static_cast<std::size_t>(window.index) + 1];
-    const double w = std::log(t / a.t) / std::log(b.t / a.t);
-    return std::exp((1 - w) * std::log(a.scale) + w * std::log(b.scale));
+  return slice(window, t).scale;
+}
+
+TimeSlice GridBackground::slice(const WindowBound& window, double t) const {
+  TimeSlice s;
+  s.t = t;
+  s.index = window.index;
+  if (window.index >= 0) {  // between frames k and k+1: ln s linear in ln t
+    const std::size_t k = static_cast<std::size_t>(window.index);
+    s.w = (std::log(t) - log_t_[k]) * window_slope_inverse_[k];
+    s.scale = std::exp((1 - s.w) * log_scale_[k] + s.w * log_scale_[k + 1]);
+    return s;
   }
-  const BackgroundFrame& f = window.index == -1 ? frames_.front() : frames_.back();
-  return f.scale * std::pow(t / f.t, 2.0 / (d_ + 2));
+  // Self-similar continuation before the first or after the last frame (TvNS scaling, Eq. (1)).
+  const std::size_t k = window.index == -1 ? 0 : frames_.size() - 1;
+  const double log_ratio = std::log(t) - log_t_[k];
+  s.scale = std::exp(log_scale_[k] + 2.0 / (d_ + 2) * log_ratio);
+  s.fu = std::exp(-static_cast<double>(d_) / (d_ + 2) * log_ratio);
+  return s;
 }
 
-double GridBackground::bound_length(const WindowBound& window, double t) const {
-  return 2.0 * scale_at(window, t) * x_.back() * static_cast<double>(band_width_) / static_cast<double>(x_.size());
+double GridBackground::bound_length(const TimeSlice& now, double r) const {
+  // Two widths of the band holding r (the grid is refined at the centre, so a fixed reach would
+  // span the core's many narrow bands and loosen the majorant; docs/kinetic.md).
+  const double scale = now.scale, x = r / scale;
+  const auto upper = std::upper_bound(band_start_.begin(), band_start_.end(), x);
+  const std::size_t b = upper == band_start_.begin() ? 0
+                        : upper == band_start_.end() ? band_start_.size() - 2
+                                                     : static_cast<std::size_t>(upper - band_start_.begin()) - 1;
+  return 2.0 * scale * (band_start_[b + 1] - band_start_[b]);
 }
 
-WindowBound GridBackground::local_bound(const WindowBound& window, double t, double t_end, double r_lo,
+WindowBound GridBackground::local_bound(const WindowBound& window, const TimeSlice& now, double t_end, double r_lo,
                                         double r_hi) const {
   const BandBounds& bands = window.index >= 0    ? window_bands_[static_cast<std::size_t>(window.index)]
                             : window.index == -1 ? first_bands_
                                                  : last_bands_;
   // s(t) is monotone in t inside a window, so x = r/s over [t, t_end] lies in [r_lo/s_max, r_hi/s_min].
-  const double s0 = scale_at(window, t), s1 = scale_at(window, t_end);
+  const double t = now.t, s0 = now.scale, s1 = scale_at(window, t_end);
   const double x_lo = r_lo / std::max(s0, s1), x_hi = r_hi / std::min(s0, s1);
   const auto pair_of = [&](double x) {
     const auto upper = std::upper_bound(x_.begin(), x_.end(), x);
@@ -142,42 +181,54 @@ WindowBound GridBackground::local_bound(const WindowBound& window, double t, dou
   return local;
 }
 
-HostState GridBackground::frame_at(std::size_t k, double x, double fu) const {
-  if (x > edge_) return {n_inf_, 0.0, 0.0, 1.0};
-  const BackgroundFrame& f = frames_[k];
-  const auto upper = std::upper_bound(x_.begin(), x_.end(), x);
-  HostState h;
-  if (upper == x_.begin() || upper == x_.end()) {
-    const std::size_t i = upper == x_.begin() ? 0 : x_.size() - 1;
-    h = {f.n[i], f.u[i], f.T[i], 1.0};
-  } else {
-    const std::size_t i = static_cast<std::size_t>(upper - x_.begin()) - 1;
-    const double w = (x - x_[i]) / (x_[i + 1] - x_[i]);
-    h = {(1 - w) * f.n[i] + w * f.n[i + 1], (1 - w) * f.u[i] + w * f.u[i + 1], (1 - w) * f.T[i] + w * f.T[i + 1], 1.0};
+GridBackground::Cell GridBackground::locate(double x) const {
+  Cell c;
+  const std::size_t last = x_.size() - 1;
+  if (!(x >= x_.front())) return c;  // below the first centre: the first cell's values
+  if (x >= x_[last]) {
+    c.i = last;
+    return c;
   }
+  std::size_t i;
+  if (uniform_) {
+    i = std::min(static_cast<std::size_t>((x - x_.front()) * x_step_inverse_), last - 1);
+    if (x < x_[i])
+      --i;  // rounding at a centre: keep x_[i] <= x < x_[i+1]
+    else if (x >= x_[i + 1])
+      ++i;
+  } else {
+    i = static_cast<std::size_t>(std::upper_bound(x_.begin(), x_.end(), x) - x_.begin()) - 1;
+  }
+  c.i = i;
+  c.w = (x - x_[i]) / (x_[i + 1] - x_[i]);
+  c.inside = true;
+  return c;
+}
+
+HostState GridBackground::frame_at(std::size_t k, const Cell& c, double fu) const {
+  const BackgroundFrame& f = frames_[k];
+  const std::size_t i = c.i, j = c.inside ? c.i + 1 : c.i;
+  const double w = c.w;
+  HostState h{(1 - w) * f.n[i] + w * f.n[j], (1 - w) * f.u[i] + w * f.u[j], (1 - w) * f.T[i] + w * f.T[j], 1.0};
   h.u *= fu;
   h.T *= fu * fu;
   return h;
 }
 
-HostState GridBackground::at(double r, double t, const WindowBound& window) const {
+HostState GridBackground::at(double r, const TimeSlice& slice) const {
+  const double x = r / slice.scale;
+  if (x > edge_) return {n_inf_, 0.0, 0.0, contact_.chi_at_phi(n_inf_ * phi_per_n_)};  // ambient gas at rest
+  const Cell c = locate(x);
   HostState h;
-  if (window.index >= 0) {
-    const std::size_t k = static_cast<std::size_t>(window.index);
-    const BackgroundFrame& a = frames_[k];
-    const BackgroundFrame& b = frames_[k + 1];
-    const double w = std::log(t / a.t) / std::log(b.t / a.t);
-    const double scale = std::exp((1 - w) * std::log(a.scale) + w * std::log(b.scale));
-    const HostState h0 = frame_at(k, r / scale, 1.0), h1 = frame_at(k + 1, r / scale, 1.0);
+  if (slice.index >= 0) {
+    const std::size_t k = static_cast<std::size_t>(slice.index);
+    const HostState h0 = frame_at(k, c, 1.0), h1 = frame_at(k + 1, c, 1.0);
+    const double w = slice.w;
     h = {(1 - w) * h0.n + w * h1.n, (1 - w) * h0.u + w * h1.u, (1 - w) * h0.T + w * h1.T, 1.0};
   } else {
-    const BackgroundFrame& f = window.index == -1 ? frames_.front() : frames_.back();
-    const double ratio = t / f.t;
-    const double scale = f.scale * std::pow(ratio, 2.0 / (d_ + 2));
-    const double fu = std::pow(ratio, -static_cast<double>(d_) / (d_ + 2));
-    h = frame_at(window.index == -1 ? 0 : frames_.size() - 1, r / scale, fu);
+    h = frame_at(slice.index == -1 ? 0 : frames_.size() - 1, c, slice.fu);
   }
-  h.chi = contact_.chi(h.n);
+  h.chi = contact_.chi_at_phi(h.n * phi_per_n_);
   return h;
 }
 

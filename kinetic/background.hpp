@@ -20,6 +20,10 @@ struct ContactModel {
   double a_imp = 0.5;  ///< impurity radius
   bool enskog = false;
   double chi(double n) const;
+  /// chi at packing fraction phi (no density conversion: the hot path's form).
+  double chi_at_phi(double phi) const;
+  /// Packing fraction per unit host density, Ω_d a^d (theory::unit_ball_volume).
+  double packing_per_density() const;
 };
 
 /// Host state at one point: density, radial flow speed, temperature, contact factor.
@@ -36,6 +40,16 @@ struct WindowBound {
   int index = 0;           ///< window id, passed back to Background::at
 };
 
+/// What the host state at one time needs besides the radius, computed once per time (one log
+/// and one exp for a grid): the window, the time weight between its frames and the scale factors.
+struct TimeSlice {
+  double t = 0.0;
+  double w = 0.0;      ///< weight of the window's later frame (ln t interpolation)
+  double scale = 1.0;  ///< length unit of the self-similar coordinate at t
+  double fu = 1.0;     ///< velocity factor of a self-similar continuation (1 between frames)
+  int index = 0;       ///< the window's id
+};
+
 /// Mean thermal speed of the host (mass 1) Maxwellian at temperature T (kinetic_theory.hpp).
 double host_mean_speed(int d, double T);
 
@@ -43,19 +57,32 @@ class Background {
  public:
   virtual ~Background() = default;
   virtual int dimension() const = 0;
+  /// Interpolation data of time t inside `window` (from bound(t)); by default none is needed.
+  virtual TimeSlice slice(const WindowBound& window, double t) const {
+    TimeSlice s;
+    s.t = t;
+    s.index = window.index;
+    return s;
+  }
+  /// Host state at radius r >= 0 at the time of `slice`.
+  virtual HostState at(double r, const TimeSlice& slice) const = 0;
   /// Host state at radius r >= 0 and time t inside `window` (from bound(t)).
-  virtual HostState at(double r, double t, const WindowBound& window) const = 0;
+  HostState at(double r, double t, const WindowBound& window) const { return at(r, slice(window, t)); }
   /// The window holding t (t_begin <= t < t_end); throws std::runtime_error where the background
   /// has no data.
   virtual WindowBound bound(double t) const = 0;
-  /// Tighter bounds for radii in [r_lo, r_hi] during [t, t_end] inside `window` (same t_end and
-  /// index as `window`); by default the window's own.
-  virtual WindowBound local_bound(const WindowBound& window, double /*t*/, double /*t_end*/, double /*r_lo*/,
-                                  double /*r_hi*/) const {
+  /// Tighter bounds for radii in [r_lo, r_hi] during [now.t, t_end] inside `window` (same t_end
+  /// and index as `window`; `now` = slice(window, t)); by default the window's own.
+  virtual WindowBound local_bound(const WindowBound& window, const TimeSlice& /*now*/, double /*t_end*/,
+                                  double /*r_lo*/, double /*r_hi*/) const {
     return window;
   }
-  /// Radial reach worth one local bound at time t (a few bands of the grid); +inf if uniform.
-  virtual double bound_length(const WindowBound& /*window*/, double /*t*/) const {
+  WindowBound local_bound(const WindowBound& window, double t, double t_end, double r_lo, double r_hi) const {
+    return local_bound(window, slice(window, t), t_end, r_lo, r_hi);
+  }
+  /// Radial reach worth one local bound at the time of `now` from radius r (about two bands of
+  /// the grid at r); +inf if uniform.
+  virtual double bound_length(const TimeSlice& /*now*/, double /*r*/) const {
     return std::numeric_limits<double>::infinity();
   }
   /// Earliest and latest time with data (the start of a self-similar extension is 0, its end +inf).
@@ -68,7 +95,8 @@ class EquilibriumBackground final : public Background {
  public:
   EquilibriumBackground(int d, double n, double T, const ContactModel& contact);
   int dimension() const override { return d_; }
-  HostState at(double, double, const WindowBound&) const override { return state_; }
+  using Background::at;
+  HostState at(double, const TimeSlice&) const override { return state_; }
   WindowBound bound(double t) const override;
   double t_first() const override { return 0.0; }
   double t_last() const override { return std::numeric_limits<double>::infinity(); }
@@ -96,10 +124,14 @@ class GridBackground final : public Background {
   GridBackground(int d, std::vector<double> x, double edge, std::vector<BackgroundFrame> frames, double n_inf,
                  const ContactModel& contact, bool self_similar_after);
   int dimension() const override { return d_; }
-  HostState at(double r, double t, const WindowBound& window) const override;
+  TimeSlice slice(const WindowBound& window, double t) const override;
+  using Background::at;
+  HostState at(double r, const TimeSlice& slice) const override;
   WindowBound bound(double t) const override;
-  WindowBound local_bound(const WindowBound& window, double t, double t_end, double r_lo, double r_hi) const override;
-  double bound_length(const WindowBound& window, double t) const override;
+  using Background::local_bound;
+  WindowBound local_bound(const WindowBound& window, const TimeSlice& now, double t_end, double r_lo,
+                          double r_hi) const override;
+  double bound_length(const TimeSlice& now, double r) const override;
   double t_first() const override { return 0.0; }
   double t_last() const override;
   std::size_t frame_count() const { return frames_.size(); }
@@ -109,9 +141,17 @@ class GridBackground final : public Background {
   static constexpr double extension_window_ratio = 1.0905077326652577;  // 2^(1/8)
 
  private:
-  /// Fields of frame k at x (with the ambient and hold rules), velocity and temperature times
-  /// the scale factors fu, fu².
-  HostState frame_at(std::size_t k, double x, double fu) const;
+  /// Cell pair (i, i+1) holding x (x_[i] <= x < x_[i+1]), or the first/last cell below/above the
+  /// grid (then `inside` is false); a direct index on a uniform grid, else a binary search.
+  struct Cell {
+    std::size_t i = 0;
+    double w = 0.0;  ///< weight of cell i+1
+    bool inside = false;
+  };
+  Cell locate(double x) const;
+  /// Fields of frame k in cell `c` (with the hold rules), velocity and temperature times the
+  /// scale factors fu, fu².
+  HostState frame_at(std::size_t k, const Cell& c, double fu) const;
   /// Per band of cell pairs (i, i+1): [max n chi] and [max n chi] × [max (|u| + c̄)] over the
   /// four nodes of frames k0 and k1; the last entry of each is the maximum over all bands.
   struct BandBounds {
@@ -122,12 +162,18 @@ class GridBackground final : public Background {
   double scale_at(const WindowBound& window, double t) const;
   int d_;
   std::vector<double> x_;
+  bool uniform_ = false;  // x_ equally spaced (the solvers' grids): locate() indexes directly
+  double x_step_inverse_ = 0.0;
   double edge_, n_inf_;
+  double phi_per_n_;                          // Ω_d a^d
+  std::vector<double> log_t_, log_scale_;     // per frame
+  std::vector<double> window_slope_inverse_;  // 1 / ln(t_{k+1}/t_k)
   std::vector<BackgroundFrame> frames_;
   ContactModel contact_;
   bool self_similar_after_;
   double n_chi_max_ = 0.0;
   std::size_t band_width_ = 1;            // cell pairs per band
+  std::vector<double> band_start_;        // x of each band's first centre, then x_.back()
   std::vector<BandBounds> window_bands_;  // [k]: frames k, k+1
   BandBounds first_bands_, last_bands_;   // frame 0 alone, the last frame alone
 };

@@ -37,18 +37,23 @@ class Random {
   double uniform_positive() { return 1.0 - uniform(); }
   /// Exponential deviate of unit mean.
   double exponential() { return -std::log(uniform_positive()); }
-  /// Standard normal deviate (Box–Muller; the second value is kept for the next call).
+  /// Standard normal deviate (Marsaglia's polar method, Marsaglia & Bray 1964, SIAM Rev. 6, 260:
+  /// one log and no sine per pair; the second value is kept for the next call).
   double normal() {
     if (has_spare_) {
       has_spare_ = false;
       return spare_;
     }
-    constexpr double two_pi = 6.283185307179586476925;
-    const double radius = std::sqrt(-2.0 * std::log(uniform_positive()));
-    const double angle = two_pi * uniform();
-    spare_ = radius * std::sin(angle);
+    double x, y, s;
+    do {
+      x = 2.0 * uniform() - 1.0;
+      y = 2.0 * uniform() - 1.0;
+      s = x * x + y * y;
+    } while (s >= 1.0 || s == 0.0);
+    const double factor = std::sqrt(-2.0 * std::log(s) / s);
+    spare_ = y * factor;
     has_spare_ = true;
-    return radius * std::cos(angle);
+    return x * factor;
   }
 
  private:

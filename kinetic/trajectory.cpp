@@ -65,35 +65,56 @@ void binary_collision(const md::Vec<D>& e, md::Vec<D>& v, md::Vec<D>& w, double 
   md::collide<D>(e, v, w, M, 1.0);  // dr = r_host − r_impurity ∥ e
 }
 
+namespace {
+/// The current segment of straight flight: until `t_end` (the target, the window's end, or a
+/// radial reach of a few grid bands) with one majorant over every radius reachable in it.
+struct Segment {
+  double t_end = 0.0;
+  double majorant = 0.0;
+};
+
+template <int D>
+Segment open_segment(const Background& background, const WindowBound& window, const TimeSlice& now, double S,
+                     const TracerState<D>& s, double t_target) {
+  const double speed = s.v.norm();
+  Segment segment;
+  segment.t_end = std::min(t_target, window.t_end);
+  const double radius0 = s.r.norm();
+  if (speed > 0.0) segment.t_end = std::min(segment.t_end, s.t + background.bound_length(now, radius0) / speed);
+  const double reach = speed * (segment.t_end - s.t);
+  const WindowBound local =
+      background.local_bound(window, now, segment.t_end, std::max(0.0, radius0 - reach), radius0 + reach);
+  segment.majorant = S * (local.n_chi_max * speed + local.flux_max);
+  return segment;
+}
+}  // namespace
+
 template <int D>
 void advance(const Background& background, const ImpurityModel& impurity, TracerState<D>& s, double t_target,
              Random& rng, TracerCounters& counters) {
   const double S = impurity.cross_section();
   WindowBound window = background.bound(s.t);
+  Segment segment = open_segment(background, window, background.slice(window, s.t), S, s, t_target);
   while (true) {
-    // A segment: until the target, the window's end, or a radial reach of a few grid bands; its
-    // majorant bounds the rate over every radius the impurity can reach in it (predictable, so
-    // recomputing it after every candidate keeps the thinning exact).
-    const double speed = s.v.norm();
-    double t_segment = std::min(t_target, window.t_end);
-    if (speed > 0.0) t_segment = std::min(t_segment, s.t + background.bound_length(window, s.t) / speed);
-    const double radius0 = s.r.norm(), reach = speed * (t_segment - s.t);
-    const WindowBound local =
-        background.local_bound(window, s.t, t_segment, std::max(0.0, radius0 - reach), radius0 + reach);
-    const double majorant = S * (local.n_chi_max * speed + local.flux_max);
+    // The majorant bounds the rate along the whole straight path of the segment, so it stays valid
+    // after a rejected candidate (the path is unchanged, the process memoryless) and is recomputed
+    // only when the velocity changes or the segment ends: the thinning stays exact.
+    const double majorant = segment.majorant;
     const double dt = majorant > 0.0 ? rng.exponential() / majorant : std::numeric_limits<double>::infinity();
-    if (s.t + dt >= t_segment) {  // memoryless: stop at the segment's end and redraw there
-      s.r += s.v * (t_segment - s.t);
-      s.t = t_segment;
-      if (t_segment >= t_target) return;
-      if (t_segment >= window.t_end) window = background.bound(s.t);
+    if (s.t + dt >= segment.t_end) {  // memoryless: stop at the segment's end and redraw there
+      s.r += s.v * (segment.t_end - s.t);
+      s.t = segment.t_end;
+      if (s.t >= t_target) return;
+      if (s.t >= window.t_end) window = background.bound(s.t);
+      segment = open_segment(background, window, background.slice(window, s.t), S, s, t_target);
       continue;
     }
     s.t += dt;
     s.r += s.v * dt;
     ++counters.candidates;
     const double radius = s.r.norm();
-    const HostState h = background.at(radius, s.t, window);
+    const TimeSlice now = background.slice(window, s.t);
+    const HostState h = background.at(radius, now);
     const md::Vec<D> u = radius > 0.0 ? md::Vec<D>((h.u / radius) * s.r) : md::Vec<D>::Zero();
     const double relative_speed = (s.v - u).norm();
     const double mean_speed = host_mean_speed(D, h.T);
@@ -112,6 +133,7 @@ void advance(const Background& background, const ImpurityModel& impurity, Tracer
     binary_collision<D>(e, s.v, w, impurity.M);
     ++s.collisions;
     ++counters.collisions;
+    segment = open_segment(background, window, now, S, s, t_target);
   }
 }
 

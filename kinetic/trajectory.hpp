@@ -3,8 +3,9 @@
 // exact null-collision (majorant, "thinning") sampling: free flight between collisions; candidate
 // collisions at the majorant rate Λ = S (A |v| + B), S the total cross-section, A >= n chi and
 // B >= n chi (|u| + c̄(T)) over the radii the impurity can reach in the current segment (a few
-// radial bands of the background grid, inside one time window; recomputed after every candidate,
-// which keeps Λ predictable and the thinning exact); a candidate at
+// radial bands of the background grid, inside one time window, along the segment's straight path;
+// recomputed when the velocity changes or the segment ends, so Λ is predictable and the thinning
+// exact); a candidate at
 // (r, t) is accepted with probability ν(r, v, t)/Λ, ν = n chi S E_w|v − w| the exact local rate of
 // the kernel |(w − v)·e|, and the host velocity w is then distributed as |v − w| F(w) and the impact
 // direction e as (g·e)_+ (g = v − w). No time step: exact in time (docs/kinetic.md).

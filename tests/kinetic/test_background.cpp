@@ -9,10 +9,12 @@
 using namespace coldblast::kinetic;
 
 namespace {
-/// Frames with n = 1 + x + ln t, u = 2x, T = 1 + x (scale = t^(1/2)).
-GridBackground linear_background(bool self_similar_after, bool enskog = false) {
+/// Frames with n = 1 + x + ln t, u = 2x, T = 1 + x (scale = t^(1/2)) on 50 centres in [0.01, 0.99]:
+/// equally spaced (located by index) or stretched, refined at the centre like the Navier–Stokes
+/// grid (located by binary search).
+GridBackground linear_background(bool self_similar_after, bool enskog = false, bool stretched = false) {
   std::vector<double> x;
-  for (int i = 0; i < 50; ++i) x.push_back(0.01 + 0.02 * i);
+  for (int i = 0; i < 50; ++i) x.push_back(stretched ? 0.01 + 0.98 * std::pow(i / 49.0, 1.5) : 0.01 + 0.02 * i);
   std::vector<BackgroundFrame> frames;
   for (const double t : {1.0, 2.0, 4.0, 8.0}) {
     BackgroundFrame f{t, std::sqrt(t), {}, {}, {}};
@@ -28,12 +30,13 @@ GridBackground linear_background(bool self_similar_after, bool enskog = false) {
 }  // namespace
 
 TEST_CASE("grid background: bilinear interpolation in x and ln t is exact for linear fields") {
-  const GridBackground bg = linear_background(false);
+  const bool stretched = GENERATE(false, true);
+  const GridBackground bg = linear_background(false, false, stretched);
   for (const double t : {1.0, 1.5, 3.0, 7.9}) {
     const WindowBound w = bg.bound(t);
     REQUIRE(w.t_begin <= t);
     REQUIRE(t < w.t_end);
-    for (const double x : {0.02, 0.5, 0.97}) {
+    for (const double x : {0.02, 0.03, 0.05, 0.29, 0.5, 0.97, 0.99}) {  // 0.03, 0.05: centres of the even grid
       const HostState h = bg.at(x * std::sqrt(t), t, w);
       CHECK(h.n == Approx(1 + x + std::log(t)).epsilon(1e-12));
       CHECK(h.u == Approx(2 * x).epsilon(1e-12));
@@ -80,9 +83,26 @@ TEST_CASE("grid background: the majorant bounds hold at random points of every w
   }
 }
 
+TEST_CASE("grid background: a segment's reach is two widths of the band at the impurity's radius") {
+  // 50 centres give bands of one cell pair each (band width max(1, 50/64)).
+  const GridBackground bg = linear_background(false, false, true);
+  const double t = 3.0, scale = std::sqrt(t);
+  const TimeSlice now = bg.slice(bg.bound(t), t);
+  CHECK(now.scale == Approx(scale).epsilon(1e-14));
+  for (const int i : {0, 1, 20, 48}) {
+    const double x_i = 0.01 + 0.98 * std::pow(i / 49.0, 1.5), x_next = 0.01 + 0.98 * std::pow((i + 1) / 49.0, 1.5);
+    CHECK(bg.bound_length(now, scale * (0.3 * x_i + 0.7 * x_next)) ==
+          Approx(2 * scale * (x_next - x_i)).epsilon(1e-12));
+  }
+  // Refined at the centre: the reach there is shorter than at the edge.
+  CHECK(bg.bound_length(now, 0.0) < 0.1 * bg.bound_length(now, 0.98 * scale));
+  CHECK(bg.bound_length(now, 0.0) > 0.0);
+  CHECK(bg.bound_length(now, 5.0 * scale) > 0.0);  // beyond the grid: the last band's width
+}
+
 TEST_CASE("grid background: local bounds hold for every radius reachable in the segment") {
   for (const bool enskog : {false, true}) {
-    const GridBackground bg = linear_background(true, enskog);
+    const GridBackground bg = linear_background(true, enskog, enskog);  // the dense case on the stretched grid
     Random rng(2, enskog);
     for (int i = 0; i < 20000; ++i) {
       const double t = std::exp(-3 + 6 * rng.uniform());
