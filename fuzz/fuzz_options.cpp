@@ -111,7 +111,8 @@ void compare_flags(const std::vector<std::string>& v) {
 void equilibrium_flags(const std::vector<std::string>& v) {
   md::EquilibriumConfig c;
   if (!(flag(v, 0, c.d) && flag(v, 1, c.phi) && flag(v, 2, c.particles) && flag(v, 3, c.collisions) &&
-        flag(v, 4, c.blocks) && flag(v, 5, c.seed) && flag(v, 6, c.queue)))
+        flag(v, 4, c.blocks) && flag(v, 5, c.seed) && flag(v, 6, c.queue) && flag(v, 7, c.diffusion_lag) &&
+        flag(v, 8, c.diffusion_windows)))
     return;
   fuzz::expect_clean([&] { c.validate(); });
 }
@@ -196,7 +197,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       compare_flags(lines_of(text, 7));
       break;
     case 10:
-      equilibrium_flags(lines_of(text, 7));
+      equilibrium_flags(lines_of(text, 9));
       break;
     case 11:
       tracer_flags(lines_of(text, 10));
