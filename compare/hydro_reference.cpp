@@ -19,24 +19,42 @@ HydroReference::HydroReference(hydro::NavierStokesResult result) : result_(std::
 
 void HydroReference::build_collision_exponents() {
   // C(t) ∝ ∫_0^t n0 √T0 dt' (Eq. (24) [C-imp-long] argument with τ = 1/(n0 a^{d-1} √T0)). The
-  // solver starts at R/λ ~ 1 from a hot central region whose early transient is not the MD's,
-  // so the part before the first sample is the asymptotic power law t0 f(t0)/(1 + β), β the exact
-  // exponent of f = n0 √T0 (2D: -3/5); the rest is the trapezoid rule in ln t.
+  // solver starts at R/λ = 2 from a hot central region whose early transient is not the MD's, so
+  // the integral is anchored at the fixed R/λ = collision_anchor_R_over_lambda (the tracer's first
+  // frame): the part before it is the asymptotic power law t_a f(t_a)/(1 + β), β the exact exponent
+  // of f = n0 √T0 (2D: -3/5), with t_a and f(t_a) interpolated in ln t between the samples around
+  // it; the rest is the trapezoid rule in ln t. The anchor does not depend on where the sample plan
+  // puts its samples (that moves with the run's end, hydro/navier_stokes.cpp output_plan), so the
+  // exponent at a given R/λ does not depend on how far the solver runs (docs/hydro.md).
   const auto& s = result_.samples;
-  std::vector<double> f(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) f[i] = s[i].n0 * std::sqrt(s[i].T0);
+  const double anchor = std::log(collision_anchor_R_over_lambda);
+  std::size_t k = 1;  // the samples k-1, k bracket the anchor
+  while (k < s.size() && std::log(s[k].R_over_lambda) < anchor) ++k;
+  if (k == s.size() || !(std::log(s[0].R_over_lambda) <= anchor))
+    throw std::invalid_argument("hydro reference: the samples do not span R/lambda = " +
+                                std::to_string(collision_anchor_R_over_lambda) + ", the collision integral's anchor");
+  std::vector<double> g(s.size());  // ln(t f) = ln(t n0 √T0), interpolated linearly in ln(R/λ)
+  for (std::size_t i = 0; i < s.size(); ++i) g[i] = std::log(s[i].t * s[i].n0 * std::sqrt(s[i].T0));
+  const double x0 = std::log(s[k - 1].R_over_lambda), x1 = std::log(s[k].R_over_lambda);
+  const double w = (anchor - x0) / (x1 - x0);
+  const double ln_t_anchor = (1 - w) * std::log(s[k - 1].t) + w * std::log(s[k].t);
+  const double g_anchor = (1 - w) * g[k - 1] + w * g[k];
   const auto exact = theory::scaling_exponents(result_.config.physics.d);
   const double beta = theory::to_double(exact.n0.in_time + exact.T0.in_time / 2);
-  double C = s[0].t * f[0] / (1.0 + beta);
+  const double C_anchor = std::exp(g_anchor) / (1.0 + beta);
+  // C at every sample: the trapezoid rule in ln t from the anchor, forward and backward.
+  std::vector<double> C(s.size());
+  C[k] = C_anchor + 0.5 * (std::log(s[k].t) - ln_t_anchor) * (std::exp(g_anchor) + std::exp(g[k]));
+  C[k - 1] = C_anchor - 0.5 * (ln_t_anchor - std::log(s[k - 1].t)) * (std::exp(g[k - 1]) + std::exp(g_anchor));
+  for (std::size_t i = k + 1; i < s.size(); ++i)
+    C[i] = C[i - 1] + 0.5 * std::log(s[i].t / s[i - 1].t) * (std::exp(g[i]) + std::exp(g[i - 1]));
+  for (std::size_t i = k - 1; i-- > 0;)
+    C[i] = C[i + 1] - 0.5 * std::log(s[i + 1].t / s[i].t) * (std::exp(g[i + 1]) + std::exp(g[i]));
   log_R_over_lambda_.clear();
   collision_exponent_.clear();
   for (std::size_t i = 0; i < s.size(); ++i) {
-    if (i > 0) {
-      const double h = std::log(s[i].t / s[i - 1].t);
-      C += 0.5 * h * (s[i].t * f[i] + s[i - 1].t * f[i - 1]);
-    }
     log_R_over_lambda_.push_back(std::log(s[i].R_over_lambda));
-    collision_exponent_.push_back(s[i].t * f[i] / C);  // d ln C / d ln t
+    collision_exponent_.push_back(std::exp(g[i]) / C[i]);  // d ln C / d ln t
   }
 }
 

@@ -10,6 +10,10 @@
 
 namespace coldblast::compare {
 
+/// R/λ at which the collision integral ∫ n0 √T0 dt is anchored to its asymptotic power law: the
+/// tracer's first frame (kinetic/), independent of the NS sample plan.
+constexpr double collision_anchor_R_over_lambda = 2.5;
+
 class HydroReference {
  public:
   /// Runs the conduction-only core solver for dimension d up to R/λ = until (>= 10).
