@@ -74,15 +74,21 @@ void print_table(const compare::CompareResult& result) {
     std::printf("\namplitudes at t = %g (R/lambda = %.2f) against %s:\n",
                 result.amplitudes.empty() ? 0.0 : result.amplitudes[0].t, result.continuum->R_over_lambda_last,
                 result.continuum->model.describe().c_str());
-    std::printf("%-10s %-24s %-12s %9s %8s  %s\n", "quantity", "MD", "NS", "MD/NS-1", "dev/sig", "verdict");
+    std::printf("%-10s %-20s %-20s %9s %8s %7s  %s\n", "quantity", "MD", "NS", "MD/NS-1", "dev/sig", "bound",
+                "verdict");
     for (const auto& a : result.amplitudes) {
-      char measured[64];
+      char measured[64], reference[64];
       std::snprintf(measured, sizeof measured, "%.5g±%.2g", a.measured, a.error);
-      std::printf("%-10s %-24s %-12.5g %+8.1f%% %+8.2f  %s\n", a.name.c_str(), measured, a.reference,
-                  100 * a.relative_difference, a.deviation_sigma, a.pass ? "pass" : "FAIL");
+      std::snprintf(reference, sizeof reference, "%.5g±%.2g", a.reference, a.reference_error);
+      std::printf("%-10s %-20s %-20s %+8.2f%% %+8.2f %6.2g%%  %s\n", a.name.c_str(), measured, reference,
+                  100 * a.relative_difference, a.deviation_sigma, 100 * a.continuum_bound,
+                  compare::to_string(a.outcome).c_str());
     }
+    std::printf(
+        "(sigma combines the MD error and the NS value's numerical error; a miss is beyond k sigma but within\n"
+        " the bound, the first order NS drops: Kn^2 in the core, lambda/R at the shock; docs/compare.md)\n");
   }
-  std::printf("\nverdict: %s\n", result.pass ? "PASS" : "FAIL");
+  std::printf("\nverdict: %s\n", compare::verdict_summary(result).c_str());
 }
 
 /// The Navier-Stokes model of --against hydro: --hydro-config's [hydro] keys, then the flags (which
@@ -119,7 +125,7 @@ void run(CompareOptions& options) {
     print_json(compare::verdict_json(result));
   else
     print_table(result);
-  if (!result.pass) throw ExitStatus{3};
+  if (!result.pass && !result.miss) throw ExitStatus{3};  // a continuum miss is a measured result: exit 0
 }
 
 }  // namespace

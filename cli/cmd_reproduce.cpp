@@ -19,14 +19,15 @@ struct ReproduceOptions {
 };
 
 void print_verdict(const char* name, const compare::CompareResult& result) {
-  std::printf("\nagainst %-6s: %s\n", name, result.pass ? "PASS" : "FAIL");
+  std::printf("\nagainst %-6s: %s\n", name, compare::verdict_summary(result).c_str());
   for (const auto& v : result.observables)
     std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma)  %s\n", v.name.c_str(),
                 v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error, v.deviation_sigma,
                 v.pass ? "pass" : "FAIL");
   for (const auto& a : result.amplitudes)
-    std::printf("  %-9s MD = %.4g ± %.2g  NS = %.4g  (%+.1f %%, %+.1f sigma)  %s\n", a.name.c_str(), a.measured,
-                a.error, a.reference, 100 * a.relative_difference, a.deviation_sigma, a.pass ? "pass" : "FAIL");
+    std::printf("  %-9s MD = %.4g ± %.2g  NS = %.4g ± %.2g  (%+.1f %%, %+.1f sigma, bound %.2g %%)  %s\n",
+                a.name.c_str(), a.measured, a.error, a.reference, a.reference_error, 100 * a.relative_difference,
+                a.deviation_sigma, 100 * a.continuum_bound, compare::to_string(a.outcome).c_str());
 }
 
 void run(ReproduceOptions& options) {

@@ -115,12 +115,27 @@ double shell_integral(double lo, double hi, int d, F f) {
   return sum * (hi - lo) / steps;
 }
 
-// The MD's definitions (docs/compare.md, "Amplitudes") applied to one NS profile (E = n∞ = λ = 1).
+// The shell averages of n over the absolute shells [edges[b], edges[b+1]) × scale × R.
+std::vector<double> binned_profile_density(const hydro::NavierStokesProfile& p, int d,
+                                           const std::vector<double>& bin_edges, double scale) {
+  const auto n = [&](double r) { return interpolate(p.r, p.density, r); };
+  std::vector<double> density;
+  for (std::size_t b = 0; b + 1 < bin_edges.size(); ++b) {
+    const double lo = bin_edges[b] * scale * p.R, hi = bin_edges[b + 1] * scale * p.R;
+    density.push_back(shell_integral(lo, hi, d, n) * d / (std::pow(hi, d) - std::pow(lo, d)));
+  }
+  return density;
+}
+
+// The MD's definitions (docs/compare.md, "Amplitudes") applied to one NS profile (E = n∞ = λ = 1),
+// in the MD's units: `scale` = R_MD/R_NS, so the MD's r/R_MD shells are the absolute shells
+// edges × scale × R_NS, H and the front come out in units of R_MD, and T0 is over Ṙ_MD² =
+// (scale Ṙ_NS)². With scale = 1 every amplitude is in the NS's own units.
 ContinuumAmplitudes profile_amplitudes(const hydro::NavierStokesProfile& p, int d, double ball_over_lambda,
-                                       const std::vector<double>& bin_edges) {
+                                       const std::vector<double>& bin_edges, double scale = 1.0) {
   ContinuumAmplitudes a;
   a.R_over_lambda = p.R;
-  const double Rdot = theory::shock_speed_at(d, p.R, p.t);  // Eq. (1) form, as for the MD
+  const double Rdot = scale * theory::shock_speed_at(d, p.R, p.t);  // Eq. (1) form, as for the MD
   const auto n = [&](double r) { return interpolate(p.r, p.density, r); };
   const auto u = [&](double r) { return interpolate(p.r, p.velocity, r); };
   const auto T = [&](double r) { return interpolate(p.r, p.temperature, r); };
@@ -132,15 +147,13 @@ ContinuumAmplitudes profile_amplitudes(const hydro::NavierStokesProfile& p, int 
   a.n0_over_n = particles * d / std::pow(ball_over_lambda, d);
   a.T0_over_Rdot2 = energy / particles / (Rdot * Rdot);
   a.A = theory::shock_amplitude(d, 1.0, 1.0, p.t, p.R);  // Eq. (1) with E = n∞ = 1
-  // Core size: the MD's bins (shell averages of n over r/R bins), then the shared crossing rule.
-  std::vector<double> centre, density, zero;
-  for (std::size_t b = 0; b + 1 < bin_edges.size(); ++b) {
-    const double lo = bin_edges[b] * p.R, hi = bin_edges[b + 1] * p.R;
-    centre.push_back(0.5 * (bin_edges[b] + bin_edges[b + 1]));
-    density.push_back(shell_integral(lo, hi, d, n) * d / (std::pow(hi, d) - std::pow(lo, d)));
-    zero.push_back(0.0);
-  }
+  // Core size and shock front: the MD's shells, then the shared crossing rules on the MD's centres.
+  std::vector<double> centre;
+  for (std::size_t b = 0; b + 1 < bin_edges.size(); ++b) centre.push_back(0.5 * (bin_edges[b] + bin_edges[b + 1]));
+  const std::vector<double> density = binned_profile_density(p, d, bin_edges, scale);
+  const std::vector<double> zero(density.size(), 0.0);
   a.H_over_R = binned_core_size(centre, density, zero).H_over_R;
+  a.front_over_R = binned_front_radius(centre, density, zero).H_over_R;
   a.bin_centres = centre;
   a.binned_density = density;
   const double T_centre = p.temperature.front();
@@ -209,7 +222,7 @@ ProfileCurve ns_curve(const hydro::NavierStokesProfile& p, int d, ProfileCurve::
 
 // Profiles are requested at R_ref/λ = x e^{±0.03 k}; the measured R/λ of each differs slightly
 // from R_ref/λ, so amplitudes are interpolated linearly in ln(R/λ) at the MD's own x.
-const int profile_offsets = 3;
+const int profile_offsets = 5;  // ±15 %: room for R_MD/R_NS at early --until times
 const double profile_step = 0.03;
 
 std::vector<double> profile_targets(double x) {
@@ -232,10 +245,19 @@ const hydro::NavierStokesProfile& nearest_profile(const hydro::NavierStokesResul
   return *best;
 }
 
+// The scalar amplitudes, for interpolation and error estimates field by field.
+constexpr double ContinuumAmplitudes::*scalar_fields[] = {
+    &ContinuumAmplitudes::n0_over_n, &ContinuumAmplitudes::T0_over_Rdot2,        &ContinuumAmplitudes::A,
+    &ContinuumAmplitudes::H_over_R,  &ContinuumAmplitudes::H_temperature_over_R, &ContinuumAmplitudes::front_over_R};
+
+// The amplitudes at R/λ = x, linear in ln(R/λ) between the two profiles around x. `reading`, when
+// given, receives |linear − quadratic| per field (the quadratic through those two and the next
+// nearest profile): the error of reading the NS value at x.
 ContinuumAmplitudes interpolated_amplitudes(const hydro::NavierStokesResult& ns, int d, double x, double ball,
-                                            const std::vector<double>& edges) {
+                                            const std::vector<double>& edges, double scale = 1.0,
+                                            ContinuumAmplitudes* reading = nullptr) {
   std::vector<ContinuumAmplitudes> list;
-  for (const auto* p : requested_profiles(ns)) list.push_back(profile_amplitudes(*p, d, ball, edges));
+  for (const auto* p : requested_profiles(ns)) list.push_back(profile_amplitudes(*p, d, ball, edges, scale));
   std::size_t i = 1;
   while (i + 1 < list.size() && list[i].R_over_lambda < x) ++i;
   const ContinuumAmplitudes &lo = list[i - 1], &hi = list[i];
@@ -243,14 +265,20 @@ ContinuumAmplitudes interpolated_amplitudes(const hydro::NavierStokesResult& ns,
   const auto mix = [w](double a, double b) { return (1 - w) * a + w * b; };
   ContinuumAmplitudes a;
   a.R_over_lambda = x;
-  a.n0_over_n = mix(lo.n0_over_n, hi.n0_over_n);
-  a.T0_over_Rdot2 = mix(lo.T0_over_Rdot2, hi.T0_over_Rdot2);
-  a.A = mix(lo.A, hi.A);
-  a.H_over_R = mix(lo.H_over_R, hi.H_over_R);
-  a.H_temperature_over_R = mix(lo.H_temperature_over_R, hi.H_temperature_over_R);
+  for (auto field : scalar_fields) a.*field = mix(lo.*field, hi.*field);
   a.bin_centres = lo.bin_centres;
   for (std::size_t b = 0; b < lo.binned_density.size(); ++b)
     a.binned_density.push_back(mix(lo.binned_density[b], hi.binned_density[b]));
+  if (reading && list.size() >= 3) {
+    // the third point: the neighbour on the side of x's nearer end, inside the list
+    const std::size_t k = (i + 1 < list.size() && (w > 0.5 || i < 2)) ? i + 1 : i - 2;
+    const double u0 = std::log(lo.R_over_lambda), u1 = std::log(hi.R_over_lambda), u2 = std::log(list[k].R_over_lambda),
+                 u = std::log(x);
+    const double l0 = (u - u1) * (u - u2) / ((u0 - u1) * (u0 - u2)), l1 = (u - u0) * (u - u2) / ((u1 - u0) * (u1 - u2)),
+                 l2 = (u - u0) * (u - u1) / ((u2 - u0) * (u2 - u1));
+    for (auto field : scalar_fields)
+      reading->*field = std::abs(l0 * lo.*field + l1 * hi.*field + l2 * list[k].*field - a.*field);
+  }
   return a;
 }
 
@@ -265,6 +293,35 @@ double ball_radius_over_lambda(const RunData& run) {
 }
 
 }  // namespace
+
+double md_over_ns_radius(const RunData& run, double A, double t) {
+  const double E = run.summary.at("E").get<double>(), n = run.summary.at("n").get<double>();
+  return md_R_over_lambda(run, t) * run.summary.at("lambda").get<double>() / theory::shock_radius(run.d, E, n, A, t);
+}
+
+CoreSize binned_front_radius(const std::vector<double>& r_centre, const std::vector<double>& density,
+                             const std::vector<double>& density_error) {
+  CoreSize front{NAN, NAN};
+  if (density.size() < 3) return front;
+  const std::size_t p = static_cast<std::size_t>(std::max_element(density.begin(), density.end()) - density.begin());
+  std::size_t j = p + 1;
+  while (j < density.size() && density[j] >= 0.5 * (density[p] + 1.0)) ++j;
+  if (j >= density.size()) return front;
+  // Linear between the centres of bins j-1 and j at the level (n_p + 1)/2; bin j-1 may be the peak.
+  const auto crossing = [&](double n_p, double n_a, double n_b) {
+    if (j - 1 == p) n_a = n_p;
+    return r_centre[j - 1] + (n_a - 0.5 * (n_p + 1.0)) / (n_a - n_b) * (r_centre[j] - r_centre[j - 1]);
+  };
+  const double n_p = density[p], n_a = density[j - 1], n_b = density[j];
+  front.H_over_R = crossing(n_p, n_a, n_b);
+  const double h = 1e-6 * n_p;
+  const double d_p = (crossing(n_p + h, n_a, n_b) - crossing(n_p - h, n_a, n_b)) / (2 * h);
+  const double d_a = j - 1 == p ? 0.0 : (crossing(n_p, n_a + h, n_b) - crossing(n_p, n_a - h, n_b)) / (2 * h);
+  const double d_b = (crossing(n_p, n_a, n_b + h) - crossing(n_p, n_a, n_b - h)) / (2 * h);
+  front.error = std::sqrt(std::pow(d_p * density_error[p], 2) + std::pow(d_a * density_error[j - 1], 2) +
+                          std::pow(d_b * density_error[j], 2));
+  return front;
+}
 
 CoreSize binned_core_size(const std::vector<double>& r_centre, const std::vector<double>& density,
                           const std::vector<double>& density_error) {
@@ -305,7 +362,19 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   reference->ns = solve_hydro_model(run.d, model, end, cells, targets);
   const double ball = ball_radius_over_lambda(run);
   const std::vector<double> edges = md_bin_edges(run);
-  reference->amplitudes = interpolated_amplitudes(reference->ns, run.d, x, ball, edges);
+  // The NS at the MD's last time t, measured in the MD's units: R_NS(t) is Eq. (1) with the NS's own
+  // A, scale = R_MD/R_NS(t) (+0.4 % on campaign 1, the two shock-radius definitions), so the NS
+  // profile is the one at R_NS/λ = x/scale, with the MD's ball, its absolute shells and its Ṙ.
+  const double A = interpolated_amplitudes(reference->ns, run.d, x, ball, edges).A;
+  const double scale = md_over_ns_radius(run, A, t_last);
+  ContinuumAmplitudes reading;
+  reference->amplitudes = interpolated_amplitudes(reference->ns, run.d, x / scale, ball, edges, scale, &reading);
+  // The NS's own numerical error: the grid (2 × cells, to the MD's R/λ only) and the reading.
+  const int other_cells = cells <= 50000 ? 2 * cells : cells / 2;  // within hydro's [16, 100000]
+  const hydro::NavierStokesResult fine = solve_hydro_model(run.d, model, std::max(20.0, 1.5 * x), other_cells, targets);
+  const ContinuumAmplitudes grid = interpolated_amplitudes(fine, run.d, x / scale, ball, edges, scale);
+  for (auto field : scalar_fields)
+    reference->errors.*field = std::hypot(grid.*field - reference->amplitudes.*field, reading.*field);
 
   auto& curves = reference->profiles;
   const std::string at = ", R/{/Symbol l} = " + common::format_number(std::round(x * 10) / 10);

@@ -56,15 +56,21 @@ struct ProfileCurve {
   std::vector<double> r_over_R, density, velocity, temperature;
 };
 
-/// The MD run's core amplitudes as the continuum predicts them at the MD's R/λ, with the
-/// definitions of docs/compare.md ("Amplitudes") applied to the NS profile exactly as to the MD.
+/// The MD run's amplitudes as the continuum predicts them at the MD's last time t, with the
+/// definitions of docs/compare.md ("Amplitudes") applied to the NS profile exactly as to the MD and
+/// in the MD's units: its n0 ball, its absolute r/R_MD shells and its Ṙ = 2R_MD/((d+2)t). (At the
+/// same t the two blasts' shared shock fronts agree to 0.013 % on campaign 1, so this is also the
+/// same R/λ under one definition.)
 struct ContinuumAmplitudes {
-  double R_over_lambda = 0;
+  double R_over_lambda = 0;         ///< the NS's own R/λ at t (its conservative front)
   double n0_over_n = 0;             ///< particles per volume in the MD's n0 ball, / n∞
-  double T0_over_Rdot2 = 0;         ///< (2/d) kinetic energy per particle in that ball / Ṙ²
+  double T0_over_Rdot2 = 0;         ///< (2/d) kinetic energy per particle in that ball / Ṙ_MD²
   double A = 0;                     ///< E t²/(n∞ R^{d+2}) of the NS blast at that R/λ
-  double H_over_R = 0;              ///< core size: binned density reaches twice its innermost bin
+  double H_over_R = 0;              ///< core size in r/R_MD: binned density reaches twice its innermost bin
   double H_temperature_over_R = 0;  ///< NS's own core radius (T falls to T0/2), for information
+  /// Shock front under the shared binned rule (binned_front_radius) on the NS density averaged over
+  /// the MD's absolute shells, in units of R_MD
+  double front_over_R = 0;
   /// n/n∞ averaged over each of the MD's r/R bins (centres in bin_centres): the profile residuals
   std::vector<double> bin_centres, binned_density;
 };
@@ -75,12 +81,17 @@ struct ContinuumReference {
   double R_over_lambda_last = 0;                       ///< the MD's R/λ at its last recorded time
   hydro::NavierStokesResult ns;                        ///< the model's blast, with a profile at R_over_lambda_last
   std::optional<hydro::NavierStokesResult> ns_dilute;  ///< the dilute blast when `model` is not dilute
-  ContinuumAmplitudes amplitudes;                      ///< of `ns` at R_over_lambda_last
+  ContinuumAmplitudes amplitudes;                      ///< of `ns` at the MD's last time, in its units
+  /// The numerical error of each NS amplitude (same fields): the change from `cells` to 2 `cells`
+  /// and, in quadrature, the error of reading it at the MD's R/λ (linear against quadratic
+  /// interpolation in ln(R/λ) between the profiles); 0 where not computed
+  ContinuumAmplitudes errors;
   std::vector<ProfileCurve> profiles;  ///< TvNS ideal, TvNS(φ), NS dilute, NS model (absent ones left out)
 };
 
 /// Solves the continuum for `run`: the model's NS from R/λ = 2 to max(20, 1.5 R/λ_last, until),
-/// the dilute NS to max(20, 1.5 R/λ_last) when the model is not dilute, and the TvNS profiles. `cells` as
+/// the same at 2 `cells` to max(20, 1.5 R/λ_last) for the amplitudes' grid error, the dilute NS to
+/// max(20, 1.5 R/λ_last) when the model is not dilute, and the TvNS profiles. `cells` as
 /// CompareConfig::hydro_cells. Throws std::invalid_argument if the run has no λ or R/λ ≤ 2.
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
                                                           double until = 0.0);
@@ -90,12 +101,22 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
 hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
                                             std::vector<double> profile_R_over_lambda = {});
 
+/// R_MD/R_NS at the MD's time t: the MD's shock radius over Eq. (1) with the NS blast's amplitude A.
+double md_over_ns_radius(const RunData& run, double A, double t);
+
 /// Core size from a binned density profile (the MD's profiles.csv bins): the r/R at which the
 /// density first reaches twice its value in the innermost bin, linear between bin centres, with
 /// the error propagated from per-bin errors (bins taken as independent). NaN if never reached.
 struct CoreSize {
   double H_over_R = 0, error = 0;
 };
+/// Shock front from a binned density profile in units of n∞ (the MD's profiles.csv bins): the r/R
+/// beyond the densest bin at which the density first falls to the midpoint (n_peak + 1)/2 of the
+/// peak and the gas ahead, linear between bin centres, with the error propagated from per-bin
+/// errors (bins independent). One definition for the MD and the NS profile averaged over the same
+/// absolute shells (docs/compare.md, "Amplitudes"). NaN if it never falls that far.
+CoreSize binned_front_radius(const std::vector<double>& r_centre, const std::vector<double>& density,
+                             const std::vector<double>& density_error);
 CoreSize binned_core_size(const std::vector<double>& r_centre, const std::vector<double>& density,
                           const std::vector<double>& density_error);
 

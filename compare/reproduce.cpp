@@ -104,21 +104,24 @@ std::string top_report(const ReproduceResult& r) {
   const std::pair<const char*, const CompareResult*> comparisons[] = {
       {"theory", &r.against_theory}, {"paper", &r.against_paper}, {"hydro", &r.against_hydro}};
   for (const auto& [name, result] : comparisons) {
-    md << "## Against " << name << ": " << (result->pass ? "PASS" : "FAIL") << "\n\n"
-       << "| observable | alpha_T | reference | alpha_S (last two times) | deviation / sigma | verdict |\n"
+    md << "## Against " << name << ": " << verdict_word(*result) << "\n\n";
+    if (!result->pass) md << verdict_summary(*result) << "\n\n";
+    md << "| observable | alpha_T | reference | alpha_S (last two times) | deviation / sigma | verdict |\n"
        << "|---|---|---|---|---|---|\n"
        << verdict_rows(*result);
     for (const auto& note : result->notes) md << "\n- " << note << "\n";
     if (!result->amplitudes.empty()) {
       md << "\nAmplitudes at t = " << common::format_number(result->amplitudes[0].t) << " against "
          << result->continuum->model.describe()
-         << " at the same R/λ:\n\n| quantity | MD ± error | NS | MD/NS − 1 | (MD − NS)/δ_MD | verdict |\n"
-            "|---|---|---|---|---|---|\n";
+         << " at the same R/λ (σ combines the MD error and the NS numerical error δ_NS; a miss is beyond k σ but "
+            "within the bound, the first order NS drops):\n\n"
+            "| quantity | MD ± error | NS ± δ_NS | MD/NS − 1 | (MD − NS)/σ | bound | verdict |\n"
+            "|---|---|---|---|---|---|---|\n";
       char row[300];
       for (const auto& a : result->amplitudes) {
-        std::snprintf(row, sizeof row, "| %s | %.5g ± %.2g | %.5g | %+.1f %% | %+.1f | %s |\n", a.name.c_str(),
-                      a.measured, a.error, a.reference, 100 * a.relative_difference, a.deviation_sigma,
-                      a.pass ? "pass" : "**fail**");
+        std::snprintf(row, sizeof row, "| %s | %.5g ± %.2g | %.5g ± %.2g | %+.1f %% | %+.1f | %.2g %% | %s |\n",
+                      a.name.c_str(), a.measured, a.error, a.reference, a.reference_error, 100 * a.relative_difference,
+                      a.deviation_sigma, 100 * a.continuum_bound, to_string(a.outcome).c_str());
         md << row;
       }
     }

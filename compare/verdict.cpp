@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "common/validate.hpp"
@@ -104,9 +105,42 @@ CompareResult run_compare(const CompareConfig& config, std::shared_ptr<const Con
   result.continuum = std::move(continuum);
   if (config.against == Reference::hydro) {
     result.amplitudes = amplitude_verdicts(result.run, *result.continuum, config.sigma);
-    for (const auto& a : result.amplitudes) result.pass = result.pass && a.pass;
+    const bool exponents_pass = result.pass;
+    bool any_miss = false, any_fail = false;
+    for (const auto& a : result.amplitudes) {
+      result.pass = result.pass && a.pass;
+      any_miss = any_miss || a.outcome == AmplitudeOutcome::miss;
+      any_fail = any_fail || a.outcome == AmplitudeOutcome::fail;
+    }
+    result.miss = exponents_pass && any_miss && !any_fail;
   }
   return result;
+}
+
+std::string verdict_word(const CompareResult& result) {
+  return result.pass ? "PASS" : result.miss ? "MISS" : "FAIL";
+}
+
+std::string verdict_summary(const CompareResult& result) {
+  std::string text = verdict_word(result);
+  if (result.pass) return text;
+  std::string details;
+  char item[240];
+  for (const auto& v : result.observables)
+    if (!v.pass) {
+      std::snprintf(item, sizeof item, "%s exponent %+.3f off (%+.1f sigma)", v.name.c_str(),
+                    v.alpha_measured - v.alpha_reference, v.deviation_sigma);
+      details += (details.empty() ? "" : "; ") + std::string(item);
+    }
+  for (const auto& a : result.amplitudes)
+    if (!a.pass) {
+      std::snprintf(item, sizeof item, "%s %s %+.2g %% (%+.1f sigma; continuum bound %.2g %%)", a.name.c_str(),
+                    a.outcome == AmplitudeOutcome::miss ? "missed by" : "FAILED by", 100 * a.relative_difference,
+                    a.deviation_sigma, 100 * a.continuum_bound);
+      details += (details.empty() ? "" : "; ") + std::string(item);
+    }
+  if (result.miss) text += " (a measured continuum miss beyond the errors, not a bug)";
+  return text + ": " + details;
 }
 
 std::vector<std::string> default_observables(const RunData& run, Reference against, std::vector<std::string>& notes) {

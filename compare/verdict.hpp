@@ -83,11 +83,20 @@ struct CompareResult {
   /// Observables recorded but deliberately not judged, with the reason (u_imp against theory/hydro).
   std::vector<std::string> notes;
   bool pass = false;  ///< every exponent and amplitude verdict passes
+  /// Not every verdict passes, but the only ones that do not are amplitude misses (a measured
+  /// continuum miss beyond the errors, within the first order NS drops; AmplitudeOutcome::miss)
+  bool miss = false;
   RunData run;
   /// The continuum solved for this run (hydro: always; else when a report drew the profiles);
   /// shared so that the reports of one `reproduce` use one solve.
   std::shared_ptr<const ContinuumReference> continuum;
 };
+
+/// "PASS", "MISS" (CompareResult::miss) or "FAIL".
+std::string verdict_word(const CompareResult& result);
+/// One line for summaries: the verdict word and, unless PASS, which amplitudes missed or failed
+/// and by how much, e.g. "MISS: T0/Rdot^2 -3.4 % (-3.6 sigma; continuum bound 10 %)".
+std::string verdict_summary(const CompareResult& result);
 
 /// Reads the run and compares every requested observable; for Reference::hydro it first solves the
 /// continuum once (solve_continuum, the model of config.hydro_model) and adds the amplitude

@@ -13,6 +13,7 @@
 #include "compare/verdict.hpp"
 #include "synthetic.hpp"
 #include "tests/temp_path.hpp"
+#include "theory/prefactors.hpp"
 
 using namespace coldblast::compare;
 using coldblast::compare::testing::synthetic_series;
@@ -192,14 +193,75 @@ TEST_CASE("the profile figure draws the continuum curves it is given and solves 
   fs::remove_all(folder);
 }
 
-TEST_CASE("continuum amplitudes at the MD's own R/lambda: the MD's definitions applied to the NS profile", "[fast]") {
+TEST_CASE("shock front: the binned density falls to the midpoint of its peak and n, linear between centres", "[fast]") {
+  // Peak 2.0 in the bin centred at 0.925; 1.8 at 0.975 and 1.2 at 1.025: the level 1.5 is crossed
+  // halfway, at r/R = 1.0 exactly.
+  std::vector<double> r, n, e(30, 0.01);
+  for (int b = 0; b < 30; ++b) {
+    r.push_back(0.05 * b + 0.025);
+    n.push_back(b < 18 ? 0.2 + 0.1 * b : b == 18 ? 2.0 : b == 19 ? 1.8 : b == 20 ? 1.2 : 1.0);
+  }
+  const CoreSize front = binned_front_radius(r, n, e);
+  CHECK(front.H_over_R == Approx(1.0).epsilon(1e-12));
+  // R = r_a + (n_a - (n_p + 1)/2)/(n_a - n_b) Δr: |∂R/∂n_p| = Δr/(2 (n_a - n_b)) = 0.05/1.2, and
+  // ∂R/∂n_a = Δr (L - n_b)/(n_a - n_b)², ∂R/∂n_b = Δr (n_a - L)/(n_a - n_b)², both 0.05 × 0.3/0.36.
+  CHECK(front.error == Approx(0.01 * std::sqrt(3.0) * 0.05 / 1.2).epsilon(1e-6));
+  n.assign(30, 1.0);
+  n[29] = 2.0;  // the peak in the last bin: nothing beyond it
+  CHECK(std::isnan(binned_front_radius(r, n, e).H_over_R));
+}
+
+TEST_CASE("amplitude outcomes: pass within k sigma with the NS error, miss within the continuum bound, else FAIL",
+          "[fast]") {
+  AmplitudeVerdict v;
+  v.name = "T0/Rdot^2";
+  v.measured = 0.97;
+  v.error = 0.001;
+  v.reference = 1.0;
+  v.reference_error = 0.001;
+  v.continuum_bound = 0.1;
+  AmplitudeVerdict j = judge_amplitude(v, 2.0);
+  CHECK(j.tolerance == Approx(2 * std::sqrt(2.0) * 0.001));
+  CHECK(j.deviation_sigma == Approx(-0.03 / (std::sqrt(2.0) * 0.001)));
+  CHECK(j.outcome == AmplitudeOutcome::miss);  // -3 % is beyond 2 sigma, within Kn² = 10 %
+  CHECK_FALSE(j.pass);
+  v.continuum_bound = 0.01;
+  CHECK(judge_amplitude(v, 2.0).outcome == AmplitudeOutcome::fail);
+  v.reference_error = 0.02;  // the NS's own numerical error enters sigma
+  CHECK(judge_amplitude(v, 2.0).outcome == AmplitudeOutcome::pass);
+  CHECK(judge_amplitude(v, 2.0).pass);
+  v.measured = NAN;
+  CHECK(judge_amplitude(v, 2.0).outcome == AmplitudeOutcome::fail);
+  // The summary word: MISS only when nothing fails, and it says by how much.
+  CompareResult result;
+  v.measured = 0.97;
+  v.reference_error = 0.001;
+  v.continuum_bound = 0.1;
+  result.amplitudes = {judge_amplitude(v, 2.0)};
+  result.pass = false;
+  result.miss = true;
+  CHECK(verdict_word(result) == "MISS");
+  CHECK_THAT(verdict_summary(result),
+             Catch::StartsWith("MISS (a measured continuum miss beyond the errors") &&
+                 Catch::Contains("T0/Rdot^2 missed by -3 % (-21.2 sigma; continuum bound 10 %)"));
+  result.miss = false;
+  CHECK(verdict_word(result) == "FAIL");
+  result.pass = true;
+  CHECK(verdict_summary(result) == "PASS");
+}
+
+TEST_CASE("continuum amplitudes at the MD's last time: the MD's definitions applied to the NS profile", "[fast]") {
   // Campaign 1 (2D, R/λ = 34.8 at t = 4000) against the dilute NS: its n0 ball (radius 2.19 λ)
-  // average equals the centre value within the core's flatness, the R/λ is the MD's, and the
+  // average equals the centre value within the core's flatness, the time is the MD's, and the
   // dilute ideal gas blast has the ideal A_2 up to its finite-R/λ offset (-5.5 % at R/λ = 35).
   const RunData run = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "campaign1-paper-2d");
   const auto continuum = solve_continuum(run, HydroModel{}, 256);
   const ContinuumAmplitudes& a = continuum->amplitudes;
-  CHECK(a.R_over_lambda == Approx(md_R_over_lambda(run, 4000)).epsilon(1e-12));
+  // The NS at the MD's time t = 4000: the dilute blast's own R there is behind the MD's by
+  // scale = R_MD/R_NS(t) (the ideal-gas A_2's error), and its R/λ is the MD's over scale.
+  const double scale = md_over_ns_radius(run, a.A, 4000);
+  CHECK(scale > 1.08);
+  CHECK(a.R_over_lambda * scale == Approx(md_R_over_lambda(run, 4000)).epsilon(2e-3));
   const auto sample_n0 = [&] {
     const auto& s = continuum->ns.samples;
     for (std::size_t i = 1; i < s.size(); ++i)
@@ -216,8 +278,38 @@ TEST_CASE("continuum amplitudes at the MD's own R/lambda: the MD's definitions a
   CHECK(a.binned_density[25] == Approx(1.0).epsilon(1e-6));
   CHECK(a.H_over_R > 0.3);
   CHECK(a.H_over_R < 0.7);
+  // The NS values' own numerical errors (twice the cells, the reading at the MD's R/λ): present and
+  // small (this dilute blast: ≤ 0.1 %, A the largest). The shared shock front, in units of the
+  // MD's R, lies near the NS's own R (R_MD/scale), within the shells' resolution.
+  const ContinuumAmplitudes& e = continuum->errors;
+  for (double ContinuumAmplitudes::*field : {&ContinuumAmplitudes::n0_over_n, &ContinuumAmplitudes::T0_over_Rdot2,
+                                             &ContinuumAmplitudes::A, &ContinuumAmplitudes::front_over_R}) {
+    CHECK(e.*field > 0.0);
+    CHECK(e.*field < 2e-3 * a.*field);
+  }
+  CHECK(a.front_over_R * scale == Approx(1.0).margin(0.02));  // measured 1.0103: a fifth of a 0.05 R shell
   // The profile figure's curves: ideal TvNS, TvNS(φ), and the NS model (dilute: no second NS curve).
   REQUIRE(continuum->profiles.size() == 3);
   CHECK(continuum->profiles[2].kind == ProfileCurve::Kind::ns_dilute);
   CHECK_FALSE(continuum->ns_dilute);
+}
+
+TEST_CASE("campaign 1's shock radius: the same definition on both sides removes the +0.4 % of two definitions",
+          "[slow]") {
+  // The MD's moving-mass R is 0.40 % ahead of the dense NS's conservative front (+277 sigma), but
+  // under one definition, the binned density's mid-height front in the MD's absolute shells, the
+  // two agree to 0.013 % (+4 sigma of the MD and NS errors; measured 232.50 against 232.47).
+  const RunData run = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "campaign1-paper-2d");
+  const auto continuum = solve_continuum(run, default_hydro_model(2, run_packing_fraction(run)), 256);
+  const std::vector<AmplitudeVerdict> verdicts = amplitude_verdicts(run, *continuum, 2.0);
+  REQUIRE(verdicts.size() == 4);
+  const AmplitudeVerdict& R = verdicts[2];
+  REQUIRE(R.name == "R");
+  CHECK(R.definition.find("shock front") == 0);
+  CHECK(std::abs(R.relative_difference) < 3e-4);
+  const double moving_mass = run.series.at("R").ensemble_values().back();
+  const double conservative = coldblast::theory::shock_radius(
+      2, run.summary["E"].get<double>(), run.summary["n"].get<double>(), continuum->amplitudes.A, 4000);
+  CHECK(moving_mass / conservative - 1 > 3e-3);
+  CHECK(R.continuum_bound == Approx(1 / continuum->R_over_lambda_last));
 }
