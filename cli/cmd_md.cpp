@@ -144,6 +144,10 @@ void run_md(const MdRunOptions& o) {
 
 void merge_md(const MdMergeOptions& o) {
   std::vector<std::filesystem::path> inputs(o.inputs.begin(), o.inputs.end());
+  if (kinetic::is_tracer_run(inputs.front())) {  // tracer shards: also moments.csv and the tracer's keys
+    write_tracer_run(kinetic::merge_tracer_outputs(inputs), o.out, o.format);
+    return;
+  }
   const md::BlastResult result = md::merge_blast_outputs(inputs);
   md::write_blast_outputs(result, o.out);
   print_summary(result, o.out, o.format);

@@ -1,7 +1,7 @@
 // coldblast tracer: Monte Carlo of the impurity's Lorentz–Boltzmann equation (paper Eq. (36)
 // [LB-full]) in a Navier–Stokes, TvNS or equilibrium background. Maps flags onto a
 // kinetic::TracerConfig, calls kinetic::run_tracer and writes the `md run` run directory
-// (docs/kinetic.md). Shards are combined with `coldblast md merge`.
+// (docs/kinetic.md), over MPI ranks under mpirun (MPI build). Shards are combined with `coldblast md merge`.
 #include <cstdio>
 
 #include "cli/commands.hpp"
@@ -9,6 +9,10 @@
 #include "common/validate.hpp"
 #include "kinetic/tracer.hpp"
 #include "md/scenes.hpp"
+#if COLDBLAST_HAVE_MPI
+#include "kinetic/mpi_tracer.hpp"
+#include "md/mpi_ensemble.hpp"
+#endif
 
 namespace coldblast::cli {
 
@@ -40,29 +44,42 @@ void run(TracerOptions& o) {
     if (done == total || done % 16 == 0) std::fprintf(stderr, "\rtracer: %lld/%lld blocks   ", done, total);
     if (done == total) std::fprintf(stderr, "\n");
   };
+#if COLDBLAST_HAVE_MPI
+  // Under mpirun: blocks spread over ranks (md's launcher); rank 0 alone reports and writes.
+  std::function<void(long long, long long)> report = progress;
+  if (md::MpiSession::rank() != 0) report = nullptr;
+  const kinetic::TracerResult result = kinetic::run_tracer_mpi(config, report);
+  if (md::MpiSession::rank() != 0) return;
+#else
   const kinetic::TracerResult result = kinetic::run_tracer(config, progress);
-  kinetic::write_tracer_outputs(result, o.out);
+#endif
+  write_tracer_run(result, o.out, o.format);
+}
+
+}  // namespace
+
+void write_tracer_run(const kinetic::TracerResult& result, const std::string& out, Format format) {
+  kinetic::write_tracer_outputs(result, out);
   common::Json summary = kinetic::tracer_summary(result);
   summary.erase("scene_toml");
-  summary["out"] = o.out;
-  if (o.format == Format::json) {
+  summary["out"] = out;
+  if (format == Format::json) {
     print_json(summary);
     return;
   }
   std::printf("tracer (%s background), scene %s (d = %d): %lld trajectories, %llu collisions in %.2f s\n",
-              config.background.c_str(), result.ensemble.scene.config.name.c_str(), result.ensemble.scene.config.d,
-              result.trajectories(), static_cast<unsigned long long>(result.collisions()), result.wall_seconds);
+              result.config.background.c_str(), result.ensemble.scene.config.name.c_str(),
+              result.ensemble.scene.config.d, result.trajectories(),
+              static_cast<unsigned long long>(result.collisions()), result.wall_seconds);
   std::printf("  collision rate %.6g ± %.2g per impurity per time (chi = %.6g), null-collision rejection %.3f\n",
               result.collision_rate(), result.collision_rate_error(), result.chi, result.rejection_rate());
   std::printf("  impurity temperature at t_max %.6g ± %.2g; output in %s\n", result.temperature_final(),
-              result.temperature_final_error(), o.out.c_str());
+              result.temperature_final_error(), out.c_str());
   const auto rows = md::estimate_observables(result.ensemble);
   for (const auto& row : rows)
     if (row.t == rows.back().t)
       std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
 }
-
-}  // namespace
 
 void add_tracer_command(CLI::App& app) {
   auto o = std::make_shared<TracerOptions>();

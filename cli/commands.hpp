@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/output.hpp"
+#include "kinetic/tracer.hpp"
 
 namespace coldblast::cli {
 
@@ -37,5 +38,9 @@ struct ExitStatus {
 
 /// Prints a JSON document to stdout (2-space indentation, trailing newline).
 void print_json(const common::Json& document);
+
+/// Writes a tracer run directory and prints its summary (`coldblast tracer`, and `md merge` of
+/// tracer shards); defined in cmd_tracer.cpp.
+void write_tracer_run(const kinetic::TracerResult& result, const std::string& out, Format format);
 
 }  // namespace coldblast::cli

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/input.hpp"
 #include "common/validate.hpp"
 #include "hydro/tvns.hpp"
 #include "kinetic/hydro_backgrounds.hpp"
@@ -95,11 +96,6 @@ md::Vec<D> initial_velocity(const TracerConfig& c, const Background& background,
   return v;  // u = 0 at the centre of a radial flow
 }
 
-struct BlockOutput {
-  md::BlockSums sums;
-  TracerBlock tracer;
-};
-
 struct RunContext {
   const TracerConfig& config;
   const md::ResolvedScene& scene;
@@ -153,9 +149,9 @@ void run_trajectory(const RunContext& ctx, long long index, std::vector<double>&
     if (!std::isfinite(x)) throw std::runtime_error("non-finite observable in trajectory " + std::to_string(index));
 }
 
-BlockOutput run_block(const RunContext& ctx, long long block, const std::atomic<bool>& stop) {
+TracerBlockSums run_block(const RunContext& ctx, long long block, const std::atomic<bool>& stop) {
   const md::BlastConfig& c = ctx.scene.config;
-  BlockOutput out;
+  TracerBlockSums out;
   out.sums.sum.assign(ctx.layout.size(), 0.0);
   out.sums.sum_squares.assign(ctx.layout.size(), 0.0);
   out.tracer.moments.assign(4 * ctx.scene.times.size(), 0.0);
@@ -201,14 +197,14 @@ void TracerConfig::validate() const {
         "Euler solution); allowed: dilute");
   if (start != "kick" && start != "thermal")
     throw std::invalid_argument("--start = " + start + " is not one of: kick, thermal");
-  common::require_integer_in_range("--trajectories", trajectories, 0, 1000000000000LL, " (0 = scene default)");
+  common::require_integer_in_range("--trajectories", trajectories, 0, 1000000000000LL, "(0 = scene default)");
   common::require_integer_in_range("--threads", threads, 1, 1024);
   common::require_integer_in_range("shard_count", shard_count, 1, 1000000);
   common::require_integer_in_range("shard_index", shard_index, 0, shard_count - 1);
   common::require_in_range("--T", T, 0.0, std::numeric_limits<double>::infinity());
   if (phi)
     common::require_in_range("--phi", *phi, 0.0, max_equilibrium_phi(scene.d), Bound::open, Bound::open,
-                             " for d = " + std::to_string(scene.d));
+                             "for d = " + std::to_string(scene.d));
   if (phi && background != "equilibrium")
     throw std::invalid_argument("--phi is only for --background equilibrium (the blast uses the scene's n)");
   common::require_in_range("--start-time", start_time, 0.0, scene.t_max, Bound::closed, Bound::open);
@@ -284,10 +280,19 @@ double TracerResult::rejection_rate() const {
   return candidates_total > 0 ? 1.0 - static_cast<double>(collisions()) / candidates_total : 0.0;
 }
 
-TracerResult run_tracer(const TracerConfig& config, const std::function<void(long long, long long)>& progress) {
+struct TracerRun::Context {
+  TracerResult result;  ///< config, scene, background description, ambient n and chi, start time
+  std::unique_ptr<Background> background;
+  std::unique_ptr<md::ObservableLayout> layout;
+  std::unique_ptr<RunContext> run;
+  std::chrono::steady_clock::time_point started;
+};
+
+TracerRun::TracerRun(const TracerConfig& config) : context_(std::make_unique<Context>()) {
   config.validate();
-  const auto started = std::chrono::steady_clock::now();
-  TracerResult result;
+  Context& x = *context_;
+  x.started = std::chrono::steady_clock::now();
+  TracerResult& result = x.result;
   result.config = config;
   md::BlastConfig scene_config = config.scene;
   const long long trajectories =
@@ -303,38 +308,56 @@ TracerResult run_tracer(const TracerConfig& config, const std::function<void(lon
   result.config.scene = scene.config;
   result.start_time = config.resolved_start_time();
 
-  const std::unique_ptr<Background> background = make_background(config, &result.background_description);
-  if (const auto* grid = dynamic_cast<const GridBackground*>(background.get()))
+  x.background = make_background(config, &result.background_description);
+  if (const auto* grid = dynamic_cast<const GridBackground*>(x.background.get()))
     result.background_frames = grid->frame_count();
   const ImpurityModel impurity{scene.config.d, scene.config.impurities.mass, scene.config.a + scene.impurity_radius};
   {
-    const HostState ambient = background->at(1e300, std::max(result.start_time, 1e-300),
-                                             background->bound(std::max(result.start_time, 1e-300)));
+    const double t = std::max(result.start_time, 1e-300);
+    const HostState ambient = x.background->at(1e300, t, x.background->bound(t));
     result.n = ambient.n;
     result.chi = ambient.chi;
   }
-  const md::ObservableLayout layout(scene);
-  const RunContext ctx{result.config, scene, layout, *background, impurity, result.start_time};
-
+  x.layout = std::make_unique<md::ObservableLayout>(scene);
+  x.run = std::make_unique<RunContext>(
+      RunContext{result.config, scene, *x.layout, *x.background, impurity, result.start_time});
   const long long block_count = (trajectories + scene.config.block_size - 1) / scene.config.block_size;
-  std::vector<long long> owned;
-  for (long long b = config.shard_index; b < block_count; b += config.shard_count) owned.push_back(b);
-  std::vector<BlockOutput> outputs(owned.size());
+  for (long long b = config.shard_index; b < block_count; b += config.shard_count) blocks_.push_back(b);
+}
+
+TracerRun::~TracerRun() = default;
+
+TracerBlockSums TracerRun::run_block(long long block, const std::atomic<bool>& stop) const {
+  return kinetic::run_block(*context_->run, block, stop);
+}
+
+void TracerRun::add(long long block, TracerBlockSums&& sums) {
+  context_->result.ensemble.blocks[block] = std::move(sums.sums);
+  context_->result.blocks[block] = std::move(sums.tracer);
+}
+
+TracerResult TracerRun::result(int ranks) const {
+  TracerResult result = context_->result;
+  result.ensemble.ranks = ranks;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - context_->started).count();
+  result.ensemble.wall_seconds = result.wall_seconds;
+  return result;
+}
+
+TracerResult run_tracer(const TracerConfig& config, const std::function<void(long long, long long)>& progress) {
+  TracerRun run(config);
+  const std::vector<long long>& owned = run.blocks();
+  std::vector<TracerBlockSums> outputs(owned.size());
   std::mutex mutex;
   long long done = 0;
   md::run_slots_in_parallel(owned.size(), config.threads, [&](std::size_t slot, const std::atomic<bool>& stop) {
-    outputs[slot] = run_block(ctx, owned[slot], stop);
+    outputs[slot] = run.run_block(owned[slot], stop);
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
     if (progress) progress(done, static_cast<long long>(owned.size()));
   });
-  for (std::size_t slot = 0; slot < owned.size(); ++slot) {
-    ensemble.blocks[owned[slot]] = std::move(outputs[slot].sums);
-    result.blocks[owned[slot]] = std::move(outputs[slot].tracer);
-  }
-  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  ensemble.wall_seconds = result.wall_seconds;
-  return result;
+  for (std::size_t slot = 0; slot < owned.size(); ++slot) run.add(owned[slot], std::move(outputs[slot]));
+  return run.result();
 }
 
 std::vector<MomentRow> moment_rows(const TracerResult& result) {
@@ -390,6 +413,7 @@ common::Json tracer_summary(const TracerResult& result) {
   j["collision_rate"] = result.collision_rate();
   j["collision_rate_error"] = result.collision_rate_error();
   j["chi"] = result.chi;
+  j["n_ambient"] = result.n;
   j["temperature_final"] = result.temperature_final();
   j["temperature_final_error"] = result.temperature_final_error();
   j["candidates_total"] = result.candidates();
@@ -404,6 +428,102 @@ common::Json tracer_summary(const TracerResult& result) {
   }
   return j;
 }
+
+namespace {
+
+constexpr const char* tracer_blocks_header =
+    "block,count,candidates,collisions,collisions_squares,v2_final,v2_final_squares";
+constexpr const char* moment_sums_header = "block,t,r2_sum,r4_sum,v2_sum,v4_sum";
+
+/// tracer_blocks.csv (per block: the counters and the end-state sums) and moment_sums.csv (per
+/// block and recording time: the sums of r², r⁴, v², v⁴): the exact sums behind the summary's
+/// tracer keys and moments.csv, shortest round-trip decimals, read back by merge_tracer_outputs.
+void write_tracer_blocks(const TracerResult& result, const std::filesystem::path& directory) {
+  const std::string header =
+      md::run_file_header(result.ensemble.scene, {{"background", result.background_description}});
+  const auto& times = result.ensemble.scene.times;
+  std::ostringstream blocks, moments;
+  blocks << header << "# sums over the block's trajectories; v2_final: |v|^2 at t_max\n"
+         << tracer_blocks_header << '\n';
+  moments << header << "# sums over the block's trajectories; r: displacement from the start\n"
+          << moment_sums_header << '\n';
+  for (const auto& [b, s] : result.blocks) {
+    blocks << b << ',' << s.count << ',' << s.candidates << ',' << s.collisions << ','
+           << format_number(s.collisions_squares) << ',' << format_number(s.v2_final) << ','
+           << format_number(s.v2_final_squares) << '\n';
+    for (std::size_t k = 0; k < times.size(); ++k)
+      moments << b << ',' << format_number(times[k]) << ',' << format_number(s.moments[4 * k]) << ','
+              << format_number(s.moments[4 * k + 1]) << ',' << format_number(s.moments[4 * k + 2]) << ','
+              << format_number(s.moments[4 * k + 3]) << '\n';
+  }
+  common::write_file_atomic(directory / "tracer_blocks.csv", blocks.str());
+  common::write_file_atomic(directory / "moment_sums.csv", moments.str());
+}
+
+/// Reads a tracer shard's tracer_blocks.csv and moment_sums.csv (bad input names the file and line).
+std::map<long long, TracerBlock> read_tracer_blocks(const std::filesystem::path& dir, std::size_t times) {
+  std::map<long long, TracerBlock> blocks;
+  const std::filesystem::path totals_path = dir / "tracer_blocks.csv", moments_path = dir / "moment_sums.csv";
+  const common::CsvTable totals = common::parse_csv(common::read_text(totals_path, "md merge DIR file"),
+                                                    totals_path.string(), tracer_blocks_header);
+  for (const common::CsvRow& row : totals.rows) {
+    const std::string where = totals.where(row);
+    TracerBlock s;
+    s.count = common::parse_count(row.fields[1], where);
+    s.candidates = static_cast<std::uint64_t>(common::parse_count(row.fields[2], where));
+    s.collisions = static_cast<std::uint64_t>(common::parse_count(row.fields[3], where));
+    s.collisions_squares = common::parse_finite(row.fields[4], where);
+    s.v2_final = common::parse_finite(row.fields[5], where);
+    s.v2_final_squares = common::parse_finite(row.fields[6], where);
+    s.moments.assign(4 * times, 0.0);
+    blocks[common::parse_count(row.fields[0], where)] = std::move(s);
+  }
+  const common::CsvTable moments = common::parse_csv(common::read_text(moments_path, "md merge DIR file"),
+                                                     moments_path.string(), moment_sums_header);
+  std::map<long long, std::size_t> next_time;  // rows come in time order per block
+  for (const common::CsvRow& row : moments.rows) {
+    const std::string where = moments.where(row);
+    const long long b = common::parse_count(row.fields[0], where);
+    const auto block = blocks.find(b);
+    const std::size_t k = next_time[b]++;
+    if (block == blocks.end() || k >= times)
+      throw std::invalid_argument("md merge: " + where + " does not match tracer_blocks.csv and the scene's times");
+    for (int q = 0; q < 4; ++q) block->second.moments[4 * k + q] = common::parse_finite(row.fields[2 + q], where);
+  }
+  for (const auto& [b, s] : blocks)
+    if (next_time[b] != times)
+      throw std::invalid_argument("md merge: " + moments_path.string() + " holds " + std::to_string(next_time[b]) +
+                                  " times of block " + std::to_string(b) + ", the scene " + std::to_string(times));
+  return blocks;
+}
+
+/// The run-wide keys of a tracer shard's summary.json (equal in every shard of one run).
+common::Json read_tracer_summary(const std::filesystem::path& path) {
+  const auto bad = [&](const std::string& what) {
+    return std::invalid_argument("md merge: " + path.string() + ": " + what);
+  };
+  common::Json s;
+  try {
+    s = common::Json::parse(common::read_text(path, "md merge DIR file"));
+  } catch (const common::Json::exception& e) {
+    throw bad(e.what());
+  }
+  if (!s.is_object()) throw bad("not a JSON object");
+  common::Json keys = common::Json::object();
+  const auto take = [&](const char* key, bool number) {
+    if (!s.contains(key) || (number ? !s.at(key).is_number() : !s.at(key).is_string()))
+      throw bad(std::string("no ") + (number ? "number" : "string") + " '" + key + "' (a tracer shard)");
+    keys[key] = s.at(key);
+  };
+  for (const char* key : {"engine", "background", "background_description", "transport", "start"}) take(key, false);
+  for (const char* key : {"background_frames", "start_time", "chi", "n_ambient", "impurity_mass", "impurity_radius"})
+    take(key, true);
+  if (!keys.at("background_frames").is_number_unsigned()) throw bad("'background_frames' is not a count");
+  if (keys.at("background") == "equilibrium") take("T", true);
+  return keys;
+}
+
+}  // namespace
 
 void write_tracer_outputs(const TracerResult& result, const std::filesystem::path& directory) {
   md::write_blast_outputs(result.ensemble, directory);
@@ -422,7 +542,58 @@ void write_tracer_outputs(const TracerResult& result, const std::filesystem::pat
         << '\n';
   common::write_file_atomic(directory / "moments.csv", out.str());
   common::write_file_atomic(directory / "prefactors.csv", prefactors_csv(result));
+  write_tracer_blocks(result, directory);
   common::write_file_atomic(directory / "summary.json", tracer_summary(result).dump(2) + "\n");
+}
+
+bool is_tracer_run(const std::filesystem::path& directory) {
+  try {
+    const common::Json s = common::Json::parse(common::read_text(directory / "summary.json"));
+    return s.is_object() && s.contains("engine") && s.at("engine").is_string() &&
+           s.at("engine").get<std::string>().rfind("tracer", 0) == 0;
+  } catch (const std::exception&) {
+    return false;  // md merge reports the unreadable file
+  }
+}
+
+TracerResult merge_tracer_outputs(const std::vector<std::filesystem::path>& directories) {
+  TracerResult merged;
+  merged.ensemble = md::merge_blast_outputs(directories);  // checks scenes and duplicate blocks
+  const md::ResolvedScene& scene = merged.ensemble.scene;
+  const common::Json first = read_tracer_summary(directories.front() / "summary.json");
+  for (const auto& dir : directories) {
+    const common::Json summary = read_tracer_summary(dir / "summary.json");
+    for (const auto& [key, value] : first.items())
+      if (summary.at(key) != value)
+        throw std::invalid_argument("md merge: " + dir.string() + " ran a different tracer than " +
+                                    directories.front().string() + ": " + key + " = " + summary.at(key).dump() +
+                                    " there, " + value.dump() + " in the first");
+    for (auto& [b, block] : read_tracer_blocks(dir, scene.times.size())) {
+      if (!merged.ensemble.blocks.count(b) || merged.ensemble.blocks.at(b).count != block.count)
+        throw std::invalid_argument("md merge: " + (dir / "tracer_blocks.csv").string() + ": block " +
+                                    std::to_string(b) + " does not match block_totals.csv");
+      merged.blocks[b] = std::move(block);
+    }
+  }
+  if (merged.blocks.size() != merged.ensemble.blocks.size())
+    throw std::invalid_argument("md merge: the tracer shards' tracer_blocks.csv hold " +
+                                std::to_string(merged.blocks.size()) + " blocks, block_totals.csv " +
+                                std::to_string(merged.ensemble.blocks.size()));
+  TracerConfig& c = merged.config;
+  c.scene = scene.config;
+  c.background = first.at("background").get<std::string>();
+  c.transport = first.at("transport").get<std::string>();
+  c.start = first.at("start").get<std::string>();
+  if (first.contains("T")) c.T = first.at("T").get<double>();
+  c.trajectories = scene.config.realizations;
+  c.threads = merged.ensemble.threads;
+  merged.start_time = c.start_time = first.at("start_time").get<double>();
+  merged.background_description = first.at("background_description").get<std::string>();
+  merged.background_frames = first.at("background_frames").get<std::uint64_t>();
+  merged.chi = first.at("chi").get<double>();
+  merged.n = first.at("n_ambient").get<double>();
+  merged.wall_seconds = merged.ensemble.wall_seconds;
+  return merged;
 }
 
 }  // namespace coldblast::kinetic

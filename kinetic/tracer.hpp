@@ -5,6 +5,7 @@
 // and trajectories are summed in blocks in index order, so every number is bit-identical for any
 // thread count and sharding; the run directory is the one of `md run` (docs/md-output.md), so
 // `coldblast compare` reads it unchanged. Method, start and error budget: docs/kinetic.md.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -79,8 +80,40 @@ struct TracerResult {
 /// The background of a config (built once per run; `ns` integrates the Navier–Stokes blast).
 std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description = nullptr);
 
-/// Runs the trajectories of this shard; progress(done, total) after each block (may be empty).
+/// Runs the trajectories of this shard on config.threads threads (md::run_slots_in_parallel);
+/// progress(done, total) after each block (may be empty).
 TracerResult run_tracer(const TracerConfig& config, const std::function<void(long long, long long)>& progress = {});
+
+/// One block's sums: md's layout (R_imp, V_imp, C_imp, u_imp, p_imp) and the tracer's own.
+struct TracerBlockSums {
+  md::BlockSums sums;
+  TracerBlock tracer;
+};
+
+/// A tracer run prepared on one process (validated config, resolved scene, background): what every
+/// driver (run_tracer's threads, kinetic/mpi_tracer.hpp's MPI ranks) shares. Blocks run on any
+/// thread in any order; `add` collects them, and the result depends only on the blocks.
+class TracerRun {
+ public:
+  explicit TracerRun(const TracerConfig& config);  ///< validates; builds the background (ns: solves NS)
+  ~TracerRun();
+  TracerRun(const TracerRun&) = delete;
+  TracerRun& operator=(const TracerRun&) = delete;
+  /// This shard's blocks, ascending.
+  const std::vector<long long>& blocks() const { return blocks_; }
+  /// Runs the trajectories of block `block` in index order on the calling thread; returns early
+  /// (partial sums, to be discarded) when `stop` becomes true.
+  TracerBlockSums run_block(long long block, const std::atomic<bool>& stop) const;
+  /// Keeps a finished block (not thread-safe: callers lock).
+  void add(long long block, TracerBlockSums&& sums);
+  /// The result so far, with the wall time since construction and `ranks` MPI ranks recorded.
+  TracerResult result(int ranks = 1) const;
+
+ private:
+  struct Context;
+  std::unique_ptr<Context> context_;
+  std::vector<long long> blocks_;
+};
 
 /// Rows of moments.csv: at each recording time ⟨r²⟩, ⟨r⁴⟩/⟨r²⟩², ⟨v²⟩, ⟨v⁴⟩/⟨v²⟩² with block
 /// jackknife errors (r = displacement from the start).
@@ -93,7 +126,17 @@ std::vector<MomentRow> moment_rows(const TracerResult& result);
 /// summary.json: md::blast_summary's keys plus the tracer's (docs/kinetic.md).
 common::Json tracer_summary(const TracerResult& result);
 /// Writes the run directory: the md files (observables.csv, blocks.csv, p_imp.csv, ...), then
-/// moments.csv and the tracer's summary.json.
+/// moments.csv, prefactors.csv, the tracer's exact block sums (tracer_blocks.csv, read back by
+/// merge_tracer_outputs) and the tracer's summary.json.
 void write_tracer_outputs(const TracerResult& result, const std::filesystem::path& directory);
+
+/// True when `directory`'s summary.json was written by the tracer (its "engine" key).
+bool is_tracer_run(const std::filesystem::path& directory);
+/// Reads tracer shard directories (`coldblast tracer --shard i/n`) and combines them exactly: md's
+/// files through md::merge_blast_outputs, the tracer's block sums from tracer_blocks.csv, and the
+/// run-wide summary keys (background, transport, start, chi, ...), which must agree across shards
+/// (else std::invalid_argument naming the key). write_tracer_outputs of the result gives the files
+/// of one run of every block, moments.csv and the tracer's summary keys included.
+TracerResult merge_tracer_outputs(const std::vector<std::filesystem::path>& directories);
 
 }  // namespace coldblast::kinetic

@@ -41,84 +41,6 @@ void check(int status, const char* what) {
 enum Kind : std::int64_t { kind_request = 0, kind_result = 1, kind_failure = 2 };
 constexpr std::int64_t stop_block = -1;
 
-class Writer {
- public:
-  template <class T>
-  void put(const T& value) {
-    const auto* p = reinterpret_cast<const char*>(&value);
-    bytes.insert(bytes.end(), p, p + sizeof(T));
-  }
-  void put_doubles(const std::vector<double>& v) {
-    put<std::uint64_t>(v.size());
-    const auto* p = reinterpret_cast<const char*>(v.data());
-    bytes.insert(bytes.end(), p, p + v.size() * sizeof(double));
-  }
-  void put_string(const std::string& s) {
-    put<std::uint64_t>(s.size());
-    bytes.insert(bytes.end(), s.begin(), s.end());
-  }
-  std::vector<char> bytes;
-};
-
-class Reader {
- public:
-  explicit Reader(const std::vector<char>& bytes) : bytes_(bytes) {}
-  template <class T>
-  T get() {
-    T value;
-    take(&value, sizeof(T));
-    return value;
-  }
-  std::vector<double> get_doubles() {
-    std::vector<double> v(get<std::uint64_t>());
-    take(v.data(), v.size() * sizeof(double));
-    return v;
-  }
-  std::string get_string() {
-    std::string s(get<std::uint64_t>(), '\0');
-    take(s.data(), s.size());
-    return s;
-  }
-
- private:
-  void take(void* out, std::size_t n) {
-    if (offset_ + n > bytes_.size()) throw std::logic_error("MPI: truncated message");
-    std::memcpy(out, bytes_.data() + offset_, n);
-    offset_ += n;
-  }
-  const std::vector<char>& bytes_;
-  std::size_t offset_ = 0;
-};
-
-void put_block(Writer& w, long long block, const BlockSums& s, const NamedFiles& files) {
-  w.put<std::int64_t>(block);
-  w.put<std::int64_t>(s.count);
-  w.put<std::uint64_t>(s.collisions);
-  w.put<double>(s.energy_error_max);
-  w.put_doubles(s.sum);
-  w.put_doubles(s.sum_squares);
-  w.put<std::uint64_t>(files.size());
-  for (const auto& [name, content] : files) {
-    w.put_string(name);
-    w.put_string(content);
-  }
-}
-
-long long get_block(Reader& r, BlockSums& s, NamedFiles& files) {
-  const long long block = r.get<std::int64_t>();
-  s.count = r.get<std::int64_t>();
-  s.collisions = r.get<std::uint64_t>();
-  s.energy_error_max = r.get<double>();
-  s.sum = r.get_doubles();
-  s.sum_squares = r.get_doubles();
-  const auto n = r.get<std::uint64_t>();
-  for (std::uint64_t i = 0; i < n; ++i) {
-    std::string name = r.get_string();
-    files.push_back({std::move(name), r.get_string()});
-  }
-  return block;
-}
-
 int error_code(const std::exception_ptr& error) {
   try {
     std::rethrow_exception(error);
@@ -140,63 +62,39 @@ std::string error_text(const std::exception_ptr& error) {
 }
 
 /// Rank 0: hands out the pending blocks (to its own threads and, on request, to the other ranks'
-/// threads), collects every finished block, saves checkpoints and reports progress.
-BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options, int ranks) {
-  const auto started = std::chrono::steady_clock::now();
-  EnsemblePlan plan = plan_ensemble(config, options);
-  BlastResult& result = plan.result;
-  result.ranks = ranks;
-  const ResolvedScene& scene = result.scene;
-  const std::vector<long long>& pending = plan.pending;
-  const long long total = plan.pending_realizations;
-
-  std::mutex mutex;  // guards next, done, result.blocks, result.realization0_files, error
+/// threads) and passes every finished block to work.finish.
+void run_coordinator(const MpiBlockWork& work, int ranks) {
+  const std::vector<long long>& pending = work.pending;
+  std::mutex mutex;  // guards next, error
   std::size_t next = 0;
-  long long done = 0;
   std::exception_ptr error;
   std::atomic<bool> failed{false};
   const auto take_block = [&]() -> long long {
     std::lock_guard<std::mutex> lock(mutex);
     return next < pending.size() && !failed ? pending[next++] : stop_block;
   };
-  const auto finish_block = [&](long long b, BlockSums&& s, NamedFiles&& files, bool remote) {
-    if (!options.checkpoint.empty()) save_checkpoint_block(options.checkpoint, b, s, b == 0 ? &files : nullptr);
-    std::lock_guard<std::mutex> lock(mutex);
-    if (remote) {
-      done += s.count;
-      if (options.progress) options.progress(done, total);
-    }
-    if (b == 0) result.realization0_files = std::move(files);
-    result.blocks[b] = std::move(s);
-  };
   const auto fail = [&](std::exception_ptr e) {
     std::lock_guard<std::mutex> lock(mutex);
     if (!error) error = e;
     failed = true;
   };
-  const auto realization_done = [&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    ++done;
-    if (options.progress) options.progress(done, total);
-  };
   auto local_worker = [&] {
     try {
       for (long long b = take_block(); b != stop_block; b = take_block()) {
-        NamedFiles files;
-        BlockSums s = run_block(scene, b, &files, realization_done, &failed);
+        std::vector<char> result = work.run(b, failed);
         if (failed) return;
-        finish_block(b, std::move(s), std::move(files), false);
+        work.finish(b, std::move(result), false);
       }
     } catch (...) {
       fail(std::current_exception());
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 0; t < options.threads; ++t) pool.emplace_back(local_worker);
+  for (int t = 0; t < work.threads; ++t) pool.emplace_back(local_worker);
 
   // Serve the other ranks' threads until each has been told to stop. Polling with a short sleep
   // keeps this thread off the CPU (a blocking MPI_Recv spins in Open MPI).
-  int remote_workers = (ranks - 1) * options.threads;
+  int remote_workers = (ranks - 1) * work.threads;
   std::vector<char> buffer;
   try {
     while (remote_workers > 0) {
@@ -214,7 +112,7 @@ BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options
       check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
                      MPI_STATUS_IGNORE),
             "MPI_Recv");
-      Reader reader(buffer);
+      ByteReader reader(buffer);
       const auto kind = reader.get<std::int64_t>();
       if (kind == kind_failure) {
         const int code = static_cast<int>(reader.get<std::int64_t>());
@@ -223,10 +121,9 @@ BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options
         throw std::runtime_error(text);
       }
       if (kind == kind_result) {
-        BlockSums s;
-        NamedFiles files;
-        const long long b = get_block(reader, s, files);
-        finish_block(b, std::move(s), std::move(files), true);
+        const long long b = reader.get<std::int64_t>();
+        const std::size_t header = 2 * sizeof(std::int64_t);
+        work.finish(b, std::vector<char>(buffer.begin() + static_cast<std::ptrdiff_t>(header), buffer.end()), true);
       }
       const std::int64_t reply = take_block();
       if (reply == stop_block) --remote_workers;
@@ -237,14 +134,11 @@ BlastResult run_coordinator(const BlastConfig& config, const RunOptions& options
   }
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
-  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return std::move(plan.result);
 }
 
 /// Ranks > 0: `threads` compute threads; this (the only MPI-calling) thread forwards each thread's
 /// finished block plus its request for the next one to rank 0 and hands back the answer.
-void run_worker(const BlastConfig& config, const RunOptions& options) {
-  const ResolvedScene scene = resolve_scene(config, options.amplitude);
+void run_worker(const MpiBlockWork& work) {
   struct Outgoing {
     int thread;
     std::vector<char> bytes;
@@ -252,10 +146,11 @@ void run_worker(const BlastConfig& config, const RunOptions& options) {
   std::mutex mutex;
   std::condition_variable cv;
   std::deque<Outgoing> outbox;
-  std::vector<long long> answer(static_cast<std::size_t>(options.threads));
+  std::vector<long long> answer(static_cast<std::size_t>(work.threads));
   std::vector<bool> answered(answer.size(), false);
-  int running = options.threads;
-  const auto ask = [&](int thread, Writer&& message) {
+  int running = work.threads;
+  const std::atomic<bool> never_stop{false};  // a worker rank stops when rank 0 says so
+  const auto ask = [&](int thread, ByteWriter&& message) {
     std::unique_lock<std::mutex> lock(mutex);
     answered[thread] = false;
     outbox.push_back({thread, std::move(message.bytes)});
@@ -264,21 +159,21 @@ void run_worker(const BlastConfig& config, const RunOptions& options) {
     return answer[thread];
   };
   auto compute = [&](int thread) {
-    Writer first;
+    ByteWriter first;
     first.put<std::int64_t>(kind_request);
     long long b = ask(thread, std::move(first));
     try {
       while (b != stop_block) {
-        NamedFiles files;
-        const BlockSums s = run_block(scene, b, &files);
-        Writer message;
+        const std::vector<char> result = work.run(b, never_stop);
+        ByteWriter message;
         message.put<std::int64_t>(kind_result);
-        put_block(message, b, s, files);
+        message.put<std::int64_t>(b);
+        message.bytes.insert(message.bytes.end(), result.begin(), result.end());
         b = ask(thread, std::move(message));
       }
     } catch (...) {
       const std::exception_ptr e = std::current_exception();
-      Writer message;
+      ByteWriter message;
       message.put<std::int64_t>(kind_failure);
       message.put<std::int64_t>(error_code(e));
       message.put_string(error_text(e));
@@ -290,7 +185,7 @@ void run_worker(const BlastConfig& config, const RunOptions& options) {
     cv.notify_all();
   };
   std::vector<std::thread> pool;
-  for (int t = 0; t < options.threads; ++t) pool.emplace_back(compute, t);
+  for (int t = 0; t < work.threads; ++t) pool.emplace_back(compute, t);
   std::unique_lock<std::mutex> lock(mutex);
   while (running > 0 || !outbox.empty()) {
     cv.wait(lock, [&] { return running == 0 || !outbox.empty(); });
@@ -301,7 +196,7 @@ void run_worker(const BlastConfig& config, const RunOptions& options) {
     check(MPI_Send(message.bytes.data(), static_cast<int>(message.bytes.size()), MPI_BYTE, 0, message.thread,
                    MPI_COMM_WORLD),
           "MPI_Send");
-    if (Reader(message.bytes).get<std::int64_t>() == kind_failure) {
+    if (ByteReader(message.bytes).get<std::int64_t>() == kind_failure) {
       // Rank 0 reports the error and ends every rank; wait for that without spinning.
       for (auto& t : pool) t.detach();
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
@@ -350,17 +245,105 @@ int MpiSession::end_all_ranks(int code) {
   return code;
 }
 
+void put_block_sums(ByteWriter& w, const BlockSums& s, const NamedFiles& files) {
+  w.put<std::int64_t>(s.count);
+  w.put<std::uint64_t>(s.collisions);
+  w.put<double>(s.energy_error_max);
+  w.put_doubles(s.sum);
+  w.put_doubles(s.sum_squares);
+  w.put<std::uint64_t>(files.size());
+  for (const auto& [name, content] : files) {
+    w.put_string(name);
+    w.put_string(content);
+  }
+}
+
+BlockSums get_block_sums(ByteReader& r, NamedFiles* files) {
+  BlockSums s;
+  s.count = r.get<std::int64_t>();
+  s.collisions = r.get<std::uint64_t>();
+  s.energy_error_max = r.get<double>();
+  s.sum = r.get_doubles();
+  s.sum_squares = r.get_doubles();
+  const auto n = r.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < n; ++i) {
+    std::string name = r.get_string();
+    std::string content = r.get_string();
+    if (files) files->push_back({std::move(name), std::move(content)});
+  }
+  return s;
+}
+
+void run_blocks_mpi(const MpiBlockWork& work) {
+  common::require_integer_in_range("threads", work.threads, 1, 1024);
+  const int ranks = MpiSession::size();
+  if (MpiSession::rank() == 0)
+    run_coordinator(work, ranks);
+  else
+    run_worker(work);
+}
+
 BlastResult run_blast_mpi(const BlastConfig& config, const RunOptions& options) {
   const int ranks = MpiSession::size();
   if (ranks == 1) return run_blast(config, options);
   common::require_integer_in_range("threads", options.threads, 1, 1024);
   common::require_integer_in_range("shard_count", options.shard_count, 1, 1000000);
   common::require_integer_in_range("shard_index", options.shard_index, 0, options.shard_count - 1);
-  if (MpiSession::rank() == 0) return run_coordinator(config, options, ranks);
-  run_worker(config, options);
-  BlastResult empty;
-  empty.ranks = ranks;
-  return empty;
+  const auto started = std::chrono::steady_clock::now();
+  MpiBlockWork work;
+  work.threads = options.threads;
+  if (MpiSession::rank() != 0) {
+    const ResolvedScene scene = resolve_scene(config, options.amplitude);
+    work.run = [&](long long b, const std::atomic<bool>&) {
+      NamedFiles files;
+      const BlockSums s = run_block(scene, b, &files);
+      ByteWriter w;
+      put_block_sums(w, s, files);
+      return std::move(w.bytes);
+    };
+    run_blocks_mpi(work);
+    BlastResult empty;
+    empty.ranks = ranks;
+    return empty;
+  }
+  // Rank 0: the plan (scene, checkpoint, pending blocks); progress counts realizations, its own
+  // one by one, the other ranks' block by block.
+  EnsemblePlan plan = plan_ensemble(config, options);
+  BlastResult& result = plan.result;
+  result.ranks = ranks;
+  const ResolvedScene& scene = result.scene;
+  const long long total = plan.pending_realizations;
+  std::mutex mutex;  // guards done, result.blocks, result.realization0_files
+  long long done = 0;
+  const auto realization_done = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (options.progress) options.progress(done, total);
+  };
+  work.pending = plan.pending;
+  work.run = [&](long long b, const std::atomic<bool>& stop) {
+    NamedFiles files;
+    const BlockSums s = run_block(scene, b, &files, realization_done, &stop);
+    ByteWriter w;
+    put_block_sums(w, s, files);
+    return std::move(w.bytes);
+  };
+  work.finish = [&](long long b, std::vector<char>&& bytes, bool remote) {
+    ByteReader reader(bytes);
+    NamedFiles files;
+    BlockSums s = get_block_sums(reader, &files);
+    if (!options.checkpoint.empty()) save_checkpoint_block(options.checkpoint, b, s, b == 0 ? &files : nullptr);
+    std::lock_guard<std::mutex> lock(mutex);
+    if (remote) {
+      done += s.count;
+      if (options.progress) options.progress(done, total);
+    }
+    if (b == 0) result.realization0_files = std::move(files);
+    result.blocks[b] = std::move(s);
+  };
+  run_blocks_mpi(work);
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return std::move(plan.result);
 }
 
 }  // namespace coldblast::md

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/tracer.hpp"
@@ -115,4 +116,68 @@ TEST_CASE("tracer: bad input names the option") {
   c.scene.t_max = 2.0;  // before the Navier–Stokes start at R/λ = 2: no background solution
   c.scene.t_min = 1.0;
   CHECK_THROWS_WITH(run_tracer(c), Catch::Contains("t_max"));
+}
+
+TEST_CASE("tracer: md merge of shard directories equals one run, summary keys and moments included") {
+  TracerConfig c = small_config("equilibrium");  // the equilibrium keys (T, collision_rate_exact) too
+  c.trajectories = 96;
+  c.scene.block_size = 8;
+  c.T = 2.0;
+  c.phi = 0.2;
+  c.transport = "enskog";
+  c.threads = 2;
+  const TracerResult one = run_tracer(c);
+  const auto root = coldblast::test::unique_temp_path("coldblast-test-tracer-merge");
+  std::vector<std::filesystem::path> shards;
+  c.threads = 1;
+  c.shard_count = 3;
+  for (int i = 0; i < 3; ++i) {
+    c.shard_index = i;
+    shards.push_back(root / ("s" + std::to_string(i)));
+    write_tracer_outputs(run_tracer(c), shards.back());
+  }
+  REQUIRE(is_tracer_run(shards[0]));
+  const TracerResult merged = merge_tracer_outputs(shards);
+  CHECK(merged.trajectories() == 96);
+  CHECK(merged.collisions() == one.collisions());
+  CHECK(merged.candidates() == one.candidates());
+  // Exact equality: the merge rebuilds the block sums and totals them in block order.
+  CHECK(merged.collision_rate() == one.collision_rate());
+  CHECK(merged.collision_rate_error() == one.collision_rate_error());
+  CHECK(merged.temperature_final() == one.temperature_final());
+  CHECK(merged.temperature_final_error() == one.temperature_final_error());
+  CHECK(merged.rejection_rate() == one.rejection_rate());
+  const auto a = moment_rows(one), b = moment_rows(merged);
+  REQUIRE(a.size() == b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    CHECK(a[k].r2 == b[k].r2);
+    CHECK(a[k].r_ratio == b[k].r_ratio);
+    CHECK(a[k].r_ratio_error == b[k].r_ratio_error);
+    CHECK(a[k].v_ratio == b[k].v_ratio);
+    CHECK(a[k].v2_error == b[k].v2_error);
+  }
+  auto x = tracer_summary(one), y = tracer_summary(merged);
+  for (const char* key :
+       {"wall_seconds", "collisions_per_second", "seconds_per_realization", "threads", "trajectories_per_second"}) {
+    x.erase(key);
+    y.erase(key);
+  }
+  CHECK(x == y);  // every other key, the tracer's included (collision_rate_exact, T, chi, ...)
+  CHECK(y.at("collision_rate_exact") == x.at("collision_rate_exact"));
+
+  // A shard of another tracer run is refused, naming the differing key.
+  TracerConfig other = c;
+  other.shard_index = 1;
+  other.T = 3.0;
+  write_tracer_outputs(run_tracer(other), shards[1]);
+  CHECK_THROWS_WITH(merge_tracer_outputs(shards),
+                    Catch::Contains("background_description") || Catch::Contains("T = 3"));
+  // A shard without its tracer sums is bad input naming the file.
+  c.shard_index = 1;
+  write_tracer_outputs(run_tracer(c), shards[1]);
+  CHECK_NOTHROW(merge_tracer_outputs(shards));
+  std::filesystem::remove(shards[1] / "tracer_blocks.csv");
+  CHECK_THROWS_AS(merge_tracer_outputs(shards), std::invalid_argument);
+  CHECK_THROWS_WITH(merge_tracer_outputs(shards), Catch::Contains("tracer_blocks.csv"));
+  std::filesystem::remove_all(root);
 }
