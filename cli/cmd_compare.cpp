@@ -88,6 +88,21 @@ void print_table(const compare::CompareResult& result) {
         "(sigma combines the MD error and the NS value's numerical error; a miss is beyond k sigma but within\n"
         " the bound, the first order NS drops: Kn^2 in the core, lambda/R at the shock; docs/compare.md)\n");
   }
+  if (result.tracer_md) {
+    const compare::TracerMdComparison& c = *result.tracer_md;
+    std::printf("\ntracer against the MD run %s (tracer/MD - 1, combined jackknife error):\n",
+                c.md_directory.string().c_str());
+    for (const auto& s : c.series) {
+      const compare::TracerMdPoint& p = s.points.back();
+      std::printf("  %-6s t = %-9g tracer %.5g ± %.2g, MD %.5g ± %.2g: %+.4f ± %.4f\n", s.observable.c_str(), p.t,
+                  p.tracer, p.tracer_error, p.md, p.md_error, p.ratio, p.ratio_error);
+    }
+    if (c.distribution)
+      std::printf("  p_imp  t = %-9g <r^4>/<r^2>^2 tracer %.4f ± %.4f, MD %.4f ± %.4f, Gaussian %.4f; chi2/dof %.3g\n",
+                  c.distribution->t, c.distribution->ratio_tracer, c.distribution->ratio_tracer_error,
+                  c.distribution->ratio_md, c.distribution->ratio_md_error, c.distribution->ratio_gaussian,
+                  c.distribution->chi2_per_dof);
+  }
   std::printf("\nverdict: %s\n", compare::verdict_summary(result).c_str());
 }
 
@@ -170,6 +185,9 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--hydro-transport", options->hydro_transport,
                       "NS transport: enskog (dense, needs a hard-particle EOS) or dilute; default enskog");
   command->add_option("--out", options->out, "Report directory (report.md, verdict.json, exponents.csv, figures/)");
+  command->add_option("--md-run", options->config.md_run,
+                      "MD run of the same scene for a tracer RUN_DIR: tracer against MD at every common time "
+                      "(figures tracer_vs_md.png, tracer_p_imp.png; tracer_vs_md.csv)");
   command->add_flag("--no-figures", options->no_figures, "Do not run gnuplot");
   add_format_option(*command, options->format);
   command->callback([options] { run(*options); });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -73,12 +74,18 @@ void shape_statistics(const std::vector<Bin>& bins, int d, double R_imp, Distrib
 
 }  // namespace
 
-std::optional<DistributionFit> fit_impurity_distribution(const RunData& run) {
+std::optional<DistributionFit> fit_impurity_distribution(const RunData& run, double t_wanted) {
   const fs::path path = run.directory / "p_imp.csv";
   if (!fs::exists(path)) return std::nullopt;
   const auto by_time = distribution_by_time(read_numeric_csv(path));
   if (by_time.empty()) return std::nullopt;
-  const auto& [t, bins] = *by_time.rbegin();
+  auto chosen = std::prev(by_time.end());
+  if (t_wanted > 0) {
+    chosen = std::find_if(by_time.begin(), by_time.end(),
+                          [&](const auto& entry) { return std::abs(entry.first - t_wanted) <= 1e-9 * t_wanted; });
+    if (chosen == by_time.end()) return std::nullopt;
+  }
+  const auto& [t, bins] = *chosen;
   DistributionFit fit;
   fit.t = t;
   fit.spread = theory::to_double(theory::scaling_exponents(run.d).R_imp.in_time);

@@ -31,8 +31,9 @@ struct DistributionFit {
   double moment_ratio = 0, moment_ratio_error = 0, moment_ratio_gaussian = 0;
 };
 
-/// Fits p_imp.csv at its last time; nullopt when the run has no p_imp.csv.
-std::optional<DistributionFit> fit_impurity_distribution(const RunData& run);
+/// Fits p_imp.csv at its recorded time t (relative tolerance 1e-9; 0: its last time); nullopt when
+/// the run has no p_imp.csv or no histogram at t.
+std::optional<DistributionFit> fit_impurity_distribution(const RunData& run, double t = 0.0);
 
 /// The figure files written into `folder` (empty names for figures whose data is absent).
 struct ExtraFigures {

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +12,7 @@
 
 #include "common/validate.hpp"
 #include "compare/figures.hpp"
+#include "compare/tracer_md.hpp"
 #include "theory/observables.hpp"
 
 namespace coldblast::compare {
@@ -67,9 +69,37 @@ common::Json verdict_json(const CompareResult& result) {
                    {"transport", hydro::to_string(m.transport)},
                    {"cells", result.continuum->ns.config.numerics.cells}};
   }
+  common::Json tracer_md = nullptr;
+  if (result.tracer_md) {
+    const TracerMdComparison& c = *result.tracer_md;
+    tracer_md = {{"md_run", c.md_directory.string()}, {"observables", common::Json::array()}, {"p_imp", nullptr}};
+    for (const auto& s : c.series) {
+      const TracerMdPoint& p = s.points.back();
+      tracer_md["observables"].push_back({{"name", s.observable},
+                                          {"t", p.t},
+                                          {"tracer", p.tracer},
+                                          {"tracer_error", p.tracer_error},
+                                          {"md", p.md},
+                                          {"md_error", p.md_error},
+                                          {"ratio_minus_1", p.ratio},
+                                          {"ratio_minus_1_error", p.ratio_error}});
+    }
+    if (c.distribution) {
+      const TracerMdDistribution& h = *c.distribution;
+      tracer_md["p_imp"] = {{"t", h.t},
+                            {"moment_ratio_tracer", h.ratio_tracer},
+                            {"moment_ratio_tracer_error", h.ratio_tracer_error},
+                            {"moment_ratio_md", h.ratio_md},
+                            {"moment_ratio_md_error", h.ratio_md_error},
+                            {"moment_ratio_gaussian", h.ratio_gaussian},
+                            {"chi2_per_dof", h.chi2_per_dof},
+                            {"bins", h.dof}};
+    }
+  }
   return {{"d", result.d},
           {"against", to_string(result.against)},
           {"hydro_model", hydro_model},
+          {"tracer_vs_md", tracer_md},
           {"amplitudes", amplitudes},
           {"notes", result.notes},
           {"sigma", result.sigma},
@@ -242,6 +272,46 @@ std::string amplitude_markdown(const CompareResult& result) {
   return md.str();
 }
 
+// The tracer run against its MD run: tracer/MD − 1 at every common time, p_imp's shape, figures.
+std::string tracer_md_markdown(const TracerMdComparison& c, bool figures) {
+  std::ostringstream md;
+  md << "\n## The kinetic tracer (Eq. (36)) against the MD\n\nMD run: `" << c.md_directory.string()
+     << "`. tracer/MD − 1 with the combined block-jackknife error (the runs are independent); nothing is "
+        "fitted.\n\n| t |";
+  for (const auto& s : c.series) md << ' ' << s.observable << " |";
+  md << "\n|---|";
+  for (std::size_t i = 0; i < c.series.size(); ++i) md << "---|";
+  md << '\n';
+  char cell[96];
+  for (std::size_t k = 0; k < c.series.front().points.size(); ++k) {
+    const double t = c.series.front().points[k].t;
+    md << "| " << format_number(std::round(t * 10) / 10) << " |";
+    for (const auto& s : c.series) {
+      const auto p = std::find_if(s.points.begin(), s.points.end(), [&](const TracerMdPoint& q) { return q.t == t; });
+      if (p == s.points.end()) {
+        md << " – |";
+        continue;
+      }
+      std::snprintf(cell, sizeof cell, " %+.3f ± %.3f |", p->ratio, p->ratio_error);
+      md << cell;
+    }
+    md << '\n';
+  }
+  if (figures) md << "\n![tracer against MD](figures/tracer_vs_md.png)\n";
+  if (c.distribution) {
+    const TracerMdDistribution& h = *c.distribution;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "\np_imp at t = %s: ⟨r⁴⟩/⟨r²⟩² = %.4f ± %.4f (tracer), %.4f ± %.4f (MD), %.4f (any Gaussian); "
+                  "χ²/dof of tracer − MD = %.3g over %d bins. The Gaussian drawn is Eq. (35) with the MD's ⟨r²⟩.\n",
+                  format_number(h.t).c_str(), h.ratio_tracer, h.ratio_tracer_error, h.ratio_md, h.ratio_md_error,
+                  h.ratio_gaussian, h.chi2_per_dof, h.dof);
+    md << text;
+    if (figures) md << "\n![p_imp: tracer, MD, Gaussian](figures/tracer_p_imp.png)\n";
+  }
+  return md.str();
+}
+
 std::string markdown(const CompareResult& result, bool figures, const std::optional<DistributionFit>& fit,
                      const ExtraFigures& extra) {
   std::ostringstream md;
@@ -310,8 +380,10 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
           "the hard-particle EOS at the run's φ, and the Navier–Stokes blast(s) at the MD's own R/λ.\n\n"
           "![profiles](figures/"
        << extra.profiles << ")\n";
+  if (result.tracer_md) md << tracer_md_markdown(*result.tracer_md, figures);
   md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
-        "with errors at every recorded pair of times).\n";
+        "with errors at every recorded pair of times)"
+     << (result.tracer_md ? ", `tracer_vs_md.csv` (the tracer against the MD at every common time)" : "") << ".\n";
   return md.str();
 }
 
@@ -348,7 +420,9 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
     if (config.figures) {
       write_observable_figure(result, staging / "figures");
       extra = write_extra_figures(result.run, fit, profile_curves(result), staging / "figures", result.until);
+      if (result.tracer_md) write_tracer_md_figures(*result.tracer_md, staging / "figures");
     }
+    if (result.tracer_md) common::write_file_atomic(staging / "tracer_vs_md.csv", tracer_md_csv(*result.tracer_md));
     if (fit)
       common::write_file_atomic(staging / "distribution_fit.json",
                                 common::Json{{"t", fit->t},

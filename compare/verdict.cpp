@@ -248,6 +248,16 @@ CompareResult run_compare(const CompareConfig& config, const ReferenceExponents&
     result.pass = result.pass && v.pass;
     result.observables.push_back(std::move(v));
   }
+  if (!config.md_run.empty()) {
+    RunData md;
+    try {
+      md = read_run(config.md_run);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--md-run: ") + e.what());
+    }
+    if (config.until > 0) truncate_run(md, config.until);
+    result.tracer_md = compare_tracer_with_md(result.run, md);
+  }
   return result;
 }
 

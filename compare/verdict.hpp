@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "compare/continuum.hpp"
 #include "compare/power_law.hpp"
 #include "compare/run_data.hpp"
+#include "compare/tracer_md.hpp"
 
 namespace coldblast::compare {
 
@@ -50,6 +52,9 @@ struct CompareConfig {
   int hydro_cells = 256;                 ///< Navier–Stokes cells for Reference::hydro, [16, 100000]
   /// The NS model for Reference::hydro (unset: the dense model at the run's φ); only with hydro.
   HydroModelOptions hydro_model;
+  /// An MD run of the same scene for a tracer run_dir (--md-run; empty: none): the tracer against
+  /// the MD (compare/tracer_md.hpp), as of `until` as well.
+  std::filesystem::path md_run;
   void validate() const;
   /// The allowance in force: `allowance` if >= 0, else the reference's default.
   double effective_allowance() const;
@@ -90,6 +95,8 @@ struct CompareResult {
   /// The continuum solved for this run (hydro: always; else when a report drew the profiles);
   /// shared so that the reports of one `reproduce` use one solve.
   std::shared_ptr<const ContinuumReference> continuum;
+  /// With CompareConfig::md_run: the run (a tracer's) against that MD run.
+  std::optional<TracerMdComparison> tracer_md;
 };
 
 /// "PASS", "MISS" (CompareResult::miss) or "FAIL".

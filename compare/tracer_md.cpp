@@ -1,0 +1,258 @@
+#include "compare/tracer_md.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/output.hpp"
+#include "common/validate.hpp"
+#include "compare/figures.hpp"
+#include "compare/power_law.hpp"
+#include "compare/report.hpp"
+#include "theory/exponents.hpp"
+#include "theory/observables.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::compare {
+
+namespace fs = std::filesystem;
+using common::format_number;
+
+namespace {
+
+bool same_time(double a, double b) {
+  return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+}
+
+/// The catalogue transform of the ensemble mean at every time, with its block-jackknife error.
+std::pair<std::vector<double>, std::vector<double>> values_with_errors(const BlockSeries& s) {
+  const JackknifeResult j = jackknife(s, [](const std::vector<double>& v) {
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+  });
+  std::vector<double> value(s.time_count()), error(s.time_count());
+  for (std::size_t k = 0; k < s.time_count(); ++k) {
+    value[k] = j.value[static_cast<Eigen::Index>(k)];
+    error[k] = std::sqrt(j.covariance(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)));
+  }
+  return {value, error};
+}
+
+const theory::Exponent& paper_exponent(const theory::ScalingExponents& e, const std::string& name) {
+  if (name == "R_imp") return e.R_imp;
+  if (name == "V_imp") return e.V_imp;
+  return e.C_imp;
+}
+
+TracerMdSeries compare_series(const RunData& tracer, const RunData& md, const std::string& name) {
+  const BlockSeries &a = tracer.series.at(name), &b = md.series.at(name);
+  const auto [va, ea] = values_with_errors(a);
+  const auto [vb, eb] = values_with_errors(b);
+  TracerMdSeries out;
+  out.observable = name;
+  const theory::Exponent& alpha = paper_exponent(theory::scaling_exponents(tracer.d), name);
+  out.alpha = theory::to_double(alpha.in_time);
+  out.alpha_rational = theory::to_string(alpha.in_time);
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < a.time_count(); ++k) {
+    while (j < b.time_count() && b.t[j] < a.t[k] && !same_time(b.t[j], a.t[k])) ++j;
+    if (j == b.time_count()) break;
+    if (!same_time(a.t[k], b.t[j]) || !(va[k] > 0) || !(vb[j] > 0)) continue;
+    TracerMdPoint p{a.t[k], va[k], ea[k], vb[j], eb[j], va[k] / vb[j] - 1.0, 0.0};
+    // Independent runs: relative errors add in quadrature.
+    p.ratio_error = va[k] / vb[j] * std::hypot(ea[k] / va[k], eb[j] / vb[j]);
+    out.points.push_back(p);
+  }
+  return out;
+}
+
+struct Histogram {
+  std::vector<double> r, width, p, error;
+};
+
+std::map<double, Histogram> histograms(const RunData& run) {
+  const CsvTable table = read_numeric_csv(run.directory / "p_imp.csv");
+  const std::size_t t = table.column("t"), r = table.column("r"), p = table.column("p"), e = table.column("p_stderr"),
+                    lo = table.column("r_lo"), hi = table.column("r_hi");
+  std::map<double, Histogram> by_time;
+  for (const auto& row : table.rows) {
+    Histogram& h = by_time[row[t]];
+    h.r.push_back(row[r]);
+    h.width.push_back(row[hi] - row[lo]);
+    h.p.push_back(row[p]);
+    h.error.push_back(row[e]);
+  }
+  return by_time;
+}
+
+std::optional<TracerMdDistribution> compare_distribution(const RunData& tracer, const RunData& md) {
+  if (!fs::exists(tracer.directory / "p_imp.csv") || !fs::exists(md.directory / "p_imp.csv")) return std::nullopt;
+  const auto a = histograms(tracer), b = histograms(md);
+  // The last time both runs hold.
+  const Histogram *ha = nullptr, *hb = nullptr;
+  double t = 0;
+  for (const auto& [ta, h] : a)
+    for (const auto& [tb, g] : b)
+      if (same_time(ta, tb)) t = tb, ha = &h, hb = &g;
+  if (!ha) return std::nullopt;
+  if (ha->r.size() != hb->r.size())
+    throw std::invalid_argument("--md-run: p_imp.csv has " + std::to_string(hb->r.size()) + " bins there, " +
+                                std::to_string(ha->r.size()) + " in the tracer run (same scene needed)");
+  TracerMdDistribution out;
+  out.t = t;
+  out.r = hb->r;
+  out.width = hb->width;
+  out.p_md = hb->p;
+  out.p_md_error = hb->error;
+  out.p_tracer = ha->p;
+  out.p_tracer_error = ha->error;
+  double chi2 = 0;
+  for (std::size_t i = 0; i < out.r.size(); ++i) {
+    if (!same_time(ha->r[i], hb->r[i]))
+      throw std::invalid_argument("--md-run: p_imp bins differ at t = " + format_number(t) +
+                                  ": r = " + format_number(hb->r[i]) + " there, " + format_number(ha->r[i]) +
+                                  " in the tracer run (same scene and A_d needed)");
+    const double variance = ha->error[i] * ha->error[i] + hb->error[i] * hb->error[i];
+    if (ha->error[i] > 0 && hb->error[i] > 0) {
+      chi2 += std::pow(ha->p[i] - hb->p[i], 2) / variance;
+      ++out.dof;
+    }
+  }
+  out.chi2_per_dof = out.dof > 0 ? chi2 / out.dof : NAN;
+  // The Gaussian with the MD's <r^2> = 2 R_imp^2 (the R_imp observable: Eq. (38)).
+  const BlockSeries& R = md.series.at("R_imp");
+  const auto R_values = R.ensemble_values();
+  for (std::size_t k = 0; k < R.time_count(); ++k)
+    if (same_time(R.t[k], t)) out.gaussian_R = R_values[k] * std::sqrt(2.0 / md.d);
+  if (!(out.gaussian_R > 0)) throw std::invalid_argument("--md-run: no R_imp at t = " + format_number(t));
+  for (const double r : out.r) out.p_gaussian.push_back(theory::radial_position_density(md.d, r, out.gaussian_R));
+  const auto fa = fit_impurity_distribution(tracer, t), fb = fit_impurity_distribution(md, t);
+  out.ratio_tracer = fa->moment_ratio;
+  out.ratio_tracer_error = fa->moment_ratio_error;
+  out.ratio_md = fb->moment_ratio;
+  out.ratio_md_error = fb->moment_ratio_error;
+  out.ratio_gaussian = (md.d + 2.0) / md.d;
+  return out;
+}
+
+std::string rounded(double x, int digits) {
+  if (!std::isfinite(x) || x == 0) return format_number(x);
+  const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(x))));
+  return format_number(std::round(x * scale) / scale);
+}
+
+std::string observables_figure(const TracerMdComparison& c, const fs::path& folder) {
+  const std::size_t n = c.series.size();
+  std::ostringstream script;
+  script << "set terminal pngcairo size " << 620 * n << ",900 font 'Sans,13'\nset output 'tracer_vs_md.png'\n"
+         << "set multiplot title 'Impurity in " << c.d
+         << "D: kinetic tracer (Lorentz-Boltzmann, Eq. 36) against MD; 1{/Symbol s} error bars (block jackknife), "
+            "mostly smaller than the symbols'\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    const TracerMdSeries& s = c.series[i];
+    const std::string file = "tracer_md_" + s.observable + ".dat";
+    std::ostringstream data;
+    data.precision(12);
+    data << "# t tracer tracer_stderr md md_stderr tracer/md-1 stderr\n";
+    for (const auto& p : s.points)
+      data << p.t << ' ' << p.tracer << ' ' << p.tracer_error << ' ' << p.md << ' ' << p.md_error << ' ' << p.ratio
+           << ' ' << p.ratio_error << '\n';
+    common::write_file_atomic(folder / file, data.str());
+    if (s.points.empty()) continue;
+    const std::string label = theory::observable_info(s.observable).label;
+    const TracerMdPoint& last = s.points.back();
+    const double x0 = static_cast<double>(i) / n, w = 1.0 / n;
+    const std::string xrange = "set xrange [" + format_number(s.points.front().t / 1.5) + ":" +
+                               format_number(last.t * 1.5) + "]\n";  // the same in both panels
+    script << "reset\nset origin " << x0 << ",0.36\nset size " << w << ",0.6\n"
+           << "set logscale xy\nset format x '10^{%L}'\nset grid\n"
+           << xrange << "set xlabel 't'\nset ylabel '" << label << "'\n"
+           << "set key " << (s.alpha > 0 ? "top left" : "bottom left") << " font ',11'\n"
+           << "set title '" << label << ": tracer/MD - 1 = " << format_number(std::round(last.ratio * 1000) / 1000)
+           << " ± " << rounded(last.ratio_error, 1) << " at t = " << rounded(last.t, 4) << "'\n"
+           << "plot '" << file << "' u 1:4:5 w yerrorbars pt 7 ps 1.0 lc rgb '#d62728' t 'MD', '" << file
+           << "' u 1:2:3 w yerrorbars pt 6 ps 1.4 lw 1.5 lc rgb '#1f77b4' t 'tracer (Eq. 36)', " << last.md << "*(x/"
+           << last.t << ")**(" << s.alpha << ") w l dt 2 lw 2 lc rgb 'black' t 't^{" << s.alpha_rational
+           << "} (paper)'\n"
+           << "reset\nset origin " << x0 << ",0\nset size " << w << ",0.36\n"
+           << "set logscale x\nset format x '10^{%L}'\nset grid\n"
+           << xrange << "set xlabel 't'\nset ylabel 'tracer/MD - 1'\n"
+           << "unset key\nplot '" << file
+           << "' u 1:6:7 w yerrorbars pt 6 ps 1.2 lw 1.5 lc rgb '#1f77b4', 0 w l lw 1 lc rgb 'black'\n";
+  }
+  script << "unset multiplot\n";
+  common::write_file_atomic(folder / "tracer_vs_md.gp", script.str());
+  run_gnuplot(folder, "tracer_vs_md.gp");
+  return "tracer_vs_md.png";
+}
+
+std::string distribution_figure(const TracerMdComparison& c, const fs::path& folder) {
+  const TracerMdDistribution& h = *c.distribution;
+  std::ostringstream data;
+  data.precision(12);
+  data << "# r p_tracer p_tracer_stderr p_md p_md_stderr p_gaussian (t = " << format_number(h.t) << ")\n";
+  for (std::size_t i = 0; i < h.r.size(); ++i)
+    data << h.r[i] << ' ' << h.p_tracer[i] << ' ' << h.p_tracer_error[i] << ' ' << h.p_md[i] << ' ' << h.p_md_error[i]
+         << ' ' << h.p_gaussian[i] << '\n';
+  common::write_file_atomic(folder / "tracer_md_p_imp.dat", data.str());
+  const std::string p = theory::observable_info("p_imp").label;
+  std::ostringstream script;
+  script << "set terminal pngcairo size 1000,700 font 'Sans,13'\nset output 'tracer_p_imp.png'\n"
+         << "set title \"" << p << "(r) at t = " << rounded(h.t, 4)
+         << ": <r^4>/<r^2>^2 = " << rounded(h.ratio_tracer, 3) << " ± " << rounded(h.ratio_tracer_error, 1)
+         << " (tracer), " << rounded(h.ratio_md, 3) << " ± " << rounded(h.ratio_md_error, 1) << " (MD), "
+         << format_number(h.ratio_gaussian) << " (Gaussian)\"\n"
+         << "set xlabel 'r (distance from the start)'\nset ylabel '" << p << "(r)'\nset grid\nset key top right\n"
+         << "set xrange [0:*]\n"
+         << "plot 'tracer_md_p_imp.dat' u 1:4:5 w yerrorbars pt 7 ps 1.0 lc rgb '#d62728' t 'MD', "
+         << "'' u 1:2:3 w yerrorbars pt 6 ps 1.3 lw 1.5 lc rgb '#1f77b4' t 'tracer (Eq. 36)', "
+         << "'' u 1:6 w l lw 2 dt 2 lc rgb 'black' t 'Gaussian, Eq. (" << (c.d == 2 ? "39" : "35")
+         << "), with the MD''s <r^2>'\n";
+  common::write_file_atomic(folder / "tracer_p_imp.gp", script.str());
+  run_gnuplot(folder, "tracer_p_imp.gp");
+  return "tracer_p_imp.png";
+}
+
+}  // namespace
+
+TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& md) {
+  if (tracer.d != md.d)
+    throw std::invalid_argument("--md-run: d = " + std::to_string(md.d) + " there, " + std::to_string(tracer.d) +
+                                " in the tracer run " + tracer.directory.string());
+  TracerMdComparison c;
+  c.d = tracer.d;
+  c.tracer_directory = tracer.directory;
+  c.md_directory = md.directory;
+  for (const char* name : {"R_imp", "V_imp", "C_imp"})
+    if (tracer.series.count(name) && md.series.count(name)) {
+      TracerMdSeries s = compare_series(tracer, md, name);
+      if (!s.points.empty()) c.series.push_back(std::move(s));
+    }
+  if (c.series.empty())
+    throw std::invalid_argument("--md-run: " + md.directory.string() + " and the tracer run " +
+                                tracer.directory.string() + " share no recording time of R_imp, V_imp or C_imp");
+  c.distribution = compare_distribution(tracer, md);
+  return c;
+}
+
+std::string tracer_md_csv(const TracerMdComparison& c) {
+  std::ostringstream out;
+  out << common::provenance_header({{"tracer_run", c.tracer_directory.string()}, {"md_run", c.md_directory.string()}},
+                                   "the runs' units; errors: block jackknife, the runs independent")
+      << "t,observable,tracer,tracer_stderr,md,md_stderr,ratio_minus_1,ratio_minus_1_stderr\n";
+  for (const auto& s : c.series)
+    for (const auto& p : s.points)
+      out << format_number(p.t) << ',' << s.observable << ',' << format_number(p.tracer) << ','
+          << format_number(p.tracer_error) << ',' << format_number(p.md) << ',' << format_number(p.md_error) << ','
+          << format_number(p.ratio) << ',' << format_number(p.ratio_error) << '\n';
+  return out.str();
+}
+
+TracerMdFigures write_tracer_md_figures(const TracerMdComparison& comparison, const fs::path& folder) {
+  TracerMdFigures figures;
+  figures.observables = observables_figure(comparison, folder);
+  if (comparison.distribution) figures.distribution = distribution_figure(comparison, folder);
+  return figures;
+}
+
+}  // namespace coldblast::compare

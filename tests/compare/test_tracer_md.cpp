@@ -1,0 +1,176 @@
+// A tracer run against an MD run (compare/tracer_md.*): on synthetic runs whose tracer block sums
+// are the MD's scaled by a known factor, tracer/MD − 1 is that factor exactly, the errors are the
+// block jackknife's (checked against its closed form for a mean), only common times are compared,
+// and p_imp is compared at the last common time beside the Gaussian of the MD's ⟨r²⟩. The figures'
+// data files hold these numbers and the PNGs are drawn.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "common/output.hpp"
+#include "compare/tracer_md.hpp"
+#include "tests/compare/synthetic.hpp"
+#include "tests/temp_path.hpp"
+#include "theory/prefactors.hpp"
+
+using namespace coldblast::compare;
+using coldblast::compare::testing::synthetic_series;
+using coldblast::compare::testing::write_synthetic_run;
+namespace fs = std::filesystem;
+
+namespace {
+
+BlockSeries scaled(BlockSeries s, double factor, std::size_t times) {
+  for (auto& block : s.sums) {
+    for (double& x : block) x *= factor;
+    block.resize(times);
+  }
+  for (auto& block : s.counts) block.resize(times);
+  s.t.resize(times);
+  return s;
+}
+
+// p_imp.csv with the given densities at times t (same bins at every time), error `error` per bin.
+void write_p_imp(const fs::path& dir, const std::vector<double>& times, int bins, double width,
+                 const std::function<double(double)>& density, double error) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "# synthetic\nt,bin,r_lo,r_hi,r,p,p_stderr,count\n";
+  for (const double t : times)
+    for (int b = 0; b < bins; ++b) {
+      const double r = (b + 0.5) * width;
+      out << t << ',' << b << ',' << b * width << ',' << (b + 1) * width << ',' << r << ',' << density(r) << ','
+          << error << ",1000\n";
+    }
+  coldblast::common::write_file_atomic(dir / "p_imp.csv", out.str());
+}
+
+std::vector<std::vector<double>> read_dat(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::vector<double> row;
+    for (double x; fields >> x;) row.push_back(x);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_imp and figures", "[fast]") {
+  const fs::path root = coldblast::test::unique_temp_path("coldblast_test_tracer_md");
+  const int blocks = 20, times = 14, tracer_times = 12;
+  const BlockSeries R = synthetic_series(11, blocks, 40, times, 0.8, 0.3, 0.6, Transform::sqrt);
+  const BlockSeries V = synthetic_series(12, blocks, 40, times, -0.8, 0.3, 0.6, Transform::sqrt);
+  BlockSeries C = synthetic_series(13, blocks, 40, times, 0.7, 0.3, 0.6);
+  C.observable = "C_imp";
+  BlockSeries Vs = V;
+  Vs.observable = "V_imp";
+  write_synthetic_run(root / "md", 2, {{"R_imp", R}, {"V_imp", Vs}, {"C_imp", C}});
+  // The tracer: the MD's sums times 1.21 (R_imp: ratio 1.1), 0.64 (V_imp: 0.8), 1.3 (C_imp), at
+  // the first 12 of the MD's 14 times.
+  write_synthetic_run(root / "tracer", 2,
+                      {{"R_imp", scaled(R, 1.21, tracer_times)},
+                       {"V_imp", scaled(Vs, 0.64, tracer_times)},
+                       {"C_imp", scaled(C, 1.3, tracer_times)}});
+  const double t_last = R.t[tracer_times - 1], t_before = R.t[tracer_times - 2];
+  // p_imp: the MD the exact Gaussian of R = 2 (2D: Eq. (39)), the tracer the same + 0.002.
+  const double R_gauss = 2.0;
+  const auto gaussian = [&](double r) { return coldblast::theory::radial_position_density(2, r, R_gauss); };
+  write_p_imp(root / "md", {t_before, t_last, R.t[times - 1]}, 200, 0.05, gaussian, 1e-3);
+  write_p_imp(
+      root / "tracer", {t_before, t_last}, 200, 0.05, [&](double r) { return gaussian(r) + 2e-3; }, 1e-3);
+
+  const RunData tracer = read_run(root / "tracer"), md = read_run(root / "md");
+  const TracerMdComparison c = compare_tracer_with_md(tracer, md);
+  REQUIRE(c.series.size() == 3);
+  const std::map<std::string, double> expected{{"R_imp", 0.1}, {"V_imp", -0.2}, {"C_imp", 0.3}};
+  for (const auto& s : c.series) {
+    INFO(s.observable);
+    REQUIRE(s.points.size() == static_cast<std::size_t>(tracer_times));
+    const BlockSeries& m = md.series.at(s.observable);
+    const auto values = m.ensemble_values();
+    for (std::size_t k = 0; k < s.points.size(); ++k) {
+      const TracerMdPoint& p = s.points[k];
+      CHECK(p.t == m.t[k]);
+      CHECK(p.md == Approx(values[k]).epsilon(1e-13));
+      CHECK(p.ratio == Approx(expected.at(s.observable)).margin(1e-12));
+      // The same realizations scaled: equal relative errors, combined in quadrature.
+      CHECK(p.tracer_error / p.tracer == Approx(p.md_error / p.md).epsilon(1e-9));
+      CHECK(p.ratio_error == Approx((1 + p.ratio) * std::sqrt(2.0) * p.md_error / p.md).epsilon(1e-9));
+      CHECK(p.md_error > 0);
+    }
+  }
+  // C_imp is a plain mean: its jackknife error has the closed form sqrt((B-1)/B Σ (θ_-b − θ̄)²).
+  for (std::size_t k = 0; k < static_cast<std::size_t>(tracer_times); ++k) {
+    double total = 0, count = 0;
+    for (int b = 0; b < blocks; ++b) total += C.sums[b][k], count += C.counts[b][k];
+    std::vector<double> leave(blocks);
+    double mean = 0;
+    for (int b = 0; b < blocks; ++b) {
+      leave[b] = (total - C.sums[b][k]) / (count - C.counts[b][k]);
+      mean += leave[b] / blocks;
+    }
+    double square = 0;
+    for (const double x : leave) square += (x - mean) * (x - mean);
+    CHECK(c.series[2].points[k].md_error == Approx(std::sqrt((blocks - 1.0) / blocks * square)).epsilon(1e-9));
+  }
+  CHECK(c.series[0].alpha_rational == "2/5");  // R_imp's exponent in 2D (paper Table 2)
+
+  // p_imp at the last common time (not the MD's own last time).
+  REQUIRE(c.distribution);
+  const TracerMdDistribution& h = *c.distribution;
+  CHECK(h.t == t_last);
+  CHECK(h.dof == 200);
+  CHECK(h.chi2_per_dof == Approx(2.0).epsilon(1e-9));  // (0.002)² / (2 × 0.001²) per bin
+  CHECK(h.ratio_md == Approx(2.0).epsilon(2e-3));      // a Gaussian, (d+2)/d, up to the bins
+  CHECK(h.ratio_gaussian == 2.0);
+  const double R_md = md.series.at("R_imp").ensemble_values()[tracer_times - 1];
+  CHECK(h.gaussian_R == Approx(R_md).epsilon(1e-13));  // 2D: ⟨r²⟩ = 2 R_imp² is Eq. (39)'s
+  for (std::size_t i = 0; i < h.r.size(); i += 37)
+    CHECK(h.p_gaussian[i] == Approx(coldblast::theory::radial_position_density(2, h.r[i], R_md)).epsilon(1e-12));
+
+  // The figures' data files hold these numbers; the PNGs are drawn (size > 10 kB).
+  const fs::path folder = root / "figures";
+  const TracerMdFigures figures = write_tracer_md_figures(c, folder);
+  CHECK(figures.observables == "tracer_vs_md.png");
+  CHECK(figures.distribution == "tracer_p_imp.png");
+  CHECK(fs::file_size(folder / "tracer_vs_md.png") > 10000);
+  CHECK(fs::file_size(folder / "tracer_p_imp.png") > 10000);
+  for (const auto& s : c.series) {
+    const auto rows = read_dat(folder / ("tracer_md_" + s.observable + ".dat"));
+    REQUIRE(rows.size() == s.points.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      REQUIRE(rows[k].size() == 7);
+      CHECK(rows[k][0] == Approx(s.points[k].t).epsilon(1e-11));
+      CHECK(rows[k][1] == Approx(s.points[k].tracer).epsilon(1e-11));
+      CHECK(rows[k][3] == Approx(s.points[k].md).epsilon(1e-11));
+      CHECK(rows[k][5] == Approx(expected.at(s.observable)).margin(1e-10));
+      CHECK(rows[k][6] == Approx(s.points[k].ratio_error).epsilon(1e-11));
+    }
+  }
+  const auto p_rows = read_dat(folder / "tracer_md_p_imp.dat");
+  REQUIRE(p_rows.size() == 200);
+  for (std::size_t i = 0; i < p_rows.size(); i += 19) {
+    CHECK(p_rows[i][1] - p_rows[i][3] == Approx(2e-3).epsilon(1e-6));  // tracer − MD
+    CHECK(p_rows[i][5] == Approx(h.p_gaussian[i]).epsilon(1e-11));
+  }
+  const std::string csv = tracer_md_csv(c);
+  CHECK(csv.find("t,observable,tracer,tracer_stderr,md,md_stderr,ratio_minus_1,ratio_minus_1_stderr\n") !=
+        std::string::npos);
+
+  // Runs that cannot be compared: bad input naming --md-run.
+  write_p_imp(root / "tracer", {t_last}, 100, 0.1, gaussian, 1e-3);
+  CHECK_THROWS_WITH(compare_tracer_with_md(read_run(root / "tracer"), md), Catch::Contains("--md-run: p_imp.csv"));
+  write_synthetic_run(root / "md3", 3, {{"C_imp", C}});
+  CHECK_THROWS_WITH(compare_tracer_with_md(tracer, read_run(root / "md3")), Catch::Contains("--md-run: d = 3"));
+  fs::remove_all(root);
+}
