@@ -77,6 +77,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  coldblast::common::check_standard_output_writes();  // keeps the reason of a failed write to stdout
   const int code = run(argc, argv);
   const int streams = coldblast::common::finish_standard_streams();
   return code != 0 ? code : streams;

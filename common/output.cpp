@@ -13,6 +13,10 @@
 #include <iostream>
 #include <stdexcept>
 #include <system_error>
+#if defined(__GLIBC__) && defined(__GLIBCXX__)
+#include <ext/stdio_sync_filebuf.h>
+#define COLDBLAST_CHECKED_STDOUT 1
+#endif
 
 #include "coldblast/build_info.hpp"
 
@@ -31,9 +35,7 @@ std::runtime_error failure(const std::string& what, const fs::path& path, int er
 }
 
 /// write(2) until done, retrying on EINTR; false (errno set) on any failure.
-bool write_all(int fd, const std::string& content) {
-  const char* data = content.data();
-  std::size_t left = content.size();
+bool write_all(int fd, const char* data, std::size_t left) {
   while (left > 0) {
     const ssize_t n = ::write(fd, data, left);
     if (n < 0 && errno == EINTR) continue;
@@ -46,6 +48,23 @@ bool write_all(int fd, const std::string& content) {
   }
   return true;
 }
+bool write_all(int fd, const std::string& content) {
+  return write_all(fd, content.data(), content.size());
+}
+
+/// errno of the first failed write to standard output through the checked stream (0: none yet).
+std::atomic<int> stdout_error{0};
+
+#ifdef COLDBLAST_CHECKED_STDOUT
+/// fopencookie's write function for the checked stdout: write(2) to descriptor 1, keeping the
+/// first failure's errno, which later calls would overwrite before the exit check reads it.
+ssize_t write_checked_stdout(void*, const char* data, std::size_t size) {
+  if (write_all(STDOUT_FILENO, data, size)) return static_cast<ssize_t>(size);
+  int expected = 0;
+  stdout_error.compare_exchange_strong(expected, errno);
+  return 0;  // fopencookie: 0 reports the error (the stream's error flag is set)
+}
+#endif
 
 /// A device, FIFO or socket: opened as it is (never created, truncated or renamed onto).
 void write_through(const fs::path& path, const std::string& content) {
@@ -184,6 +203,23 @@ int remove_stale_temporaries(const fs::path& folder) {
   return removed;
 }
 
+void check_standard_output_writes() {
+#ifdef COLDBLAST_CHECKED_STDOUT
+  static bool installed = false;
+  if (installed) return;
+  cookie_io_functions_t io{};
+  io.write = write_checked_stdout;
+  FILE* stream = ::fopencookie(nullptr, "w", io);
+  if (stream == nullptr) return;  // keep the plain stdout (the exit check may then lack the reason)
+  std::fflush(stdout);
+  std::setvbuf(stream, nullptr, ::isatty(STDOUT_FILENO) ? _IOLBF : _IOFBF, BUFSIZ);
+  stdout = stream;  // glibc's stdout is an assignable variable (glibc manual, "Standard Streams")
+  static __gnu_cxx::stdio_sync_filebuf<char> buffer(stream);  // std::cout stays in step with printf
+  std::cout.rdbuf(&buffer);
+  installed = true;
+#endif
+}
+
 int finish_standard_streams() noexcept {
   errno = 0;
   try {
@@ -191,7 +227,9 @@ int finish_standard_streams() noexcept {
   } catch (...) {
   }
   const bool out_failed = std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.good();
-  const int error = errno;  // of the first failed flush (a later one of an emptied buffer succeeds)
+  // The first failed write's errno, kept by the checked stream; else errno of this flush (a flush of
+  // an emptied buffer after an earlier failure succeeds and leaves errno 0: "write error").
+  const int error = stdout_error.load() != 0 ? stdout_error.load() : errno;
   if (out_failed) {
     std::fprintf(stderr, "coldblast: error: cannot write standard output: %s\n",
                  error != 0 ? std::strerror(error) : "write error");

@@ -30,6 +30,13 @@ void write_file_atomic(const std::filesystem::path& path, const std::string& con
 /// ("NAME.tmp.PID.N" whose process PID no longer runs); returns how many. Missing folder: 0.
 int remove_stale_temporaries(const std::filesystem::path& folder);
 
+/// Routes stdout and std::cout (both, so printf and << stay in order) through one stream that keeps
+/// the errno of the first failed write, so that finish_standard_streams can name the reason ("No
+/// space left on device") when the failure happened part-way through a large output rather than in
+/// the exit flush, by which time errno is gone. Called by main() first; a no-op outside glibc and
+/// libstdc++, and when called again.
+void check_standard_output_writes();
+
 /// The GNU close_stdout rule, called by main() before it returns: flushes stdout and stderr and
 /// returns 1 after printing "coldblast: error: cannot write standard output: REASON" on stderr when
 /// a write to stdout failed (a full disk, a closed descriptor, a pipe whose reader left while

@@ -46,11 +46,15 @@ if(NOT is_fifo EQUAL 0)
   message(FATAL_ERROR "the FIFO was replaced")
 endif()
 
-# An output smaller than stdio's buffer (4 KiB), so the write fails in the exit check, which names the
-# errno. A larger output fails in a write during the run; the exit check then reports only "write error"
-# (the errno is gone by then): a known limit of common::finish_standard_streams.
+# An output smaller than stdio's buffer (4 KiB) fails in the exit check's flush; a large one (3 MB)
+# fails in a write part-way through the run, whose errno the checked stdout keeps for the exit check
+# (common::check_standard_output_writes): both name the reason, and only once.
 expect("stdout on /dev/full" 1 "cannot write standard output: No space left on device"
        sh -c "'${BINARY}' theory --d 1 --format json > /dev/full")
+expect("3 MB of stdout on /dev/full" 1 "^coldblast: error: cannot write standard output: No space left on device\n$"
+       sh -c "'${BINARY}' theory --d-range 2..1001 --format json > /dev/full")
+expect("180 kB of table on /dev/full" 1 "^coldblast: error: cannot write standard output: No space left on device\n$"
+       sh -c "'${BINARY}' theory --d-range 2..1001 > /dev/full")
 expect("stdout closed" 1 "cannot write standard output: Bad file descriptor" sh -c "'${BINARY}' theory >&-")
 expect("stdout to a reader that leaves" 0 "^141\n$"
        bash -c "'${BINARY}' theory --d-range 2..1001 --format json | head -c 10 >/dev/null
