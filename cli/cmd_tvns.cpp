@@ -200,7 +200,7 @@ void add_tvns_command(CLI::App& app) {
   command
       ->add_option("--phi", options->phi,
                    "Ambient packing fraction phi (dimensionless; hard-particle EOS only: henderson (0, 0.89286), "
-                   "carnahan-starling (0, 0.72042))")
+                   "carnahan-starling (0, 0.686): docs/stress.md)")
       ->capture_default_str();
   command->add_option("--tolerance", options->tolerance, "Requested relative accuracy of A_d (1e-14..1e-3)")
       ->capture_default_str();

@@ -22,6 +22,10 @@
 
 namespace coldblast::hydro {
 
+double tvns_max_packing_fraction(Eos eos) {
+  return eos == Eos::carnahan_starling ? 0.686 : max_ambient_packing_fraction(eos);
+}
+
 void TvnsConfig::validate() const {
   common::require_integer_in_range("d", d, 1, 3, "(1 planar, 2 cylindrical, 3 spherical)");
   if (eos == Eos::ideal) {
@@ -38,10 +42,13 @@ void TvnsConfig::validate() const {
     if (gamma != 0.0 && gamma != 1.0 + 2.0 / d)
       throw std::invalid_argument("gamma = " + common::format_number(gamma) +
                                   " cannot be set with eos = " + to_string(eos) + " (hard particles: e = (d/2) T)");
-    common::require_in_range("phi", phi, 0.0, max_ambient_packing_fraction(eos), common::Bound::open,
-                             common::Bound::open,
-                             "for eos = " + to_string(eos) + " (post-shock phi must stay below close packing " +
-                                 common::format_number(close_packing_fraction(eos)) + ")");
+    const std::string reason = eos == Eos::carnahan_starling
+                                   ? " (above 0.686 the interior empties and the self-similar ODE stalls; "
+                                     "docs/stress.md)"
+                                   : " (post-shock phi must stay below close packing " +
+                                         common::format_number(close_packing_fraction(eos)) + ")";
+    common::require_in_range("phi", phi, 0.0, tvns_max_packing_fraction(eos), common::Bound::open, common::Bound::open,
+                             "for eos = " + to_string(eos) + reason);
   }
   common::require_in_range("tolerance", tolerance, 1e-14, 1e-3, common::Bound::closed, common::Bound::closed);
 }

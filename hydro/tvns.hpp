@@ -17,12 +17,21 @@ namespace coldblast::hydro {
 constexpr double min_gamma = 1.001;
 constexpr double max_gamma = 1000.0;
 
+/// Largest ambient packing fraction TvNS solves for a hard-particle EOS (exclusive): Henderson up to
+/// max_ambient_packing_fraction (0.89286); Carnahan-Starling only up to 0.686, below its 0.72042.
+/// Above phi ≈ 0.686 the spheres' self-similar flow all but empties its interior: V/(x Rdot) runs
+/// into 1 and the density falls by more than ten decades within 1.5 < -ln(r/R) < 1.7, where the
+/// ODE's step control stalls (more than 200000 steps at 0.687-0.69 and 0.702-0.71; docs/stress.md).
+/// The EOS is a fluid-branch fit that stops being trustworthy at freezing (shocked phi ≈ 0.494,
+/// reached from ambient phi ≈ 0.40), so the range lost holds no trustworthy physics.
+double tvns_max_packing_fraction(Eos eos);
+
 /// Physical and numerical options of the self-similar blast (units: m = 1, k_B = 1).
 struct TvnsConfig {
   int d = 2;                 ///< spatial dimension: 1 planar, 2 cylindrical, 3 spherical
   double gamma = 0.0;        ///< adiabatic index in [min_gamma, max_gamma] (ideal EOS only); 0 means 1 + 2/d
   Eos eos = Eos::ideal;      ///< ideal, henderson (d = 2) or carnahan_starling (d = 3)
-  double phi = 0.0;          ///< ambient packing fraction, (0, max_ambient_packing_fraction) for hard particles
+  double phi = 0.0;          ///< ambient packing fraction, (0, tvns_max_packing_fraction) for hard particles
   double tolerance = 1e-13;  ///< requested relative accuracy of A_d, [1e-14, 1e-3]
   /// Throws std::invalid_argument naming the first field out of range and the range.
   void validate() const;

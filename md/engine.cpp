@@ -165,7 +165,8 @@ void Engine<D, Queue>::guard_tripped() const {
   std::ostringstream message;
   message << "a moving particle came within " << 2.0 * (2.0 * radius_[host_species])
           << " (2 sigma) of the edge of the simulated region (radius " << config_.region_radius << ") at t = " << now_
-          << ": the shock outran the theory estimate; " << config_.guard_advice;
+          << ": the shock outran the theory estimate; "
+          << (config_.guard_advice_at ? config_.guard_advice_at(now_) : config_.guard_advice);
   throw std::runtime_error(message.str());
 }
 

@@ -5,6 +5,7 @@
 // choice of event calendar. At zero temperature a resting particle schedules nothing: the cost
 // scales with the moving particles and the collisions, not with N.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct EngineConfig {
   double region_radius = 1.0;   ///< open: particles lie within this radius of the origin (length)
   double guard_radius = 1.0;    ///< open: a moving particle entering a cell reaching beyond it stops the run
   std::string guard_advice;     ///< open: what to raise when the guard trips (for the error message)
+  /// open: the advice as a function of the time the guard tripped (used instead of guard_advice if set)
+  std::function<std::string(double now)> guard_advice_at;
   /// Cell side (length); 0 = automatic. Never below the largest contact distance, except in open
   /// geometry with impurities larger than the host: then cells are as narrow as the host contact
   /// distance and the impurities are "big" (a wider stencil, see engine.cpp). Periodic geometry

@@ -105,6 +105,22 @@ RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLa
   return out;
 }
 
+/// What to do when a particle reached the guard at time `now`: the box_margin whose region would hold
+/// it to t_max if every particle ahead of the blast kept its speed (in the cold gas they only slow
+/// down, apart from hosts hit head-on by heavier impurities), the region scaled by t_max/now; above
+/// box_margin's 100, lower t_max or E instead.
+std::string guard_advice(const ResolvedScene& scene, double now) {
+  const BlastConfig& c = scene.config;
+  const double needed = scene.region_radius * c.t_max / std::max(now, 1e-300) / scene.shock_radius_at_t_max;
+  const std::string margin = "raise box_margin (now " + format_number(c.box_margin) + ")";
+  if (needed > 100.0)
+    return margin + ": it would need " + format_number(needed) + ", above its maximum 100, so lower t_max or E";
+  return margin + " to " + format_number(std::ceil(needed * 10.0) / 10.0) +
+         " (the region scaled by t_max/t, enough if no particle ahead of the blast speeds up) or give a smaller A_d "
+         "(now " +
+         format_number(scene.A_d) + ")";
+}
+
 RealizationOutput dispatch(const ResolvedScene& scene, const ObservableLayout& layout, long long index) {
   const bool heap = scene.config.queue == "heap";
   if (scene.config.d == 2)
@@ -139,8 +155,7 @@ EngineConfig<D> blast_engine_config(const ResolvedScene& scene) {
   config.periodic = false;
   config.region_radius = scene.region_radius;
   config.guard_radius = scene.guard_radius;
-  config.guard_advice = "raise box_margin (now " + format_number(c.box_margin) + ") or give a smaller A_d (now " +
-                        format_number(scene.A_d) + ")";
+  config.guard_advice_at = [scene](double now) { return guard_advice(scene, now); };
   config.cell_width = c.cell_width;
   config.overlap_check = c.overlap_check;
   return config;

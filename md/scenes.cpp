@@ -173,7 +173,35 @@ std::string quoted(const std::string& s) {
   }
   return out + "\"";
 }
+
+/// What the run needs from t = 0 on, whatever Eq. (1) says: the impurities (the `count` particles
+/// nearest the origin, within r_count) and the balls of 100 particles the observers measure around
+/// each of them and around the origin (radius r_100, md/observers.cpp): r_count + 2 r_100 (radii at
+/// the mean density; the factor 2 covers the fluctuation of the 100th neighbour's distance and the
+/// guard band). count is capped at 100: the floor is for small blasts, not a way to make room for
+/// more impurities than the region holds, which stays an error.
+double minimum_region_radius(const BlastConfig& c) {
+  const double per_volume = c.n * theory::unit_ball_volume(c.d);
+  const double r_count = std::pow(std::min(c.impurities.count, 100) / per_volume, 1.0 / c.d);
+  const double r_100 = std::pow(100.0 / per_volume, 1.0 / c.d);
+  return r_count + 2.0 * r_100;
+}
 }  // namespace
+
+double early_reach_bound(const BlastConfig& c, double impurity_radius, double shock_radius) {
+  // Derivation in scenes.hpp and docs/md-output.md ("Region size").
+  const double mu = c.impurities.mass, k = c.impurities.count;
+  const double E1 = k > 1 ? c.E * (k - 1.0) / k : c.E;
+  const double v0 = std::sqrt(2.0 * E1 / mu), v_max = v0 * std::max(1.0, 2.0 * mu / (1.0 + mu));
+  const double lambda_c = theory::mean_free_path(c.d, c.n, c.a + impurity_radius);  // Eq. (5) [eq:mfp]
+  const double f = 8.0 * mu / ((1.0 + mu) * (1.0 + mu) * (c.d + 1.0)), tau0 = lambda_c / v0;
+  const double shock_speed = 2.0 / (c.d + 2.0) * shock_radius / c.t_max;  // dR/dt of Eq. (1) at t_max
+  const double collisions =
+      2.0 / f * std::min(std::log1p(f * c.t_max / (2.0 * tau0)), std::log(std::max(1.0, v0 / shock_speed)));
+  const double g = 2.0 * mu / (1.0 + 2.0 * mu);
+  const double rms = lambda_c * std::sqrt(2.0 * collisions / (1.0 - g));
+  return std::min(v_max * c.t_max, 3.0 * rms);
+}
 
 const std::vector<std::string>& scalar_observable_names() {
   static const std::vector<std::string> names = theory::observable_names(theory::is_md_scalar);
@@ -286,20 +314,14 @@ ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& am
   const theory::BlastParameters p{c.d, c.n, c.a, c.E, s.A_d};
   s.shock_radius_at_t_max = theory::shock_radius(p, c.t_max);  // Eq. (1) [R-shock]
   const double contact = 2.0 * std::max(c.a, s.impurity_radius);
-  // The guard sits 2σ inside the outermost particles; the shock must stay inside box_margin × R.
-  // A small blast (small E or t_max, or a dilute gas) can end before Eq. (1) holds, with box_margin × R
-  // smaller than what the run needs from t = 0 on: the impurities (the `count` particles nearest the
-  // origin, within r_count) and the balls of 100 particles the observers measure around each of them
-  // and around the origin (radius r_100, md/observers.cpp). The region is never smaller than
-  // r_count + 2 r_100 (radii at the mean density; the factor 2 covers the fluctuation of the 100th
-  // neighbour's distance and the guard band), so such scenes run instead of stopping at t = 0.
-  const double per_volume = c.n * theory::unit_ball_volume(c.d);
-  // (count capped at 100: the floor is for small blasts, not a way to make room for more impurities
-  // than the region holds, which stays an error below)
-  const double r_count = std::pow(std::min(c.impurities.count, 100) / per_volume, 1.0 / c.d);
-  const double r_100 = std::pow(100.0 / per_volume, 1.0 / c.d);
-  s.region_radius = std::max(c.box_margin * s.shock_radius_at_t_max, r_count + 2.0 * r_100) + 2.0 * contact +
-                    2.0 * std::max(contact, c.cell_width);
+  // The guard sits 2σ inside the outermost particles; the shock must stay inside box_margin × R. A
+  // blast that has not reached Eq. (1) by t_max (small E or t_max, a dilute gas, a light or lone
+  // impurity) needs more: the region is never smaller than the impurities' neighbourhood
+  // (minimum_region_radius) plus where they can get in their early phase (early_reach_bound).
+  s.region_radius =
+      std::max(c.box_margin * s.shock_radius_at_t_max,
+               minimum_region_radius(c) + early_reach_bound(c, s.impurity_radius, s.shock_radius_at_t_max)) +
+      2.0 * contact + 2.0 * std::max(contact, c.cell_width);
   s.guard_radius = s.region_radius - 2.0 * contact;
   const double count = c.n * theory::unit_ball_volume(c.d) * std::pow(s.region_radius, c.d);
   if (count > 1.5e9)

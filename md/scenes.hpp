@@ -67,6 +67,27 @@ BlastConfig parse_scene(const std::string& toml_text, const std::vector<std::str
 /// is the project's one policy (docs/ARCHITECTURE.md, "The A_d policy").
 using AmplitudePolicy = std::function<theory::AmplitudeChoice(int d, double phi)>;
 
+/// How far the fastest impurity can get from its start by t_max in the early phase of a blast, before
+/// Eq. (1) holds (length): an upper-side estimate that sizes the region with Eq. (1)'s box_margin ×
+/// R(t_max) (resolve_scene). For an impurity of mass μ (hosts 1) and radius a_imp among resting hosts:
+/// - speed at most v0 = sqrt(2 E1/μ), E1 = E for one impurity and E (k - 1)/k for k >= 2 (zero total
+///   momentum: the other k - 1 carry at least p²/(2 (k - 1) μ)); in the cold gas no particle is
+///   faster than v_max = v0 max(1, 2μ/(1 + μ)) (a host hit head-on by the impurity);
+/// - free path λ_c: Eq. (5) [eq:mfp] with the radius a replaced by the contact distance a + a_imp;
+/// - a collision passes the fraction 4μ/(1 + μ)² cos²α of its energy to the host, <cos²α> = 2/(d + 1)
+///   over the impact parameters: f = 8μ/((1 + μ)²(d + 1)). Its energy after N collisions is at most
+///   E1 exp(-f N), so N collisions take at least τ0 (2/f)(exp(f N/2) - 1), τ0 = λ_c/v0: by t_max it
+///   made at most (2/f) ln(1 + f t_max/(2 τ0)) (→ t_max/τ0 for f → 0). Once slower than the shock,
+///   whose speed is at least dR/dt = 2R/((d + 2) t_max) of Eq. (1) [R-shock] at t_max (R =
+///   `shock_radius`), the blast overtakes it: N is at most (2/f) ln(v0/(dR/dt)), and 0 while
+///   dR/dt >= v0 (Eq. (1)'s shock is then ahead of every particle, R(t_max) >= 2 v0 t_max);
+/// - N exponential free paths (<l²> = 2 λ_c²) whose direction keeps a mean cosine g per collision
+///   give <r²> = 2 N λ_c²/(1 - g); g = 2μ/(1 + 2μ) joins the light limit (isotropic: 0; in 2D even
+///   -1/3), equal masses (the impurity keeps its tangential velocity, cos χ = sin α: 1/2 in 2D, 2/3
+///   in 3D) and the heavy limit 1 (it ploughs straight on);
+/// - the bound: min(v_max t_max, 3 sqrt(<r²>)).
+double early_reach_bound(const BlastConfig& config, double impurity_radius, double shock_radius);
+
 /// Quantities derived from a validated scene.
 struct ResolvedScene {
   BlastConfig config;            ///< the scene, with A_d resolved (> 0)
@@ -75,7 +96,8 @@ struct ResolvedScene {
   double phi, lambda;            ///< packing fraction (Eq. 2) and mean free path (Eq. 5)
   double impurity_radius;        ///< resolved impurity radius
   double shock_radius_at_t_max;  ///< Eq. (1) at t_max
-  double region_radius;          ///< particles are placed within this radius of the origin
+  double region_radius;          ///< particles are placed within this radius: max(box_margin R(t_max),
+                                 ///< r_count + 2 r_100 + early_reach_bound) + guard bands
   double guard_radius;           ///< moving particles must stay inside (region_radius - 2 sigma)
   std::size_t particle_count;    ///< round(n Ω_d region_radius^d)
   std::vector<double> times;     ///< recording times t_k = t_min 2^(k/4) <= t_max

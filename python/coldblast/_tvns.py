@@ -51,7 +51,7 @@ def tvns(d=2, gamma=None, eos="ideal", phi=0.0, tolerance=1e-13):
         "ideal", "henderson" (hard discs, d = 2) or "carnahan-starling" (hard spheres, d = 3).
     phi : float
         Ambient packing fraction for a hard-particle EOS: henderson (0, 0.89286),
-        carnahan-starling (0, 0.72042); 0 for the ideal gas.
+        carnahan-starling (0, 0.686) (the ODE stalls above; docs/stress.md); 0 for the ideal gas.
     tolerance : float
         Requested relative accuracy of A, [1e-14, 1e-3].
 

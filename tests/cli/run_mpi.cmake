@@ -32,10 +32,12 @@ execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set n=-1 --out ${WORK}/bad
 if(NOT code EQUAL 2 OR NOT err MATCHES "n = -1 is outside")
   message(FATAL_ERROR "bad n under mpirun: exit ${code}, expected 2 naming n\n${out}${err}")
 endif()
-# A runtime failure ends every rank with exit 1 (no hang) and no output files. With seed 2 the
-# guard trips in realization 1 (on rank 1, the path where a worker reports to rank 0) and not in
-# realization 0; the regex also accepts rank 0's message should the engine's trajectories change.
-execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set box_margin=1.25 --set A_d=0.1 --seed 2
+# A runtime failure ends every rank with exit 1 (no hang) and no output files. A_d = 10 (45 times
+# the true A_2) puts Eq. (1)'s R(t_max) far inside the real shock, which reaches the guard at t ≈ 400
+# in both realizations, one per rank (rank 1's is the path where a worker reports to rank 0); the
+# regex accepts either rank's message. (A_d = 0.1 at t_max = 200 tripped only through the early
+# phase, which the region now holds: md::early_reach_bound.)
+execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set box_margin=1.25 --set A_d=10 --set t_max=1000 --seed 2
                         --realizations 2 --set block_size=1 --out ${WORK}/failed
                 TIMEOUT 120 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code EQUAL 1 OR NOT err MATCHES "coldblast: failed: (rank 1: )?a moving particle.*raise box_margin"

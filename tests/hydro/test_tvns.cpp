@@ -322,6 +322,22 @@ TEST_CASE("bad configurations and r/R are rejected with the parameter, value and
   CHECK_THROWS_WITH(s.at(-0.1), Contains("r/R = -0.1"));
 }
 
+TEST_CASE("Carnahan-Starling solves up to phi = 0.686 and names the range above it", "[fast]") {
+  // Above 0.686 the flow's interior empties and the ODE stalls (docs/stress.md): 0.687-0.69 and
+  // 0.702-0.71 ran into the step limit, so the accepted range stops at 0.686, not at 0.72042.
+  CHECK(tvns_max_packing_fraction(Eos::carnahan_starling) == 0.686);
+  CHECK(tvns_max_packing_fraction(Eos::henderson) == max_ambient_packing_fraction(Eos::henderson));
+  const TvnsSolution below = hard(Eos::carnahan_starling, 0.68), top = hard(Eos::carnahan_starling, 0.6859);
+  CHECK(top.A() > 0.0);
+  CHECK(top.A() < below.A());  // A falls with phi all the way up
+  CHECK(top.A_error() < 1e-10 * top.A());
+  for (const double phi : {0.686, 0.687, 0.71, 0.72}) {
+    INFO("phi = " << phi);
+    CHECK_THROWS_AS(hard(Eos::carnahan_starling, phi), std::invalid_argument);
+    CHECK_THROWS_WITH(hard(Eos::carnahan_starling, phi), Contains("is outside (0, 0.686)") && Contains("stalls"));
+  }
+}
+
 TEST_CASE("ODE profiles and cavity edge agree with the closed form", "[fast]") {
   // Profiles (not just A): the ODE checkpoints re-integrated to x against the closed form's Brent root.
   // Integrating inward towards the centre's saddle amplifies step errors (1e-13) roughly like x^-d, so
