@@ -97,14 +97,37 @@ def tvns():
     s.row()
 
 
+def hydro_judge(doc):
+    """Finite, and energy kept: after CVODE's projection to round-off (1e-12), and before it to the
+    1e-5 of E that docs/hydro.md states (1e-10-1e-9 in 2D, up to ~1e-6 in 3D at 128 cells)."""
+    if not finite_tree(doc):
+        return "non-finite value"
+    if doc["energy_error"] > 1e-12:
+        return f"energy error {doc['energy_error']:.1e}"
+    if doc["energy_drift_before_projection"] > 1e-5:
+        return f"drift before projection {doc['energy_drift_before_projection']:.1e}"
+    return None
+
+
 def hydro():
-    s = Sweep("Navier–Stokes core", "d = 2, 3, R/λ (--until) ∈ {1e2, 1e4, 1e6, 1e8, 1e10, 1e12}, 128 cells",
-              "finite H, n0, T0 and running exponents, or a clear solver error (exit 1 names the CVODE flag)")
-    def judge(doc):
-        return None if finite_tree(doc) else "non-finite value"
+    untils = ("1e2", "1e4", "1e6", "1e8", "1e10", "1e12")
+    check = ("finite H, n0, T0 and running exponents; energy error ≤ 1e−12 after the projection and drift ≤ 1e−5 "
+             "before it; or a clear solver error (exit 1 names the CVODE flag)")
+    s = Sweep("Navier–Stokes core (dilute)", "ideal gas, d = 2, 3, R/λ (--until) ∈ {1e2, 1e4, 1e6, 1e8, 1e10, 1e12}, 128 cells",
+              check)
     for d in (2, 3):
-        for until in ("1e2", "1e4", "1e6", "1e8", "1e10", "1e12"):
-            s.case(f"d={d} R/λ={until}", ["hydro", "core", "--d", str(d), "--until", until, "--cells", "128", "--format", "json"], judge, timeout=900)
+        for until in untils:
+            s.case(f"d={d} R/λ={until}", ["hydro", "core", "--d", str(d), "--until", until, "--cells", "128", "--format", "json"],
+                   hydro_judge, timeout=900)
+    s.row()
+    s = Sweep("Navier–Stokes core (dense)", "Henderson d = 2 and Carnahan–Starling d = 3 with Enskog transport, "
+              "φ ∈ {0.118, 0.4, limit − 1e−3}, R/λ ∈ {1e4, 1e8, 1e12}, 128 cells", check)
+    for d, eos, limit in ((2, "henderson", 0.89286), (3, "carnahan-starling", 0.72042)):
+        for phi in (0.118, 0.4, limit - 1e-3):
+            for until in ("1e4", "1e8", "1e12"):
+                s.case(f"{eos} φ={phi:.6g} R/λ={until}",
+                       ["hydro", "core", "--d", str(d), "--eos", eos, "--phi", repr(phi), "--transport", "enskog",
+                        "--until", until, "--cells", "128", "--format", "json"], hydro_judge, timeout=900)
     s.row()
 
 
@@ -134,8 +157,34 @@ def md():
         s.row()
 
 
+def md_memory():
+    """MD, N = 1e7 in 3D: peak resident memory (GNU time -v) of a run whose region holds 1e7 particles
+    at n = 0.15 (box_margin 100 around a small blast: set-up plus a short run, minutes instead of the
+    days a blast filling the region would take), against N = 1e6 set up the same way."""
+    rows_memory = []
+    for target in (1e6, 1e7):
+        # R_region ≈ box_margin R(t_max) holds `target` particles: R(t_max) = (target/(n Ω_3))^(1/3)/100.
+        R = (target / (0.15 * 4.0 / 3.0 * math.pi)) ** (1.0 / 3.0) / 100.0
+        t_max = math.sqrt(R ** 5 * 0.7 * 0.15 / 10.0)  # Eq. (1) with E = 10, A_d = 0.7
+        args = ["/usr/bin/time", "-v", BINARY, "md", "run", "--set", "d=3", "--set", "A_d=0.7", "--set", "box_margin=100",
+                "--set", f"t_max={t_max!r}", "--set", f"t_min={t_max / 2!r}", "--realizations", "1", "--format", "json",
+                "--out", os.path.join(WORK, "md-memory")]
+        p = subprocess.run(args, capture_output=True, text=True, timeout=3600)
+        rss = [int(l.split(":")[1]) for l in p.stderr.splitlines() if "Maximum resident set size" in l]
+        if p.returncode != 0 or not rss:
+            rows_memory.append(f"N ≈ {target:.0e}: exit {p.returncode} {p.stderr.strip()[-160:]}")
+            continue
+        doc = json.loads(p.stdout)
+        n = doc["particles"]
+        rows_memory.append(f"N = {n:,}: peak RSS {rss[0] / 1024:.0f} MiB ({rss[0] * 1024 / n:.0f} bytes per particle), "
+                           f"{doc['wall_seconds']:.0f} s, energy error {doc['energy_error_max']:.1e}")
+    rows.append("| MD (memory) | N = 1e6 and 1e7 in 3D (n = 0.15, box_margin 100 around a blast of E = 10 to R(t_max) = "
+                "R_region/100) | peak RSS (GNU time -v) | " + "; ".join(rows_memory) + " |")
+    sys.stderr.write(rows[-1] + "\n")
+
+
 if __name__ == "__main__":
-    which = sys.argv[2:] or ["tvns", "hydro", "md"]
+    which = sys.argv[2:] or ["tvns", "hydro", "md", "md_memory"]
     print("| solver | sweep | checked | result |")
     print("|---|---|---|---|")
     for part in which:
