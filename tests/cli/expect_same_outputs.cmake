@@ -43,3 +43,29 @@ set(coldblast_tracer_summary_keys
     trajectories collision_rate collision_rate_error chi n_ambient temperature_final temperature_final_error
     candidates_total rejection_rate background background_description background_frames transport start
     start_time impurity_mass impurity_radius realizations collisions_total blocks engine)
+
+# One MPI launch checked against the threaded run: `BINARY run_args --threads 2 --out threads_dir`
+# and `MPIEXEC BINARY run_args --out ranks_dir` must both exit 0, mpirun's stdout must hold exactly
+# one summary (rank 0 only; `summary_regex` marks it), and ranks_dir/summary.json must record 2 ranks.
+# The caller then compares the two directories' files.
+function(coldblast_run_threads_and_ranks run_args threads_dir ranks_dir summary_regex)
+  execute_process(COMMAND ${BINARY} ${run_args} --threads 2 --out ${threads_dir}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "threaded run failed (${code}):\n${out}\n${err}")
+  endif()
+  execute_process(COMMAND ${MPIEXEC} ${BINARY} ${run_args} --out ${ranks_dir}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "mpirun run failed (${code}):\n${out}\n${err}")
+  endif()
+  string(REGEX MATCHALL "${summary_regex}" summaries "${out}")
+  list(LENGTH summaries summary_count)
+  if(NOT summary_count EQUAL 1)
+    message(FATAL_ERROR "expected one summary (rank 0 only), found ${summary_count}:\n${out}")
+  endif()
+  file(READ ${ranks_dir}/summary.json summary)
+  if(NOT summary MATCHES "\"ranks\": 2")
+    message(FATAL_ERROR "summary.json does not record 2 ranks:\n${summary}")
+  endif()
+endfunction()

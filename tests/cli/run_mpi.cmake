@@ -4,26 +4,8 @@
 # Usage: cmake -DBINARY=... -DMPIEXEC="mpirun;--allow-run-as-root;--oversubscribe;-np;2" -DWORK=dir -P run_mpi.cmake
 set(scene md run --set t_max=50 --realizations 32 --set block_size=2 --seed 5)
 file(REMOVE_RECURSE ${WORK})
-execute_process(COMMAND ${BINARY} ${scene} --threads 2 --out ${WORK}/threads
-                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 0)
-  message(FATAL_ERROR "threaded run failed (${code}):\n${out}\n${err}")
-endif()
-execute_process(COMMAND ${MPIEXEC} ${BINARY} ${scene} --out ${WORK}/ranks
-                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 0)
-  message(FATAL_ERROR "mpirun run failed (${code}):\n${out}\n${err}")
-endif()
-string(REGEX MATCHALL "scene default" summaries "${out}")
-list(LENGTH summaries summary_count)
-if(NOT summary_count EQUAL 1)
-  message(FATAL_ERROR "expected one summary (rank 0 only), found ${summary_count}:\n${out}")
-endif()
-file(READ ${WORK}/ranks/summary.json summary)
-if(NOT summary MATCHES "\"ranks\": 2")
-  message(FATAL_ERROR "summary.json does not record 2 ranks:\n${summary}")
-endif()
 include(${CMAKE_CURRENT_LIST_DIR}/expect_same_outputs.cmake)
+coldblast_run_threads_and_ranks("${scene}" ${WORK}/threads ${WORK}/ranks "scene default")
 coldblast_expect_same_outputs(${WORK}/threads ${WORK}/ranks "mpirun -np 2 differs from the threaded run's")
 
 # A bad scene value ends every rank with exit 2 naming the key.

@@ -9,25 +9,8 @@ file(REMOVE_RECURSE ${WORK})
 foreach(background tvns ns)
   # 32 blocks of 2 trajectories: both ranks take blocks.
   set(run tracer --background ${background} --set t_max=50 --trajectories 64 --set block_size=2 --seed 7)
-  execute_process(COMMAND ${BINARY} ${run} --threads 2 --out ${WORK}/${background}/threads
-                  RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
-  if(NOT code EQUAL 0)
-    message(FATAL_ERROR "threaded tracer run failed (${code}):\n${err}")
-  endif()
-  execute_process(COMMAND ${MPIEXEC} ${BINARY} ${run} --out ${WORK}/${background}/ranks
-                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL 0)
-    message(FATAL_ERROR "mpirun tracer run failed (${code}):\n${out}\n${err}")
-  endif()
-  string(REGEX MATCHALL "collision rate" summaries "${out}")
-  list(LENGTH summaries summary_count)
-  if(NOT summary_count EQUAL 1)
-    message(FATAL_ERROR "expected one summary (rank 0 only), found ${summary_count}:\n${out}")
-  endif()
-  file(READ ${WORK}/${background}/ranks/summary.json summary)
-  if(NOT summary MATCHES "\"ranks\": 2")
-    message(FATAL_ERROR "summary.json does not record 2 ranks:\n${summary}")
-  endif()
+  coldblast_run_threads_and_ranks("${run}" ${WORK}/${background}/threads ${WORK}/${background}/ranks
+                                  "collision rate")
   coldblast_expect_same_tracer_outputs(${WORK}/${background}/threads ${WORK}/${background}/ranks
                                        "mpirun -np 2 tracer (${background}) differs from the threaded run's"
                                        "${coldblast_tracer_summary_keys}")
