@@ -1,7 +1,7 @@
 // _coldblast: the pybind11 extension under the Python package `coldblast` (python/coldblast/).
 // It calls the library functions the CLI calls (no second implementation): theory exponents, the
-// exact TvNS solution, the Navier–Stokes core, MD ensembles, run-directory reading and the
-// verdicts. Long work runs on a worker thread with the GIL released while the calling thread polls
+// exact TvNS solution, the Navier–Stokes core, MD ensembles, the kinetic tracer, run-directory
+// reading and the verdicts. Long work runs on a worker thread with the GIL released while the calling thread polls
 // for Ctrl-C every 0.1 s (common/interrupt.hpp stops the work between units) and reports progress.
 // std::invalid_argument becomes ValueError with the CLI's message (pybind11's translation).
 #include <pybind11/numpy.h>
@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/input.hpp"
 #include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "compare/md_run.hpp"
@@ -26,7 +27,9 @@
 #include "compare/run_data.hpp"
 #include "compare/verdict.hpp"
 #include "hydro/options.hpp"
+#include "kinetic/tracer.hpp"
 #include "md/ensemble.hpp"
+#include "md/scenes.hpp"
 #include "theory/computed_prefactors.hpp"
 #include "theory/exponents.hpp"
 
@@ -311,6 +314,31 @@ py::dict hydro_run(bool euler, int d, double until, int cells, bool viscosity, s
 
 // ---- MD ---------------------------------------------------------------------------------------
 
+/// The estimates of observables.csv per observable, in output order:
+/// {name: {"t", "mean", "stderr": float64 arrays, "count": int64 array}}.
+py::dict estimate_dict(const md::BlastResult& result) {
+  std::map<std::string, std::vector<const md::ObservableEstimate*>> by_name;
+  std::vector<std::string> order;
+  const std::vector<md::ObservableEstimate> rows = md::estimate_observables(result);
+  for (const auto& row : rows) {
+    if (!by_name.count(row.observable)) order.push_back(row.observable);
+    by_name[row.observable].push_back(&row);
+  }
+  py::dict estimates;
+  for (const std::string& name : order) {
+    const auto& list = by_name[name];
+    py::dict e;
+    e["t"] = column(list, [](const md::ObservableEstimate* r) { return r->t; });
+    e["mean"] = column(list, [](const md::ObservableEstimate* r) { return r->mean; });
+    e["stderr"] = column(list, [](const md::ObservableEstimate* r) { return r->stderr_; });
+    py::array_t<long long> count(static_cast<py::ssize_t>(list.size()));
+    for (std::size_t i = 0; i < list.size(); ++i) count.mutable_data()[i] = list[i]->count;
+    e["count"] = count;
+    estimates[py::str(name)] = e;
+  }
+  return estimates;
+}
+
 py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
                 long long realizations, long long seed, int threads, const std::string& out,
                 const py::object& progress_callback) {
@@ -331,32 +359,75 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
     std::error_code ignored;
     std::filesystem::remove_all(options.checkpoint, ignored);
   }
-  // Estimates per observable, in output order (observables.csv).
-  std::map<std::string, std::vector<const md::ObservableEstimate*>> by_name;
-  std::vector<std::string> order;
-  const std::vector<md::ObservableEstimate> rows = md::estimate_observables(result);
-  for (const auto& row : rows) {
-    if (!by_name.count(row.observable)) order.push_back(row.observable);
-    by_name[row.observable].push_back(&row);
-  }
-  py::dict estimates;
-  for (const std::string& name : order) {
-    const auto& list = by_name[name];
-    py::dict e;
-    e["t"] = column(list, [](const md::ObservableEstimate* r) { return r->t; });
-    e["mean"] = column(list, [](const md::ObservableEstimate* r) { return r->mean; });
-    e["stderr"] = column(list, [](const md::ObservableEstimate* r) { return r->stderr_; });
-    py::array_t<long long> count(static_cast<py::ssize_t>(list.size()));
-    for (std::size_t i = 0; i < list.size(); ++i) count.mutable_data()[i] = list[i]->count;
-    e["count"] = count;
-    estimates[py::str(name)] = e;
-  }
   py::dict files;
   for (const auto& [name, content] : result.realization0_files) files[py::str(name)] = content;
   py::dict output;
-  output["estimates"] = estimates;
+  output["estimates"] = estimate_dict(result);
   output["summary"] = json_to_python(md::blast_summary(result));
   output["realization0_files"] = files;
+  return output;
+}
+
+// ---- kinetic tracer ---------------------------------------------------------------------------
+
+/// The tracer's options beyond the scene (as `coldblast tracer`'s flags).
+struct TracerOptions {
+  std::string background, transport, start;
+  long long trajectories = 0;
+  int threads = 1;
+  double T = 1.0;
+  std::optional<double> phi;
+  double start_time = 0.0;
+  int frames_per_decade = 40, cells = 256;
+};
+
+py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
+                    long long seed, const TracerOptions& o, const std::string& out,
+                    const py::object& progress_callback) {
+  if (seed != -1) {
+    common::require_integer_in_range("--seed", seed, 0, std::numeric_limits<long long>::max());
+    overrides.push_back("seed=" + std::to_string(seed));
+  }
+  const std::string text = !scene_file.empty() ? common::read_text(scene_file, "SCENE")
+                                               : (scene_text.empty() ? md::default_scene_toml() : scene_text);
+  kinetic::TracerConfig config;
+  config.scene = md::parse_scene(text, overrides, scene_file.empty() ? "default scene" : scene_file);
+  config.background = o.background;
+  config.transport = o.transport;
+  config.start = o.start;
+  config.trajectories = o.trajectories;
+  config.threads = o.threads;
+  config.T = o.T;
+  config.phi = o.phi;
+  config.start_time = o.start_time;
+  config.frames_per_decade = o.frames_per_decade;
+  config.cells = o.cells;
+  Progress progress(progress_callback);
+  const std::function<kinetic::TracerResult()> work = [&] {
+    return kinetic::run_tracer(config, [&progress](long long done, long long total) {
+      progress.set(static_cast<double>(done), static_cast<double>(total));
+    });
+  };
+  const kinetic::TracerResult result = run_interruptible(work, progress);
+  if (!out.empty()) kinetic::write_tracer_outputs(result, out);
+  py::dict moments;
+  const std::vector<kinetic::MomentRow> rows = kinetic::moment_rows(result);
+  const auto add = [&](const char* name, double kinetic::MomentRow::*field) {
+    moments[name] = column(rows, [field](const kinetic::MomentRow& r) { return r.*field; });
+  };
+  add("t", &kinetic::MomentRow::t);
+  add("r2", &kinetic::MomentRow::r2);
+  add("r2_error", &kinetic::MomentRow::r2_error);
+  add("r_ratio", &kinetic::MomentRow::r_ratio);
+  add("r_ratio_error", &kinetic::MomentRow::r_ratio_error);
+  add("v2", &kinetic::MomentRow::v2);
+  add("v2_error", &kinetic::MomentRow::v2_error);
+  add("v_ratio", &kinetic::MomentRow::v_ratio);
+  add("v_ratio_error", &kinetic::MomentRow::v_ratio_error);
+  py::dict output;
+  output["estimates"] = estimate_dict(result.ensemble);
+  output["moments"] = moments;
+  output["summary"] = json_to_python(kinetic::tracer_summary(result));
   return output;
 }
 
@@ -369,8 +440,8 @@ py::object read_run_summary(const std::string& directory) {
 py::object compare_run(const std::string& run_dir, const std::string& against, double sigma, double allowance,
                        double window_decades, double until, const std::vector<std::string>& observables,
                        int hydro_cells, const std::string& hydro_eos, std::optional<double> hydro_phi,
-                       const std::string& hydro_transport, const std::string& out, bool figures,
-                       const py::object& progress_callback) {
+                       const std::string& hydro_transport, const std::string& md_run, const std::string& out,
+                       bool figures, const py::object& progress_callback) {
   compare::CompareConfig config;
   config.run_dir = run_dir;
   config.against = compare::parse_reference(against);
@@ -384,6 +455,7 @@ py::object compare_run(const std::string& run_dir, const std::string& against, d
   if (!hydro_transport.empty())
     config.hydro_model.transport = hydro::transport_from_string(hydro_transport, "--hydro-transport");
   if (hydro_phi) config.hydro_model.phi = *hydro_phi;
+  config.md_run = md_run;
   Progress progress(progress_callback);
   const std::function<compare::CompareResult()> work = [&] {
     compare::CompareResult result = compare::run_compare(config);
@@ -444,6 +516,19 @@ PYBIND11_MODULE(_coldblast, m) {
   m.def("read_run_summary", &read_run_summary, py::arg("directory"));
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
         py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"),
-        py::arg("hydro_eos"), py::arg("hydro_phi"), py::arg("hydro_transport"), py::arg("out"), py::arg("figures"),
-        py::arg("progress"));
+        py::arg("hydro_eos"), py::arg("hydro_phi"), py::arg("hydro_transport"), py::arg("md_run"), py::arg("out"),
+        py::arg("figures"), py::arg("progress"));
+  m.def(
+      "tracer_run",
+      [](const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
+         long long seed, const std::string& background, const std::string& transport, const std::string& start,
+         long long trajectories, int threads, double T, std::optional<double> phi, double start_time,
+         int frames_per_decade, int cells, const std::string& out, const py::object& progress) {
+        const TracerOptions options{background, transport, start,      trajectories,      threads,
+                                    T,          phi,       start_time, frames_per_decade, cells};
+        return tracer_run(scene_file, scene_text, overrides, seed, options, out, progress);
+      },
+      py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("seed"), py::arg("background"),
+      py::arg("transport"), py::arg("start"), py::arg("trajectories"), py::arg("threads"), py::arg("T"), py::arg("phi"),
+      py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("out"), py::arg("progress"));
 }

@@ -10,16 +10,18 @@ particle radius (diameter 2a), T means k_B T.
 - ``coldblast.hydro.core(d=2, until=1e4, ...)``: the radial Navier-Stokes blast (numpy arrays).
 - ``coldblast.md.run(scene, realizations=..., threads=..., seed=..., out=None, **overrides)``:
   an MD ensemble; estimates per observable (t, mean, stderr) and the summary.
+- ``coldblast.tracer.run(scene, background="ns", trajectories=..., ...)``: the impurity's kinetic
+  equation (Eq. 36) by Monte Carlo (``coldblast tracer``); estimates, moments and the summary.
 - ``coldblast.read_run(dir)``: a run directory (CLI- or Python-made) as pandas DataFrames.
-- ``coldblast.compare(run_dir, against="theory")``: the verdict of ``coldblast compare`` as a dict.
+- ``coldblast.compare(run_dir, against="theory", md_run=None)``: the verdict of ``coldblast compare`` as a dict.
 
 Bad input raises ValueError with the CLI's exit-2 message; Ctrl-C raises KeyboardInterrupt within
 a fraction of a second and leaves no half-written file. Tour: docs/python.md.
 """
 from . import _coldblast
-from . import hydro, md, theory
+from . import hydro, md, theory, tracer
 from ._run import Run, read_run
 from ._tvns import Tvns, tvns
 from ._compare import compare
 
-__all__ = ["theory", "tvns", "Tvns", "hydro", "md", "read_run", "Run", "compare"]
+__all__ = ["theory", "tvns", "Tvns", "hydro", "md", "tracer", "read_run", "Run", "compare"]

@@ -6,8 +6,8 @@ from . import _progress
 
 
 def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades=0.5, until=None,
-            observables=None, hydro_cells=256, hydro_eos=None, hydro_phi=None, hydro_transport=None, out=None,
-            figures=True):
+            observables=None, hydro_cells=256, hydro_eos=None, hydro_phi=None, hydro_transport=None, md_run=None,
+            out=None, figures=True):
     """Compare a run directory's running exponents with a reference (the same call as ``coldblast compare``).
 
     Parameters
@@ -31,6 +31,10 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
     hydro_eos, hydro_phi, hydro_transport : str, float, str or None
         The Navier-Stokes model for against="hydro" (``--hydro-eos --hydro-phi --hydro-transport``);
         None: the default (the hard-particle EOS at the run's phi, Enskog transport; docs/compare.md).
+    md_run : str, os.PathLike or None
+        For a tracer run_dir (``coldblast tracer --out``): an MD run of the same scene, compared at
+        every common time (``--md-run``: the verdict's "tracer_md" key; figures tracer_vs_md.png and
+        tracer_p_imp.png and tracer_vs_md.csv in out).
     out : str, os.PathLike or None
         Report directory (report.md, verdict.json, exponents.csv, figures/), or None.
     figures : bool
@@ -44,4 +48,5 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
                               -1.0 if allowance is None else float(allowance), float(window_decades),
                               0.0 if until is None else float(until), list(observables or []), int(hydro_cells),
                               hydro_eos or "", None if hydro_phi is None else float(hydro_phi), hydro_transport or "",
-                              "" if out is None else os.fspath(out), bool(figures), None)
+                              "" if md_run is None else os.fspath(md_run), "" if out is None else os.fspath(out),
+                              bool(figures), None)

@@ -46,6 +46,23 @@ def scene_toml(scene):
     return "\n".join(lines) + "\n"
 
 
+def scene_arguments(scene, overrides):
+    """(scene_file, scene_text, ["key=value", ...]) of a scene (None, a TOML path or a dict) and
+    its overrides, as the library's scene reader takes them (shared with coldblast.tracer)."""
+    scene_file, scene_text = "", ""
+    if scene is None:
+        pass
+    elif isinstance(scene, dict):
+        scene_text = scene_toml(scene)
+    elif isinstance(scene, (str, os.PathLike)):
+        scene_file = os.fspath(scene)
+        if not scene_file:
+            raise ValueError("SCENE = '' is empty (a TOML file, a dict, or None for the default scene)")
+    else:
+        raise ValueError(f"SCENE = {scene!r} is not a TOML path, a dict or None")
+    return scene_file, scene_text, [f"{key}={_toml_value(value, key)}" for key, value in _flatten(overrides)]
+
+
 def default_scene():
     """The embedded default scene (d = 2, E = 10, t_max = 200, 32 realizations) as TOML text."""
     return _coldblast.default_scene_toml()
@@ -92,18 +109,7 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
     (within ~0.1 s of the current realization's end; with ``out`` the finished blocks stay in
     out/checkpoint, and nothing else is written).
     """
-    scene_file, scene_text = "", ""
-    if scene is None:
-        pass
-    elif isinstance(scene, dict):
-        scene_text = scene_toml(scene)
-    elif isinstance(scene, (str, os.PathLike)):
-        scene_file = os.fspath(scene)
-        if not scene_file:
-            raise ValueError("SCENE = '' is empty (a TOML file, a dict, or None for the default scene)")
-    else:
-        raise ValueError(f"SCENE = {scene!r} is not a TOML path, a dict or None")
-    sets = [f"{key}={_toml_value(value, key)}" for key, value in _flatten(overrides)]
+    scene_file, scene_text, sets = scene_arguments(scene, overrides)
     raw = _coldblast.md_run(scene_file, scene_text, sets,
                             0 if realizations is None else _integer(realizations, "--realizations"),
                             -1 if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),

@@ -22,4 +22,8 @@ def test_python_md_runs(tmp_path, monkeypatch):
     assert namespace["run"].summary["realizations"] == 64
     # The tour's verdict holds the six Table 1 observables, each with a finite running exponent.
     names = [v["name"] for v in namespace["verdict"]["observables"]]
+    # The tracer section compares R_imp, V_imp and C_imp with the tour's MD run at its last time.
+    tracer_names = {o["name"] for o in namespace["against_md"]["observables"]}
+    assert {"R_imp", "V_imp", "C_imp"} <= tracer_names
+    assert namespace["tracer"].summary["trajectories"] == 4000
     assert sorted(names) == sorted(["R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0"])

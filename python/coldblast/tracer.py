@@ -1,0 +1,70 @@
+"""The impurity's kinetic equation, paper Eq. (36), by exact null-collision Monte Carlo in a
+Navier-Stokes, TvNS or equilibrium host background (``coldblast tracer``; docs/kinetic.md)."""
+import os
+from types import SimpleNamespace
+
+from . import _coldblast
+from . import _progress
+from .md import _integer, scene_arguments
+
+
+def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
+        start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=256, progress=True,
+        **overrides):
+    """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
+
+    Parameters
+    ----------
+    scene : None, str, os.PathLike or dict
+        The MD scene the tracer matches (keys of ``md run``: d, n, a, E, impurities.*, t_min, t_max,
+        seed, block_size): None for the embedded default scene, a TOML path, or a dict.
+    background : str
+        "ns" (the Navier-Stokes core), "tvns" (exact Euler) or "equilibrium" (uniform bath).
+    trajectories : int or None
+        Impurity trajectories, >= 1; None: the scene's realizations x impurities.count.
+    threads : int
+        Worker threads, [1, 1024]; the numbers do not depend on it (bit-identical).
+    seed : int or None
+        Master seed >= 0; None: the scene's. Trajectory i is seeded from (seed, i).
+    out : str, os.PathLike or None
+        Run directory as ``coldblast tracer --out`` (``coldblast compare`` reads it), or None.
+    transport : str
+        "dilute" (chi = 1) or "enskog" (chi(n) at contact; equilibrium background only).
+    start : str
+        "kick" (the MD's kick, E shared by the impurities) or "thermal" (local Maxwellian).
+    start_time : float or None
+        Start time >= 0; None: the scene's t_min (ns, tvns), 0 for equilibrium.
+    T, phi : float, float or None
+        Equilibrium background only: bath temperature (> 0) and packing fraction (None: the scene's).
+    frames_per_decade, cells : int
+        ns background: stored frames per decade of R/lambda [4, 400] and Navier-Stokes cells [64, 4096].
+    progress : bool or callable
+        True: blocks done and ETA on stderr; False: silent; callable(done, total).
+    **overrides
+        Scene keys to override, as ``--set key=value`` (``t_max=500``, ``impurities={"count": 2}``).
+
+    Returns
+    -------
+    types.SimpleNamespace with
+        ``estimates``: {observable: {"t", "mean", "stderr", "count"}} (R_imp, V_imp, C_imp, u_imp, ...),
+        the rows of observables.csv;
+        ``moments``: {"t", "r2", "r_ratio", "v2", "v_ratio" and their "_error"s} of moments.csv
+        (r_ratio = <r^4>/<r^2>^2 of the displacement, v_ratio the same for the speed);
+        ``summary``: summary.json's keys (collision_rate, collision_rate_error, chi,
+        temperature_final, rejection_rate, ...; docs/kinetic.md);
+        ``out``: the run directory or None.
+
+    Raises ValueError with the CLI's exit-2 message for bad input (e.g. ``--background = plasma is
+    not one of ...``), KeyboardInterrupt on Ctrl-C (nothing is written).
+    """
+    scene_file, scene_text, sets = scene_arguments(scene, overrides)
+    raw = _coldblast.tracer_run(scene_file, scene_text, sets, -1 if seed is None else _integer(seed, "--seed"),
+                                str(background), str(transport), str(start),
+                                0 if trajectories is None else _integer(trajectories, "--trajectories"),
+                                _integer(threads, "--threads"), float(T), None if phi is None else float(phi),
+                                0.0 if start_time is None else float(start_time),
+                                _integer(frames_per_decade, "--frames-per-decade"), _integer(cells, "--cells"),
+                                "" if out is None else os.fspath(out),
+                                _progress.callback(progress, "tracer", "blocks"))
+    return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],
+                           out=None if out is None else os.fspath(out))

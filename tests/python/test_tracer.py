@@ -1,0 +1,76 @@
+"""coldblast.tracer.run against `coldblast tracer` (same files, same numbers), the exact equilibrium
+collision rate, and coldblast.compare(..., md_run=...) against `coldblast compare --md-run`."""
+import math
+
+import pytest
+
+import coldblast
+from conftest import cli_error, cli_json
+
+TINY = dict(t_max=50)  # the embedded 2D scene, cut at t = 50
+
+
+def lines(path):
+    return [l for l in path.read_text().splitlines() if not l.startswith("# command: ")]
+
+
+@pytest.mark.parametrize("background", ["tvns", "ns"])
+def test_run_equals_cli(tmp_path, background):
+    expected = cli_json("tracer", "--background", background, "--set", "t_max=50", "--trajectories", 64,
+                        "--seed", 3, "--out", tmp_path / "cli")
+    result = coldblast.tracer.run(background=background, trajectories=64, seed=3, threads=2,
+                                  out=tmp_path / "py", progress=False, **TINY)
+    for key in ("collision_rate", "collision_rate_error", "chi", "temperature_final", "rejection_rate"):
+        assert result.summary[key] == expected[key], key
+    for name in ("observables.csv", "blocks.csv", "p_imp.csv", "moments.csv", "prefactors.csv"):
+        assert lines(tmp_path / "py" / name) == lines(tmp_path / "cli" / name), name
+    # The returned arrays are the files' numbers.
+    r_imp = result.estimates["R_imp"]
+    assert list(r_imp["t"]) == list(result.moments["t"]) and r_imp["t"][-1] <= 50.0
+    assert result.moments["r2"][-1] == pytest.approx(float(lines(tmp_path / "py" / "moments.csv")[-1].split(",")[1]),
+                                                     rel=1e-12)
+
+
+def test_equilibrium_rate_is_the_exact_one():
+    # Equal discs in a dilute bath (chi = 1): rate = n (2 * 2a) <|g|>, <|g|> = sqrt(pi T / (2 mu)), mu = 1/2.
+    result = coldblast.tracer.run(background="equilibrium", start="thermal", T=1.5, trajectories=400, seed=5,
+                                  progress=False, **TINY)
+    s = result.summary
+    n, a = s["scene"]["n"], s["scene"]["a"]
+    exact = n * 2 * (2 * a) * math.sqrt(math.pi * 1.5)
+    assert s["chi"] == 1.0
+    assert s["collision_rate_exact"] == pytest.approx(exact, rel=1e-14)
+    assert abs(s["collision_rate"] - exact) < 4 * s["collision_rate_error"]
+    assert abs(s["temperature_final"] - 1.5) < 4 * s["temperature_final_error"]
+
+
+def test_compare_md_run_equals_cli(tmp_path):
+    coldblast.tracer.run(background="tvns", trajectories=64, seed=3, out=tmp_path / "tracer", progress=False, **TINY)
+    coldblast.md.run(realizations=4, seed=3, out=tmp_path / "md", progress=False, block_size=1, **TINY)
+    expected = cli_json("compare", tmp_path / "tracer", "--md-run", tmp_path / "md", "--sigma", 10, "--allowance", 1,
+                        "--no-figures")
+    verdict = coldblast.compare(tmp_path / "tracer", md_run=tmp_path / "md", sigma=10, allowance=1, figures=False)
+    assert verdict == expected
+    names = [o["name"] for o in verdict["tracer_vs_md"]["observables"]]
+    assert {"R_imp", "V_imp", "C_imp"} <= set(names)
+
+
+@pytest.mark.parametrize("kwargs,flags", [
+    ({"background": "plasma"}, ["--background", "plasma"]),
+    ({"background": "equilibrium", "T": -1.0}, ["--background", "equilibrium", "--T", -1]),
+    ({"trajectories": 0.5}, None),
+])
+def test_bad_input_is_the_cli_error(kwargs, flags):
+    with pytest.raises(ValueError) as error:
+        coldblast.tracer.run(progress=False, **kwargs)
+    if flags is not None:
+        assert str(error.value) == cli_error("tracer", *flags)
+    else:
+        assert "--trajectories = 0.5 is not an integer" in str(error.value)
+
+
+def test_compare_md_run_missing(tmp_path):
+    coldblast.tracer.run(background="tvns", trajectories=16, seed=3, out=tmp_path / "tracer", progress=False, **TINY)
+    with pytest.raises(ValueError) as error:
+        coldblast.compare(tmp_path / "tracer", md_run="/nonexistent", figures=False)
+    assert str(error.value) == cli_error("compare", tmp_path / "tracer", "--md-run", "/nonexistent", "--no-figures")
