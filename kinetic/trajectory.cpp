@@ -22,20 +22,22 @@ md::Vec<D> normal_vector(Random& rng) {
 }
 
 /// Thermal velocity c = w − u of the host partner from the mixture (|v−u| F + |c| F)/(|v−u| + c̄):
-/// with probability |v−u|/(|v−u| + c̄) Maxwellian, else speed-biased Maxwellian (speed ~ chi with
-/// d+1 degrees of freedom, uniform direction).
+/// with probability |v−u|/(|v−u| + c̄) Maxwellian, else speed-biased Maxwellian (density ∝ |c| F:
+/// speed ~ chi with d+1 degrees of freedom, uniform direction). The biased speed reuses the
+/// direction's normals: for a standard normal vector z in R^d, |z|² (chi² with d degrees of
+/// freedom) is independent of z/|z|, so |z|² + z_{d+1}² is chi² with d+1, independent of z/|z|.
 template <int D>
 md::Vec<D> mixture_velocity(double relative_speed, double mean_speed, double T, Random& rng) {
   const double sqrt_T = std::sqrt(T);
   if (rng.uniform() * (relative_speed + mean_speed) < relative_speed) return sqrt_T * normal_vector<D>(rng);
   md::Vec<D> direction = normal_vector<D>(rng);
-  while (direction.squaredNorm() == 0.0) direction = normal_vector<D>(rng);
-  double chi2 = 0.0;
-  for (int k = 0; k <= D; ++k) {
-    const double z = rng.normal();
-    chi2 += z * z;
+  double norm2 = direction.squaredNorm();
+  while (norm2 == 0.0) {
+    direction = normal_vector<D>(rng);
+    norm2 = direction.squaredNorm();
   }
-  return (sqrt_T * std::sqrt(chi2) / direction.norm()) * direction;
+  const double z = rng.normal();
+  return (sqrt_T * std::sqrt((norm2 + z * z) / norm2)) * direction;
 }
 }  // namespace
 
