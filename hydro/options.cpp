@@ -62,8 +62,9 @@ HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::st
   if (!node) return keys;
   const toml::table* table = node.as_table();
   if (!table) throw std::invalid_argument("hydro in " + source + " must be a table ([hydro])");
-  for (auto&& [key_view, value] : *table) {
+  for (auto&& [key_view, node_value] : *table) {
     const std::string key(key_view.str());
+    const toml::node& value = node_value;  // a lambda may not capture a structured binding (C++17; clang)
     const auto text = [&] {
       if (const auto* s = value.as_string()) return s->get();
       throw std::invalid_argument("hydro." + key + " in " + source + " must be a string");

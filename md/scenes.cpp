@@ -44,7 +44,9 @@ radius = 0.0         # 0: the host radius a
 )";
 
 double number(const toml::node& node, const std::string& key) {
-  if (auto v = node.value<double>()) return *v;
+  // + 0.0 turns -0.0 into +0.0: -0 would be written back by to_toml() as the integer -0, which reads
+  // as +0, so a scene would not survive its own round trip (checkpoints and merges compare that text).
+  if (auto v = node.value<double>()) return *v + 0.0;
   throw std::invalid_argument("scene key " + key + " must be a number");
 }
 long long integer(const toml::node& node, const std::string& key) {

@@ -5,6 +5,10 @@
 # sanitizer report is saved as build-fuzz/findings/<target>/crash-* (replay: the printed command;
 # after the fix, copy it into fuzz/corpus/<target>/ so the ordinary tests replay it).
 # Usage: scripts/fuzz.sh [SECONDS] [TARGET ...]     targets: scene options checkpoint run_directory
+# COLDBLAST_FUZZ_SEED=S fixes libFuzzer's seed; COLDBLAST_FUZZ_RUNS_<target>=N (or COLDBLAST_FUZZ_RUNS
+# for every target) stops a target after N inputs. CI's bounded pass (.ci/run) sets both, so a clean
+# clone fuzzes the same inputs on every machine that is fast enough (SECONDS stays the upper bound;
+# a slower machine runs a prefix of them).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${COLDBLAST_FUZZ_BUILD_DIR:-$here/build-fuzz}
@@ -12,6 +16,9 @@ seconds=${1:-60}
 shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(scene options checkpoint run_directory)
+
+fixed=()
+[ -n "${COLDBLAST_FUZZ_SEED:-}" ] && fixed+=(-seed="$COLDBLAST_FUZZ_SEED")
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -22,11 +29,14 @@ nice -n 15 cmake --build "$build" -j2 --target "${targets[@]/#/coldblast_fuzz_}"
 run_one() {
   local target=$1
   mkdir -p "$build/corpus/$target" "$build/findings/$target"
+  local runs_var="COLDBLAST_FUZZ_RUNS_$target" runs=()
+  local limit=${!runs_var:-${COLDBLAST_FUZZ_RUNS:-}}
+  [ -n "$limit" ] && runs=(-runs="$limit")
   echo "fuzz: $target for $seconds s" >&2
   # -rss_limit_mb and -timeout turn runaway memory and hangs into findings too.
   nice -n 15 "$build/bin/coldblast_fuzz_$target" "$build/corpus/$target" "$here/fuzz/corpus/$target" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
-      -artifact_prefix="$build/findings/$target/" >"$build/findings/$target/log.txt" 2>&1
+      -artifact_prefix="$build/findings/$target/" "${fixed[@]}" "${runs[@]}" >"$build/findings/$target/log.txt" 2>&1
   local status=$?
   tail -n 12 "$build/findings/$target/log.txt" | grep -E "stat::number_of_executed_units|Done|ERROR|SUMMARY|finding" >&2 || true
   return $status
