@@ -63,7 +63,10 @@ class Sweep:
     def row(self):
         result = "PASS" if not self.failures else "FAIL"
         detail = f"{self.ok} finite and within the bound, {self.rejected} rejected with exit 2"
-        extra = "; ".join(self.failures[:3] + [n for n in self.notes[:2]])
+        if self.failures:
+            detail += f", {len(self.failures)} failed"
+        # failures listed first (up to 6: the cell must stay readable), then up to 2 of the exit-2 notes
+        extra = "; ".join(self.failures[:6] + [n for n in self.notes[:2]])
         rows.append(f"| {self.solver} | {self.sweep} | {self.check} | **{result}**: {detail}" +
                     (f" ({extra})" if extra else "") + " |")
         sys.stderr.write(rows[-1] + "\n")
