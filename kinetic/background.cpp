@@ -81,8 +81,10 @@ GridBackground::GridBackground(int d, std::vector<double> x, double edge, std::v
     log_t_.push_back(std::log(f.t));
     log_scale_.push_back(std::log(f.scale));
   }
-  for (std::size_t k = 0; k + 1 < frames_.size(); ++k)
+  for (std::size_t k = 0; k + 1 < frames_.size(); ++k) {
     window_slope_inverse_.push_back(1.0 / (log_t_[k + 1] - log_t_[k]));
+    window_scale_exponent_.push_back((log_scale_[k + 1] - log_scale_[k]) * window_slope_inverse_[k]);
+  }
   n_chi_max_ = n_inf_ * contact_.chi(n_inf_);
   for (const BackgroundFrame& f : frames_)
     for (const double n : f.n) n_chi_max_ = std::max(n_chi_max_, n * contact_.chi(n));
@@ -143,10 +145,7 @@ double GridBackground::bound_length(const TimeSlice& now, double r) const {
   // Two widths of the band holding r (the grid is refined at the centre, so a fixed reach would
   // span the core's many narrow bands and loosen the majorant; docs/kinetic.md).
   const double scale = now.scale, x = r / scale;
-  const auto upper = std::upper_bound(band_start_.begin(), band_start_.end(), x);
-  const std::size_t b = upper == band_start_.begin() ? 0
-                        : upper == band_start_.end() ? band_start_.size() - 2
-                                                     : static_cast<std::size_t>(upper - band_start_.begin()) - 1;
+  const std::size_t b = std::min(pair_near(x, now.cell) / band_width_, band_start_.size() - 2);
   return 2.0 * scale * (band_start_[b + 1] - band_start_[b]);
 }
 
@@ -155,17 +154,29 @@ WindowBound GridBackground::local_bound(const WindowBound& window, const TimeSli
   const BandBounds& bands = window.index >= 0    ? window_bands_[static_cast<std::size_t>(window.index)]
                             : window.index == -1 ? first_bands_
                                                  : last_bands_;
-  // s(t) is monotone in t inside a window, so x = r/s over [t, t_end] lies in [r_lo/s_max, r_hi/s_min].
-  const double t = now.t, s0 = now.scale, s1 = scale_at(window, t_end);
-  const double x_lo = r_lo / std::max(s0, s1), x_hi = r_hi / std::min(s0, s1);
-  const auto pair_of = [&](double x) {
-    const auto upper = std::upper_bound(x_.begin(), x_.end(), x);
-    return upper == x_.begin() ? std::size_t{0} : static_cast<std::size_t>(upper - x_.begin()) - 1;
-  };
+  // s ∝ t^α inside a window (ln s linear in ln t; α = 2/(d+2) in the self-similar continuations),
+  // so x = r/s over [t, t_end] lies in [r_lo/s_max, r_hi/s_min]. For 0 <= α <= 1 (a blast), t^α is
+  // concave and s(t_end) <= s(t) (1 + α (t_end/t − 1)) (Bernoulli's inequality): a bound without
+  // the log and exp of s(t_end); the factors 1 ± 1e-12 cover the round-off of s itself.
+  const double t = now.t, s0 = now.scale;
+  const double alpha =
+      window.index >= 0 ? window_scale_exponent_[static_cast<std::size_t>(window.index)] : 2.0 / (d_ + 2);
+  double s_min, s_max;
+  if (alpha >= 0.0 && alpha <= 1.0) {
+    s_min = s0 * (1.0 - 1e-12);
+    s_max = s0 * (1.0 + alpha * (t_end / t - 1.0)) * (1.0 + 1e-12);
+  } else {
+    const double s1 = scale_at(window, t_end);
+    s_min = std::min(s0, s1);
+    s_max = std::max(s0, s1);
+  }
+  const double x_lo = r_lo / s_max, x_hi = r_hi / s_min;
   WindowBound local = window;
   double n_chi = 0.0, flux = 0.0;
+  const std::size_t i_lo = pair_near(x_lo, now.cell);
+  local.cell = i_lo;
   if (x_lo <= edge_) {
-    const std::size_t b0 = pair_of(x_lo) / band_width_, b1 = pair_of(std::min(x_hi, edge_)) / band_width_;
+    const std::size_t b0 = i_lo / band_width_, b1 = pair_near(std::min(x_hi, edge_), i_lo) / band_width_;
     for (std::size_t b = b0; b <= b1; ++b) {
       n_chi = std::max(n_chi, bands.n_chi[b]);
       flux = std::max(flux, bands.flux[b]);
@@ -181,7 +192,42 @@ WindowBound GridBackground::local_bound(const WindowBound& window, const TimeSli
   return local;
 }
 
-GridBackground::Cell GridBackground::locate(double x) const {
+std::size_t GridBackground::pair_near(double x, std::size_t hint) const {
+  const std::size_t n = x_.size();
+  std::size_t lo = std::min(hint, n - 1), hi, step = 1;  // then x_[lo] <= x < x_[hi] (x_[n] = +inf)
+  if (x_[lo] <= x) {
+    while (lo + step < n && x_[lo + step] <= x) {
+      lo += step;
+      step *= 2;
+    }
+    hi = std::min(lo + step, n);
+  } else {
+    hi = lo;
+    while (true) {
+      if (hi < step) {
+        if (!(x_[0] <= x)) return 0;  // below the first centre (or NaN)
+        lo = 0;
+        break;
+      }
+      if (x_[hi - step] <= x) {
+        lo = hi - step;
+        break;
+      }
+      hi -= step;
+      step *= 2;
+    }
+  }
+  while (hi - lo > 1) {  // bisection of the bracket
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (x_[mid] <= x)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+GridBackground::Cell GridBackground::locate(double x, std::size_t hint) const {
   Cell c;
   const std::size_t last = x_.size() - 1;
   if (!(x >= x_.front())) return c;  // below the first centre: the first cell's values
@@ -197,7 +243,7 @@ GridBackground::Cell GridBackground::locate(double x) const {
     else if (x >= x_[i + 1])
       ++i;
   } else {
-    i = static_cast<std::size_t>(std::upper_bound(x_.begin(), x_.end(), x) - x_.begin()) - 1;
+    i = pair_near(x, hint);
   }
   c.i = i;
   c.w = (x - x_[i]) / (x_[i + 1] - x_[i]);
@@ -218,7 +264,7 @@ HostState GridBackground::frame_at(std::size_t k, const Cell& c, double fu) cons
 HostState GridBackground::at(double r, const TimeSlice& slice) const {
   const double x = r / slice.scale;
   if (x > edge_) return {n_inf_, 0.0, 0.0, contact_.chi_at_phi(n_inf_ * phi_per_n_)};  // ambient gas at rest
-  const Cell c = locate(x);
+  const Cell c = locate(x, slice.cell);
   HostState h;
   if (slice.index >= 0) {
     const std::size_t k = static_cast<std::size_t>(slice.index);

@@ -5,6 +5,7 @@
 // all space; they make the null-collision majorant of kinetic/tracer.hpp (docs/kinetic.md).
 // Grids (Navier–Stokes, TvNS) are stored on their self-similar coordinate x = r/s(t) and
 // interpolated bilinearly (x, and ln t between stored frames).
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <string>
@@ -38,6 +39,7 @@ struct WindowBound {
   double n_chi_max = 0.0;  ///< >= n chi(n) everywhere in the window
   double flux_max = 0.0;   ///< >= n chi(n) (|u| + c̄(T)) everywhere, c̄ the host mean thermal speed
   int index = 0;           ///< window id, passed back to Background::at
+  std::size_t cell = 0;    ///< local_bound: the grid cell of its smallest radius (a search hint for TimeSlice::cell)
 };
 
 /// What the host state at one time needs besides the radius, computed once per time (one log
@@ -48,6 +50,9 @@ struct TimeSlice {
   double scale = 1.0;  ///< length unit of the self-similar coordinate at t
   double fu = 1.0;     ///< velocity factor of a self-similar continuation (1 between frames)
   int index = 0;       ///< the window's id
+  /// A grid cell near the radii to be looked up (a search hint: any value gives the same host
+  /// state; a near one makes the search a few comparisons instead of a bisection).
+  std::size_t cell = 0;
 };
 
 /// Mean thermal speed of the host (mass 1) Maxwellian at temperature T (kinetic_theory.hpp).
@@ -148,7 +153,10 @@ class GridBackground final : public Background {
     double w = 0.0;  ///< weight of cell i+1
     bool inside = false;
   };
-  Cell locate(double x) const;
+  Cell locate(double x, std::size_t hint) const;
+  /// The last i with x_[i] <= x (0 if none): std::upper_bound's answer minus one, found by an
+  /// exponential search outwards from `hint` (O(log |i − hint|) comparisons).
+  std::size_t pair_near(double x, std::size_t hint) const;
   /// Fields of frame k in cell `c` (with the hold rules), velocity and temperature times the
   /// scale factors fu, fu².
   HostState frame_at(std::size_t k, const Cell& c, double fu) const;
@@ -165,9 +173,10 @@ class GridBackground final : public Background {
   bool uniform_ = false;  // x_ equally spaced (the solvers' grids): locate() indexes directly
   double x_step_inverse_ = 0.0;
   double edge_, n_inf_;
-  double phi_per_n_;                          // Ω_d a^d
-  std::vector<double> log_t_, log_scale_;     // per frame
-  std::vector<double> window_slope_inverse_;  // 1 / ln(t_{k+1}/t_k)
+  double phi_per_n_;                           // Ω_d a^d
+  std::vector<double> log_t_, log_scale_;      // per frame
+  std::vector<double> window_slope_inverse_;   // 1 / ln(t_{k+1}/t_k)
+  std::vector<double> window_scale_exponent_;  // α_k = ln(s_{k+1}/s_k) / ln(t_{k+1}/t_k): s ∝ t^α_k in window k
   std::vector<BackgroundFrame> frames_;
   ContactModel contact_;
   bool self_similar_after_;

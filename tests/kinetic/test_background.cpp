@@ -12,12 +12,13 @@ namespace {
 /// Frames with n = 1 + x + ln t, u = 2x, T = 1 + x (scale = t^(1/2)) on 50 centres in [0.01, 0.99]:
 /// equally spaced (located by index) or stretched, refined at the centre like the Navier–Stokes
 /// grid (located by binary search).
-GridBackground linear_background(bool self_similar_after, bool enskog = false, bool stretched = false) {
+GridBackground linear_background(bool self_similar_after, bool enskog = false, bool stretched = false,
+                                 double scale_exponent = 0.5) {
   std::vector<double> x;
   for (int i = 0; i < 50; ++i) x.push_back(stretched ? 0.01 + 0.98 * std::pow(i / 49.0, 1.5) : 0.01 + 0.02 * i);
   std::vector<BackgroundFrame> frames;
   for (const double t : {1.0, 2.0, 4.0, 8.0}) {
-    BackgroundFrame f{t, std::sqrt(t), {}, {}, {}};
+    BackgroundFrame f{t, std::pow(t, scale_exponent), {}, {}, {}};
     for (const double xi : x) {
       f.n.push_back(1 + xi + std::log(t));
       f.u.push_back(2 * xi);
@@ -101,8 +102,11 @@ TEST_CASE("grid background: a segment's reach is two widths of the band at the i
 }
 
 TEST_CASE("grid background: local bounds hold for every radius reachable in the segment") {
+  // s ∝ t^(1/2) (a blast: the Bernoulli bound of s(t_end)) and s ∝ t^(3/2) (s(t_end) computed).
+  const double scale_exponent = GENERATE(0.5, 1.5);
   for (const bool enskog : {false, true}) {
-    const GridBackground bg = linear_background(true, enskog, enskog);  // the dense case on the stretched grid
+    // The dense case on the stretched grid.
+    const GridBackground bg = linear_background(true, enskog, enskog, scale_exponent);
     Random rng(2, enskog);
     for (int i = 0; i < 20000; ++i) {
       const double t = std::exp(-3 + 6 * rng.uniform());
@@ -116,6 +120,32 @@ TEST_CASE("grid background: local bounds hold for every radius reachable in the 
       const HostState h = bg.at(r, tp, w);
       REQUIRE(h.n * h.chi <= local.n_chi_max * (1 + 1e-14));
       REQUIRE(h.n * h.chi * (std::abs(h.u) + host_mean_speed(2, h.T)) <= local.flux_max * (1 + 1e-14));
+    }
+  }
+}
+
+TEST_CASE("grid background: a time slice's cell hint changes no result, only the search") {
+  for (const bool stretched : {false, true}) {
+    const GridBackground bg = linear_background(true, true, stretched);
+    Random rng(8, stretched);
+    for (int i = 0; i < 5000; ++i) {
+      const double t = std::exp(-3 + 6 * rng.uniform());
+      const WindowBound w = bg.bound(t);
+      TimeSlice exact = bg.slice(w, t), hinted = exact;
+      hinted.cell = static_cast<std::size_t>(60 * rng.uniform());  // also beyond the 50 cells
+      const double r = 1.2 * std::sqrt(t) * rng.uniform() * (rng.uniform() < 0.1 ? 0.001 : 1.0);
+      const HostState a = bg.at(r, exact), b = bg.at(r, hinted);
+      REQUIRE(a.n == b.n);
+      REQUIRE(a.u == b.u);
+      REQUIRE(a.T == b.T);
+      REQUIRE(a.chi == b.chi);
+      REQUIRE(bg.bound_length(exact, r) == bg.bound_length(hinted, r));
+      const double t_end = std::min(w.t_end, t * (1 + 0.3 * rng.uniform()));
+      const WindowBound la = bg.local_bound(w, exact, t_end, 0.5 * r, r),
+                        lb = bg.local_bound(w, hinted, t_end, 0.5 * r, r);
+      REQUIRE(la.n_chi_max == lb.n_chi_max);
+      REQUIRE(la.flux_max == lb.flux_max);
+      REQUIRE(la.cell == lb.cell);
     }
   }
 }
