@@ -139,7 +139,17 @@ InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index)
   InitialState<D> state;
   state.host = {c.a, 1.0};
   state.impurity = {scene.impurity_radius, c.impurities.mass};
-  state.position = random_sequential_addition<D>(rng, scene.particle_count, c.a, scene.region_radius);
+  try {
+    state.position = random_sequential_addition<D>(rng, scene.particle_count, c.a, scene.region_radius);
+  } catch (const RsaSaturated& e) {
+    // Possible only just below jamming (a finite ball saturates above the bulk value, docs/md-output.md).
+    throw std::invalid_argument(
+        "phi = " + format_number(scene.phi) + " (n = " + format_number(c.n) + ", a = " + format_number(c.a) +
+        ") does not fit: random sequential addition saturated the region of realization " + std::to_string(index) +
+        " at phi = " + format_number(e.fraction_reached) + " (" + std::to_string(e.placed) + " of " +
+        std::to_string(e.requested) + " particles); allowed: phi in (0, " + format_number(rsa_jamming_fraction(D)) +
+        ") for d = " + std::to_string(D) + " and below the region's saturation; lower n or a");
+  }
   state.velocity.assign(scene.particle_count, Vec<D>::Zero());
   state.species.assign(scene.particle_count, host_species);
   kick_impurities<D>(rng, state, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);

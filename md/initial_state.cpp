@@ -101,6 +101,24 @@ struct PlacementGrid {
     return false;
   }
   double reach_distance = 0.0;  // largest contact distance
+
+  /// True if `accept(j)` holds for a stored centre j in a cell within `reach` of x.
+  template <class Accept>
+  bool any_near(const Vec<D>& x, double reach, Accept accept) const {
+    std::array<std::int64_t, D> lo, hi;
+    for (int k = 0; k < D; ++k) {
+      lo[k] = coordinate(x[k] - reach);
+      hi[k] = coordinate(x[k] + reach);
+    }
+    std::array<std::int64_t, D> o = lo;
+    do {
+      std::int64_t index = 0;
+      for (int k = D - 1; k >= 0; --k) index = index * per_axis + o[k];
+      for (std::int32_t j = head[index]; j >= 0; j = next[j])
+        if (accept(j)) return true;
+    } while (next_multi_index(o, lo, hi));
+    return false;
+  }
 };
 
 template <int D>
@@ -112,11 +130,140 @@ Vec<D> uniform_in_ball(std::mt19937_64& rng, double R) {
   }
 }
 
-}  // namespace
+/// Phase 2 of RSA: the voxel method of Zhang & Torquato, Phys. Rev. E 88, 053312 (2013), Sec. II,
+/// for a ball region. Cubic voxels of side s < sigma/sqrt(d) (so a voxel holding a centre is covered
+/// by it) tile the ball; a voxel is dropped once proven unable to hold a new centre: wholly outside
+/// the ball, or all its corners within sigma of one placed centre (the exclusion ball is convex).
+/// A trial picks a voxel uniformly from the list (all of one size) and a point uniformly in it, and
+/// accepts it if it lies in the ball and overlaps nothing: the accepted point is uniform over the
+/// available space (which the list covers), as RSA requires. When a round of trials accepts little,
+/// every voxel is split into 2^d children and the covered children are dropped. An empty list
+/// proves saturation.
+template <int D>
+class VoxelPhase {
+ public:
+  using Index = std::array<std::int64_t, D>;
+  VoxelPhase(const PlacementGrid<D>& grid, const std::vector<Vec<D>>& centres, double radius, double R)
+      : grid_(grid), centres_(centres), sigma_(2.0 * radius), R_(R) {
+    const int per_width = static_cast<int>(std::floor(grid.width * std::sqrt(double(D)) / sigma_)) + 1;
+    side_ = grid.width / per_width;  // < sigma / sqrt(d)
+    const std::int64_t per_axis = static_cast<std::int64_t>(std::ceil(2.0 * R / side_));
+    const Index lo = uniform_index<std::int64_t, D>(0), hi = uniform_index<std::int64_t, D>(per_axis - 1);
+    Index v = lo;
+    do
+      if (!excluded(v)) voxels_.push_back(v);
+    while (next_multi_index(v, lo, hi));
+  }
+  std::size_t size() const { return voxels_.size(); }
+  int level() const { return level_; }
+  /// Splits every voxel into its 2^d children, keeping those not excluded.
+  void subdivide() {
+    side_ *= 0.5;
+    ++level_;
+    std::vector<Index> children;
+    for (const Index& v : voxels_)
+      for (int bits = 0; bits < (1 << D); ++bits) {
+        Index c;
+        for (int k = 0; k < D; ++k) c[k] = 2 * v[k] + ((bits >> k) & 1);
+        if (!excluded(c)) children.push_back(c);
+      }
+    voxels_.swap(children);
+  }
+  /// A uniform point of a uniformly chosen voxel; `which` is the voxel's place in the list.
+  Vec<D> sample(std::mt19937_64& rng, std::size_t& which) const {
+    which = std::min(voxels_.size() - 1, static_cast<std::size_t>(uniform01(rng) * voxels_.size()));
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = corner(voxels_[which], k) + side_ * uniform01(rng);
+    return x;
+  }
+  /// Drops voxel `which` if it is excluded (always after a centre was placed in it).
+  void drop_if_excluded(std::size_t which) {
+    if (!excluded(voxels_[which])) return;
+    voxels_[which] = voxels_.back();
+    voxels_.pop_back();
+  }
+
+ private:
+  double corner(const Index& v, int k) const { return -R_ + static_cast<double>(v[k]) * side_; }
+  bool excluded(const Index& v) const {
+    double nearest = 0.0;  // the voxel's nearest point to the origin
+    Vec<D> middle;
+    for (int k = 0; k < D; ++k) {
+      const double lo = corner(v, k), hi = lo + side_;
+      const double gap = lo > 0.0 ? lo : (hi < 0.0 ? -hi : 0.0);
+      nearest += gap * gap;
+      middle[k] = lo + 0.5 * side_;
+    }
+    if (nearest >= R_ * R_) return true;
+    // A covering centre lies within sigma of every point of the voxel, the middle included.
+    return grid_.any_near(middle, sigma_, [&](std::int32_t j) {
+      double farthest = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double lo = corner(v, k), to_lo = centres_[j][k] - lo, to_hi = to_lo - side_;
+        farthest += std::max(to_lo * to_lo, to_hi * to_hi);
+      }
+      return farthest < sigma_ * sigma_;
+    });
+  }
+  const PlacementGrid<D>& grid_;
+  const std::vector<Vec<D>>& centres_;
+  double sigma_, R_, side_ = 0.0;
+  int level_ = 0;
+  std::vector<Index> voxels_;
+};
+
+/// Voxel levels after which the voxel phase gives up as saturated: the voxels are then 2^-40 of the
+/// first ones (~1e-12 sigma), so what is left is measure-zero slivers or round-off.
+constexpr int max_voxel_levels = 40;
 
 template <int D>
-std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t count, double radius,
-                                               double region_radius) {
+void fill_by_voxels(std::mt19937_64& rng, std::size_t count, double radius, double R, PlacementGrid<D>& grid,
+                    std::vector<Vec<D>>& centres, RsaReport& report) {
+  VoxelPhase<D> voxels(grid, centres, radius, R);
+  report.voxels_initial = voxels.size();
+  const auto same_radius = [radius](std::int32_t) { return radius; };
+  std::uint64_t round_trials = 0, round_placed = 0;
+  while (centres.size() < count) {
+    report.voxel_levels = voxels.level();
+    if (voxels.size() == 0 || voxels.level() > max_voxel_levels) {
+      report.saturated = true;
+      return;
+    }
+    std::size_t which = 0;
+    const Vec<D> x = voxels.sample(rng, which);
+    ++report.trials;
+    ++round_trials;
+    if (x.squaredNorm() < R * R && !grid.overlaps(x, radius, centres, same_radius)) {
+      centres.push_back(x);
+      grid.insert(static_cast<std::int32_t>(centres.size() - 1), x);
+      ++report.placed_by_voxels;
+      ++round_placed;
+    }
+    voxels.drop_if_excluded(which);
+    // A round is as many trials as voxels; split when it accepted under 1/2^d of them.
+    if (round_trials >= std::max<std::size_t>(voxels.size(), 64)) {
+      if (round_placed * (1u << D) < round_trials) voxels.subdivide();
+      round_trials = round_placed = 0;
+    }
+  }
+}
+
+}  // namespace
+
+RsaSaturated::RsaSaturated(std::size_t placed_, std::size_t requested_, double reached, double wanted)
+    : std::invalid_argument("random sequential addition saturated the region after " + std::to_string(placed_) +
+                            " of " + std::to_string(requested_) + " particles: packing fraction " +
+                            std::to_string(reached) + " reached, " + std::to_string(wanted) + " requested"),
+      placed(placed_),
+      requested(requested_),
+      fraction_reached(reached),
+      fraction_requested(wanted) {}
+
+template <int D>
+std::vector<Vec<D>> random_sequential_addition_report(std::mt19937_64& rng, std::size_t count, double radius,
+                                                      double region_radius, RsaReport& report,
+                                                      std::uint64_t switch_after) {
+  report = RsaReport{};
   const double volume = std::pow(M_PI, 0.5 * D) / std::tgamma(0.5 * D + 1.0);
   const double density = count / (volume * std::pow(region_radius, D));
   PlacementGrid<D> grid(region_radius, std::max(2.0 * radius, std::pow(density, -1.0 / D)), count);
@@ -124,29 +271,45 @@ std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t
   std::vector<Vec<D>> centres;
   centres.reserve(count);
   const auto same_radius = [radius](std::int32_t) { return radius; };
+  // Phase 1: plain trials (at ordinary packing fractions the only phase, so those placements are
+  // the ones earlier versions made, bit for bit).
   std::uint64_t failures = 0;
-  const std::uint64_t max_failures = 2000 * static_cast<std::uint64_t>(count) + 100000;
-  while (centres.size() < count) {
+  while (centres.size() < count && failures < switch_after) {
     const Vec<D> x = uniform_in_ball<D>(rng, region_radius);
+    ++report.trials;
     if (grid.overlaps(x, radius, centres, same_radius)) {
-      if (++failures > max_failures)
-        throw std::runtime_error("random sequential addition stalled after " + std::to_string(centres.size()) + " of " +
-                                 std::to_string(count) +
-                                 " particles: the packing fraction is too close to RSA jamming");
+      ++failures;
       continue;
     }
+    failures = 0;
     centres.push_back(x);
     grid.insert(static_cast<std::int32_t>(centres.size() - 1), x);
   }
+  if (centres.size() < count) fill_by_voxels<D>(rng, count, radius, region_radius, grid, centres, report);
+  report.placed = centres.size();
   // Order along the placement grid so that neighbours in space are near in memory.
-  std::vector<std::int64_t> key(count);
-  for (std::size_t i = 0; i < count; ++i) key[i] = grid.cell(centres[i]);
-  std::vector<std::size_t> order(count);
+  const std::size_t placed = centres.size();
+  std::vector<std::int64_t> key(placed);
+  for (std::size_t i = 0; i < placed; ++i) key[i] = grid.cell(centres[i]);
+  std::vector<std::size_t> order(placed);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
-  std::vector<Vec<D>> sorted(count);
-  for (std::size_t i = 0; i < count; ++i) sorted[i] = centres[order[i]];
+  std::vector<Vec<D>> sorted(placed);
+  for (std::size_t i = 0; i < placed; ++i) sorted[i] = centres[order[i]];
   return sorted;
+}
+
+template <int D>
+std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t count, double radius,
+                                               double region_radius) {
+  RsaReport report;
+  std::vector<Vec<D>> centres = random_sequential_addition_report<D>(rng, count, radius, region_radius, report);
+  if (centres.size() < count) {
+    const double ratio = std::pow(radius / region_radius, D);  // sphere volume / region volume
+    throw RsaSaturated(centres.size(), count, ratio * static_cast<double>(centres.size()),
+                       ratio * static_cast<double>(count));
+  }
+  return centres;
 }
 
 template <int D>
@@ -272,6 +435,10 @@ InitialState<D> lattice_start(std::mt19937_64& rng, std::size_t count, double ra
   return state;
 }
 
+template std::vector<Vec<2>> random_sequential_addition_report<2>(std::mt19937_64&, std::size_t, double, double,
+                                                                  RsaReport&, std::uint64_t);
+template std::vector<Vec<3>> random_sequential_addition_report<3>(std::mt19937_64&, std::size_t, double, double,
+                                                                  RsaReport&, std::uint64_t);
 template std::vector<Vec<2>> random_sequential_addition<2>(std::mt19937_64&, std::size_t, double, double);
 template std::vector<Vec<3>> random_sequential_addition<3>(std::mt19937_64&, std::size_t, double, double);
 template void kick_impurities<2>(std::mt19937_64&, InitialState<2>&, std::size_t, double, double);

@@ -6,6 +6,7 @@
 // a realization does not depend on which thread or shard runs it.
 #include <cstdint>
 #include <random>
+#include <stdexcept>
 
 #include "md/particles.hpp"
 
@@ -23,9 +24,40 @@ double standard_normal(std::mt19937_64& rng);
 /// Largest packing fraction random sequential addition reaches (jamming): 0.547 (d = 2), 0.3841 (d = 3).
 double rsa_jamming_fraction(int d);
 
-/// RSA of `count` spheres of radius `radius` with centres uniform in the ball |x| < region_radius;
-/// the result is ordered along a coarse grid (memory locality). Throws std::runtime_error if the
-/// placement stalls (packing too close to jamming).
+/// Consecutive failed random trials after which RSA switches to its voxel phase (below).
+inline constexpr std::uint64_t rsa_voxel_switch_default = 1000;
+
+/// How an RSA placement went: counts for tests, benchmarks and error messages.
+struct RsaReport {
+  std::size_t placed = 0;            ///< centres placed
+  std::size_t placed_by_voxels = 0;  ///< of which in the voxel phase
+  bool saturated = false;            ///< the voxel phase proved that no further centre fits
+  int voxel_levels = 0;              ///< voxel subdivisions (0: the voxel phase was not used or never subdivided)
+  std::size_t voxels_initial = 0;    ///< voxels left after the first coverage test
+  std::uint64_t trials = 0;          ///< random trials, both phases
+};
+
+/// RSA of up to `count` spheres of radius `radius` with centres in the ball |x| < region_radius,
+/// each new centre uniform over the space still available. Phase 1 draws centres uniformly in the
+/// ball and rejects overlaps; after `switch_after` consecutive failures it switches to the voxel
+/// method of Zhang & Torquato, Phys. Rev. E 88, 053312 (2013): it samples only voxels not yet
+/// proven covered, so it reaches saturation. Stops at `count` or at saturation (report.saturated);
+/// the result is ordered along a coarse grid (memory locality).
+template <int D>
+std::vector<Vec<D>> random_sequential_addition_report(std::mt19937_64& rng, std::size_t count, double radius,
+                                                      double region_radius, RsaReport& report,
+                                                      std::uint64_t switch_after = rsa_voxel_switch_default);
+
+/// RSA saturated (no further centre fits anywhere in the region) before `requested` centres.
+class RsaSaturated : public std::invalid_argument {
+ public:
+  RsaSaturated(std::size_t placed, std::size_t requested, double fraction_reached, double fraction_requested);
+  std::size_t placed, requested;
+  double fraction_reached, fraction_requested;  ///< placed (requested) sphere volume / region volume
+};
+
+/// random_sequential_addition_report for exactly `count` centres; throws RsaSaturated if the region
+/// saturates first.
 template <int D>
 std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t count, double radius,
                                                double region_radius);
