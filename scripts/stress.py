@@ -139,7 +139,7 @@ def hydro():
     s.row()
 
 
-def md():
+def md(only=None):
     base = ["md", "run", "--set", "t_max=20", "--realizations", "2", "--format", "json", "--out", os.path.join(WORK, "md")]
     def judge(doc):
         if not finite_tree({k: v for k, v in doc.items()}):
@@ -156,6 +156,8 @@ def md():
         ("one impurity", ["impurities.count=1", "impurities.count=1;d=3"]),
     ]
     for name, settings in sweeps:
+        if only and not name.startswith(only):
+            continue
         s = Sweep("MD (blast)", f"{name}: " + ", ".join(settings), "relative energy error ≤ 1e−9 and every observable finite, or exit 2 naming the key")
         for setting in settings:
             args = list(base)
@@ -163,6 +165,11 @@ def md():
                 args += ["--set", kv]
             s.case(setting, args, judge, timeout=900)
         s.row()
+
+
+def md_phi():
+    """Only the MD φ sweeps (2D and 3D up to RSA jamming)."""
+    md("φ")
 
 
 def md_memory():
