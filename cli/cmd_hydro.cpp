@@ -29,6 +29,7 @@ struct HydroOptions {
   std::string eos = "ideal";
   double phi = 0;  // 0: the library's default for a hard-particle EOS
   std::string transport = "dilute";
+  double outer_margin = 0;  // 0: the solver's default
   std::string config_file;  // --config FILE: its [hydro] table's eos, phi, transport (flags win)
   hydro::HydroModelKeys file_keys;
   std::string out;
@@ -52,6 +53,7 @@ hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
   o.eos = options.eos;
   o.phi = options.phi;
   o.transport = options.transport;
+  o.outer_margin = options.outer_margin;
   hydro::NavierStokesConfig config = hydro::navier_stokes_config(o, euler, options.file_keys);
   if (!euler && options.viscosity != "on" && options.viscosity != "off")
     throw std::invalid_argument("--viscosity = " + options.viscosity + " is not one of on, off");
@@ -234,6 +236,9 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
       ->capture_default_str();
   command.add_option("--phi", options.phi,
                      "Ambient packing fraction for a hard-particle --eos (default 0.118, the paper's MD)");
+  command.add_option("--outer-margin", options.outer_margin,
+                     "Outer grid edge / shock radius, [1.05, 2] (default 1.15; raise it when heat conduction "
+                     "outruns the shock at the start, as in dense gases near close packing)");
   command.add_option("--config", options.config_file,
                      "TOML file whose [hydro] table sets eos, phi, transport (a scene file may carry it; flags win; "
                      "docs/hydro.md)");

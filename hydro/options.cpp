@@ -14,9 +14,14 @@ namespace coldblast::hydro {
 namespace {
 const common::FieldNames tvns_flags = {
     {"d", "--d"}, {"gamma", "--gamma"}, {"eos", "--eos"}, {"phi", "--phi"}, {"tolerance", "--tolerance"}};
-const common::FieldNames hydro_flags = {
-    {"d", "--d"},     {"cells", "--cells"},         {"until_R_over_lambda", "--until"},      {"eos", "--eos"},
-    {"phi", "--phi"}, {"transport", "--transport"}, {"kappa_prefactor", "--kappa-prefactor"}};
+const common::FieldNames hydro_flags = {{"d", "--d"},
+                                        {"cells", "--cells"},
+                                        {"until_R_over_lambda", "--until"},
+                                        {"eos", "--eos"},
+                                        {"phi", "--phi"},
+                                        {"transport", "--transport"},
+                                        {"kappa_prefactor", "--kappa-prefactor"},
+                                        {"outer_margin", "--outer-margin"}};
 }  // namespace
 
 std::vector<double> parse_profile_points(const std::string& text) {
@@ -105,6 +110,7 @@ NavierStokesConfig navier_stokes_config(const HydroOptions& flags, bool euler, c
     config.physics.eos = eos_from_string(options.eos, "eos");
     config.physics.phi = options.phi;
     config.physics.transport = transport_from_string(options.transport, "transport");
+    if (options.outer_margin != 0.0) config.numerics.outer_margin = options.outer_margin;
     if (euler) {
       config.physics.heat_conduction = false;
       config.physics.viscosity = false;

@@ -39,6 +39,7 @@ struct HydroOptions {
   std::string eos = "ideal";              ///< ideal, henderson (d = 2) or carnahan-starling (d = 3)
   double phi = 0.0;                  ///< ambient packing fraction; 0 = the library's default for a hard-particle EOS
   std::string transport = "dilute";  ///< transport coefficients (hydro::transport_from_string)
+  double outer_margin = 0.0;         ///< outer grid edge / R_ref, [1.05, 2]; 0 = the solver's default (1.15)
 };
 /// The Navier–Stokes model keys of a TOML file's [hydro] table (docs/hydro.md): the same values as
 /// --eos, --phi, --transport. An unset key leaves the flag's value.
