@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/interrupt.hpp"
 #include "md/multi_index.hpp"
 
 namespace coldblast::md {
@@ -224,6 +225,7 @@ void fill_by_voxels(std::mt19937_64& rng, std::size_t count, double radius, doub
   const auto same_radius = [radius](std::int32_t) { return radius; };
   std::uint64_t round_trials = 0, round_placed = 0;
   while (centres.size() < count) {
+    common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
     report.voxel_levels = voxels.level();
     if (voxels.size() == 0 || voxels.level() > max_voxel_levels) {
       report.saturated = true;
@@ -276,7 +278,7 @@ std::vector<Vec<D>> random_sequential_addition_report(std::mt19937_64& rng, std:
   std::uint64_t failures = 0;
   while (centres.size() < count && failures < switch_after) {
     const Vec<D> x = uniform_in_ball<D>(rng, region_radius);
-    ++report.trials;
+    if ((++report.trials & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
     if (grid.overlaps(x, radius, centres, same_radius)) {
       ++failures;
       continue;
@@ -371,6 +373,7 @@ void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t i
       Vec<D> x;
       do {
         if (++tries > 100000000) throw std::runtime_error("cannot re-place a host particle around the impurities");
+        if ((tries & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
         x = uniform_in_ball<D>(rng, region_radius);
       } while (grid.overlaps(x, a, state.position, radius_of, id) ||
                x.norm() < farthest_impurity + a + state.impurity.radius);
