@@ -11,6 +11,10 @@
 //   md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS]
 //       3D hard spheres in a periodic box from a lattice at T = 1 (defaults: realization 1,
 //       10^5 particles, 5 x 10^5 melt collisions, 10^6 timed collisions)
+//   md_driver setup REALIZATION KEY=VALUE...
+//       the set-up alone of `md run --set KEY=VALUE...` (the embedded scene): the steps of
+//       md/ensemble.cpp's blast_initial_state, RSA and the impurities' kick timed apart, with
+//       the voxel phases' counts and a checksum of the initial positions and velocities
 //
 // Output (one line): counts, an FNV-1a checksum of all final positions and velocities, the set-up
 // and event-loop CPU seconds.
@@ -19,6 +23,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -109,10 +114,56 @@ int equilibrium(double phi, int realization, std::size_t count, std::uint64_t me
   return 0;
 }
 
+template <int D>
+int setup(const ResolvedScene& scene, int realization) {
+  const BlastConfig& c = scene.config;
+  auto rng = realization_rng(c.seed, static_cast<std::uint64_t>(realization));
+  InitialState<D> state;
+  state.host = {c.a, 1.0};
+  state.impurity = {scene.impurity_radius, c.impurities.mass};
+  const double t0 = cpu_seconds();
+  RsaReport rsa;
+  state.position = random_sequential_addition_report<D>(rng, scene.particle_count, c.a, scene.region_radius, rsa);
+  if (rsa.placed < scene.particle_count) {
+    std::fprintf(stderr, "md_driver: RSA saturated after %zu of %zu\n", rsa.placed, scene.particle_count);
+    return 2;
+  }
+  state.velocity.assign(scene.particle_count, Vec<D>::Zero());
+  state.species.assign(scene.particle_count, host_species);
+  const double t1 = cpu_seconds();
+  KickReport kick;
+  try {
+    kick = kick_impurities<D>(rng, state, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+  } catch (const std::invalid_argument& e) {
+    std::printf("setup D%d r%d: N %zu region %.4g rsa %.3f s kick %.3f s: %s\n", D, realization, scene.particle_count,
+                scene.region_radius, t1 - t0, cpu_seconds() - t1, e.what());
+    return 2;
+  }
+  const double t2 = cpu_seconds();
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&h](double x) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    h = (h ^ bits) * 1099511628211ull;
+  };
+  for (std::size_t i = 0; i < state.size(); ++i)
+    for (int k = 0; k < D; ++k) {
+      mix(state.position[i][k]);
+      mix(state.velocity[i][k]);
+    }
+  std::printf(
+      "setup D%d r%d: N %zu region %.4g phi %.4f rsa_by_voxels %zu displaced %zu kick_by_voxels %zu r_in %.4g "
+      "checksum %016llx rsa %.3f kick %.3f s\n",
+      D, realization, scene.particle_count, scene.region_radius, scene.phi, rsa.placed_by_voxels, kick.displaced,
+      kick.placed_by_voxels, kick.inner_radius, static_cast<unsigned long long>(h), t1 - t0, t2 - t1);
+  return 0;
+}
+
 int usage() {
   std::fprintf(stderr,
                "usage: md_driver blast D REALIZATION [T_MAX] [CELL_WIDTH]\n"
-               "       md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS]\n");
+               "       md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS]\n"
+               "       md_driver setup REALIZATION KEY=VALUE...\n");
   return 2;
 }
 }  // namespace
@@ -136,6 +187,12 @@ int main(int argc, char** argv) {
     }
     return equilibrium(phi, static_cast<int>(arg(3, 1.0)), static_cast<std::size_t>(arg(4, 1e5)),
                        static_cast<std::uint64_t>(arg(5, 5e5)), static_cast<std::uint64_t>(arg(6, 1e6)));
+  }
+  if (mode == "setup") {
+    const ResolvedScene scene =
+        resolve_scene(parse_scene(default_scene_toml(), std::vector<std::string>(argv + 3, argv + argc)));
+    const int realization = std::atoi(argv[2]);
+    return scene.config.d == 2 ? setup<2>(scene, realization) : setup<3>(scene, realization);
   }
   return usage();
 }

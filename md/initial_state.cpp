@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/interrupt.hpp"
+#include "common/validate.hpp"
 #include "md/multi_index.hpp"
 
 namespace coldblast::md {
@@ -131,21 +132,28 @@ Vec<D> uniform_in_ball(std::mt19937_64& rng, double R) {
   }
 }
 
+/// Voxel levels after which the voxel phase gives up as saturated: the voxels are then 2^-40 of the
+/// first ones (~1e-12 sigma), so what is left is measure-zero slivers or round-off.
+constexpr int max_voxel_levels = 40;
+
 /// Phase 2 of RSA: the voxel method of Zhang & Torquato, Phys. Rev. E 88, 053312 (2013), Sec. II,
-/// for a ball region. Cubic voxels of side s < sigma/sqrt(d) (so a voxel holding a centre is covered
-/// by it) tile the ball; a voxel is dropped once proven unable to hold a new centre: wholly outside
-/// the ball, or all its corners within sigma of one placed centre (the exclusion ball is convex).
-/// A trial picks a voxel uniformly from the list (all of one size) and a point uniformly in it, and
-/// accepts it if it lies in the ball and overlaps nothing: the accepted point is uniform over the
-/// available space (which the list covers), as RSA requires. When a round of trials accepts little,
-/// every voxel is split into 2^d children and the covered children are dropped. An empty list
-/// proves saturation.
+/// for equal spheres of contact distance sigma in a ball region (minus an optional inner ball
+/// |x| < r_in). Cubic voxels of side s < sigma/sqrt(d) (so a voxel holding a centre is covered by
+/// it) tile the ball; a voxel is dropped once proven unable to hold a new centre: wholly outside the
+/// ball or inside the inner one, or all its corners within sigma of one centre in `grid` (the
+/// exclusion ball is convex). A trial picks a voxel uniformly from the list (all of one size) and a
+/// point uniformly in it, and accepts it if it is free (in the region, overlapping nothing): the
+/// accepted point is uniform over the available space (which the list covers), as RSA requires.
+/// When a round of trials accepts under 1/2^d of them, every voxel is split into 2^d children and
+/// the covered children are dropped. An empty list proves saturation. Only the centres in `grid`
+/// exclude voxels, so a centre must not leave the grid while the phase runs.
 template <int D>
 class VoxelPhase {
  public:
   using Index = std::array<std::int64_t, D>;
-  VoxelPhase(const PlacementGrid<D>& grid, const std::vector<Vec<D>>& centres, double radius, double R)
-      : grid_(grid), centres_(centres), sigma_(2.0 * radius), R_(R) {
+  VoxelPhase(const PlacementGrid<D>& grid, const std::vector<Vec<D>>& centres, double sigma, double R,
+             double r_in = 0.0)
+      : grid_(grid), centres_(centres), sigma_(sigma), R_(R), r_in_(r_in) {
     const int per_width = static_cast<int>(std::floor(grid.width * std::sqrt(double(D)) / sigma_)) + 1;
     side_ = grid.width / per_width;  // < sigma / sqrt(d)
     const std::int64_t per_axis = static_cast<std::int64_t>(std::ceil(2.0 * R / side_));
@@ -157,6 +165,36 @@ class VoxelPhase {
   }
   std::size_t size() const { return voxels_.size(); }
   int level() const { return level_; }
+
+  /// Draws until a point x with free(x) turns up, calls insert(x) (which puts x into the grid) and
+  /// returns true; returns false when the list proves that no free point is left (saturation).
+  /// Counts trials; polls SIGTERM/SIGINT at every trial.
+  template <class Free, class Insert>
+  bool place(std::mt19937_64& rng, Free free, Insert insert, std::uint64_t& trials) {
+    while (true) {
+      common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
+      if (voxels_.empty() || level_ > max_voxel_levels) return false;
+      const std::size_t which = std::min(voxels_.size() - 1, static_cast<std::size_t>(uniform01(rng) * voxels_.size()));
+      Vec<D> x;
+      for (int k = 0; k < D; ++k) x[k] = corner(voxels_[which], k) + side_ * uniform01(rng);
+      ++trials;
+      ++round_trials_;
+      const bool accepted = free(x);
+      if (accepted) {
+        insert(x);
+        ++round_placed_;
+      }
+      drop_if_excluded(which);  // always after a centre was placed in it
+      // A round is as many trials as voxels; split when it accepted under 1/2^d of them.
+      if (round_trials_ >= std::max<std::size_t>(voxels_.size(), 64)) {
+        if (round_placed_ * (1u << D) < round_trials_) subdivide();
+        round_trials_ = round_placed_ = 0;
+      }
+      if (accepted) return true;
+    }
+  }
+
+ private:
   /// Splits every voxel into its 2^d children, keeping those not excluded.
   void subdivide() {
     side_ *= 0.5;
@@ -170,84 +208,148 @@ class VoxelPhase {
       }
     voxels_.swap(children);
   }
-  /// A uniform point of a uniformly chosen voxel; `which` is the voxel's place in the list.
-  Vec<D> sample(std::mt19937_64& rng, std::size_t& which) const {
-    which = std::min(voxels_.size() - 1, static_cast<std::size_t>(uniform01(rng) * voxels_.size()));
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = corner(voxels_[which], k) + side_ * uniform01(rng);
-    return x;
-  }
-  /// Drops voxel `which` if it is excluded (always after a centre was placed in it).
   void drop_if_excluded(std::size_t which) {
     if (!excluded(voxels_[which])) return;
     voxels_[which] = voxels_.back();
     voxels_.pop_back();
   }
-
- private:
   double corner(const Index& v, int k) const { return -R_ + static_cast<double>(v[k]) * side_; }
   bool excluded(const Index& v) const {
-    double nearest = 0.0;  // the voxel's nearest point to the origin
+    double nearest = 0.0, farthest = 0.0;  // the voxel's nearest and farthest points to the origin
     Vec<D> middle;
     for (int k = 0; k < D; ++k) {
       const double lo = corner(v, k), hi = lo + side_;
-      const double gap = lo > 0.0 ? lo : (hi < 0.0 ? -hi : 0.0);
+      const double gap = lo > 0.0 ? lo : (hi < 0.0 ? -hi : 0.0), far = std::max(std::abs(lo), std::abs(hi));
       nearest += gap * gap;
+      farthest += far * far;
       middle[k] = lo + 0.5 * side_;
     }
-    if (nearest >= R_ * R_) return true;
+    if (nearest >= R_ * R_ || farthest < r_in_ * r_in_) return true;
     // A covering centre lies within sigma of every point of the voxel, the middle included.
     return grid_.any_near(middle, sigma_, [&](std::int32_t j) {
-      double farthest = 0.0;
+      double far_corner = 0.0;
       for (int k = 0; k < D; ++k) {
-        const double lo = corner(v, k), to_lo = centres_[j][k] - lo, to_hi = to_lo - side_;
-        farthest += std::max(to_lo * to_lo, to_hi * to_hi);
+        const double to_lo = centres_[j][k] - corner(v, k), to_hi = to_lo - side_;
+        far_corner += std::max(to_lo * to_lo, to_hi * to_hi);
       }
-      return farthest < sigma_ * sigma_;
+      return far_corner < sigma_ * sigma_;
     });
   }
   const PlacementGrid<D>& grid_;
   const std::vector<Vec<D>>& centres_;
-  double sigma_, R_, side_ = 0.0;
+  double sigma_, R_, r_in_, side_ = 0.0;
   int level_ = 0;
+  std::uint64_t round_trials_ = 0, round_placed_ = 0;
   std::vector<Index> voxels_;
 };
 
-/// Voxel levels after which the voxel phase gives up as saturated: the voxels are then 2^-40 of the
-/// first ones (~1e-12 sigma), so what is left is measure-zero slivers or round-off.
-constexpr int max_voxel_levels = 40;
+/// Width of the placement grid for `count` spheres of radius `radius` in a ball of radius R: one
+/// contact distance, or the mean spacing if larger (fewer empty cells in dilute gases).
+template <int D>
+double placement_grid_width(std::size_t count, double radius, double R) {
+  const double volume = std::pow(M_PI, 0.5 * D) / std::tgamma(0.5 * D + 1.0);
+  const double density = count / (volume * std::pow(R, D));
+  return std::max(2.0 * radius, std::pow(density, -1.0 / D));
+}
 
 template <int D>
 void fill_by_voxels(std::mt19937_64& rng, std::size_t count, double radius, double R, PlacementGrid<D>& grid,
                     std::vector<Vec<D>>& centres, RsaReport& report) {
-  VoxelPhase<D> voxels(grid, centres, radius, R);
+  VoxelPhase<D> voxels(grid, centres, 2.0 * radius, R);
   report.voxels_initial = voxels.size();
   const auto same_radius = [radius](std::int32_t) { return radius; };
-  std::uint64_t round_trials = 0, round_placed = 0;
-  while (centres.size() < count) {
-    common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
-    report.voxel_levels = voxels.level();
-    if (voxels.size() == 0 || voxels.level() > max_voxel_levels) {
+  const auto free = [&](const Vec<D>& x) {
+    return x.squaredNorm() < R * R && !grid.overlaps(x, radius, centres, same_radius);
+  };
+  const auto insert = [&](const Vec<D>& x) {
+    centres.push_back(x);
+    grid.insert(static_cast<std::int32_t>(centres.size() - 1), x);
+    ++report.placed_by_voxels;
+  };
+  while (centres.size() < count)
+    if (!voxels.place(rng, free, insert, report.trials)) {
       report.saturated = true;
-      return;
+      break;
     }
-    std::size_t which = 0;
-    const Vec<D> x = voxels.sample(rng, which);
-    ++report.trials;
-    ++round_trials;
-    if (x.squaredNorm() < R * R && !grid.overlaps(x, radius, centres, same_radius)) {
-      centres.push_back(x);
-      grid.insert(static_cast<std::int32_t>(centres.size() - 1), x);
-      ++report.placed_by_voxels;
-      ++round_placed;
-    }
-    voxels.drop_if_excluded(which);
-    // A round is as many trials as voxels; split when it accepted under 1/2^d of them.
-    if (round_trials >= std::max<std::size_t>(voxels.size(), 64)) {
-      if (round_placed * (1u << D) < round_trials) voxels.subdivide();
-      round_trials = round_placed = 0;
-    }
+  report.voxel_levels = voxels.level();
+}
+
+/// The host particles that overlap an impurity (larger than the host) move to random free places
+/// beyond the impurities, |x| >= r_in = (farthest impurity centre) + a + r_imp, one after another,
+/// by plain trials; if one host's trials fail rsa_voxel_switch_default times in a row, the hosts
+/// still to move are lifted out and placed by the voxel phase, which also proves when they do not
+/// fit (std::invalid_argument naming impurities.radius).
+///
+/// Impurities are never tested: every impurity centre has |x_k| <= farthest, so a point with
+/// |x| >= r_in has |x - x_k| >= |x| - |x_k| >= a + r_imp, the host-impurity contact distance. So
+/// the grid holds the hosts only, is as fine as ordinary RSA's (contact 2a), and the voxel phase's
+/// coverage tests scan a few hosts per voxel. Until the switch the draws and decisions are those of
+/// the plain trials alone (one uniform point per trial), so scenes that never switch are unchanged.
+template <int D>
+KickReport replace_displaced_hosts(std::mt19937_64& rng, InitialState<D>& state,
+                                   const std::vector<std::int32_t>& impurities, double region_radius) {
+  const std::size_t n = state.size();
+  const double a = state.host.radius, r_imp = state.impurity.radius;
+  double farthest_impurity = 0.0;
+  for (const std::int32_t k : impurities) farthest_impurity = std::max(farthest_impurity, state.position[k].norm());
+  const double r_in = farthest_impurity + a + r_imp;
+  KickReport report;
+  report.inner_radius = r_in;
+  PlacementGrid<D> grid(region_radius, placement_grid_width<D>(n, a, region_radius), n);
+  grid.reach_distance = 2.0 * a;
+  std::vector<std::int32_t> displaced;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (state.species[i] == impurity_species) continue;
+    const std::int32_t id = static_cast<std::int32_t>(i);
+    grid.insert(id, state.position[i]);
+    for (const std::int32_t k : impurities)
+      if ((state.position[k] - state.position[i]).squaredNorm() < (a + r_imp) * (a + r_imp)) {
+        displaced.push_back(id);
+        break;
+      }
   }
+  report.displaced = displaced.size();
+  const auto host_radius = [a](std::int32_t) { return a; };
+  const auto free = [&](const Vec<D>& x) {
+    return x.squaredNorm() < region_radius * region_radius && x.norm() >= r_in &&
+           !grid.overlaps(x, a, state.position, host_radius);
+  };
+  std::uint64_t trials = 0;
+  std::size_t next = 0;
+  for (; next < displaced.size(); ++next) {  // plain trials
+    const std::int32_t id = displaced[next];
+    grid.erase(id, state.position[id]);
+    std::uint64_t failures = 0;
+    Vec<D> x;
+    do {
+      if ((++trials & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
+      x = uniform_in_ball<D>(rng, region_radius);
+    } while (!free(x) && ++failures < rsa_voxel_switch_default);
+    if (failures == rsa_voxel_switch_default) break;
+    state.position[id] = x;
+    grid.insert(id, x);
+  }
+  if (next == displaced.size()) return report;
+  // Hosts still to move (all inside r_in) must not exclude voxels: lift them out first.
+  for (std::size_t m = next + 1; m < displaced.size(); ++m) grid.erase(displaced[m], state.position[displaced[m]]);
+  VoxelPhase<D> voxels(grid, state.position, 2.0 * a, region_radius, r_in);
+  for (std::size_t m = next; m < displaced.size(); ++m) {
+    const std::int32_t id = displaced[m];
+    const auto insert = [&](const Vec<D>& x) {
+      state.position[id] = x;
+      grid.insert(id, x);
+    };
+    if (!voxels.place(rng, free, insert, trials))
+      throw std::invalid_argument(
+          "impurities.radius = " + common::format_number(r_imp) + ": the " + std::to_string(displaced.size()) +
+          " host particles that the impurities displace do not fit back into the region (random sequential "
+          "addition saturated it after re-placing " +
+          std::to_string(m) + "; host packing fraction " +
+          common::format_number(static_cast<double>(n - impurities.size()) * std::pow(a / region_radius, D)) +
+          "); lower impurities.radius, impurities.count, n or a");
+    ++report.placed_by_voxels;
+  }
+  return report;
 }
 
 }  // namespace
@@ -266,9 +368,7 @@ std::vector<Vec<D>> random_sequential_addition_report(std::mt19937_64& rng, std:
                                                       double region_radius, RsaReport& report,
                                                       std::uint64_t switch_after) {
   report = RsaReport{};
-  const double volume = std::pow(M_PI, 0.5 * D) / std::tgamma(0.5 * D + 1.0);
-  const double density = count / (volume * std::pow(region_radius, D));
-  PlacementGrid<D> grid(region_radius, std::max(2.0 * radius, std::pow(density, -1.0 / D)), count);
+  PlacementGrid<D> grid(region_radius, placement_grid_width<D>(count, radius, region_radius), count);
   grid.reach_distance = 2.0 * radius;
   std::vector<Vec<D>> centres;
   centres.reserve(count);
@@ -315,8 +415,8 @@ std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t
 }
 
 template <int D>
-void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
-                     double region_radius) {
+KickReport kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
+                           double region_radius) {
   const std::size_t n = state.size();
   if (impurity_count < 1 || impurity_count > n)
     throw std::invalid_argument("impurities = " + std::to_string(impurity_count) + " is outside [1, " +
@@ -346,41 +446,12 @@ void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t i
         free = false;
     if (free) order.push_back(candidate);
   }
-  const double farthest_impurity = state.position[order.back()].norm();
   std::sort(order.begin(), order.end());
   for (const std::int32_t id : order) state.species[id] = impurity_species;
 
   // Larger impurities: move the host particles they would overlap to new random places.
-  if (state.impurity.radius > state.host.radius) {
-    const double a = state.host.radius;
-    PlacementGrid<D> grid(region_radius, 2.0 * std::max(a, state.impurity.radius), n);
-    grid.reach_distance = a + std::max(a, state.impurity.radius);
-    for (std::size_t i = 0; i < n; ++i) grid.insert(static_cast<std::int32_t>(i), state.position[i]);
-    const auto radius_of = [&](std::int32_t j) {
-      return state.species[j] == impurity_species ? state.impurity.radius : a;
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-      if (state.species[i] == impurity_species) continue;
-      const std::int32_t id = static_cast<std::int32_t>(i);
-      bool touches = false;
-      for (const std::int32_t k : order) {
-        const double sigma = a + state.impurity.radius;
-        if ((state.position[k] - state.position[i]).squaredNorm() < sigma * sigma) touches = true;
-      }
-      if (!touches) continue;
-      grid.erase(id, state.position[i]);
-      std::uint64_t tries = 0;
-      Vec<D> x;
-      do {
-        if (++tries > 100000000) throw std::runtime_error("cannot re-place a host particle around the impurities");
-        if ((tries & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
-        x = uniform_in_ball<D>(rng, region_radius);
-      } while (grid.overlaps(x, a, state.position, radius_of, id) ||
-               x.norm() < farthest_impurity + a + state.impurity.radius);
-      state.position[i] = x;
-      grid.insert(id, x);
-    }
-  }
+  KickReport report;
+  if (state.impurity.radius > state.host.radius) report = replace_displaced_hosts<D>(rng, state, order, region_radius);
 
   // Random momenta, then exactly zero momentum and exactly energy E. A single impurity cannot have
   // zero momentum: it gets energy E in a uniformly random direction (an isotropic Gaussian's
@@ -399,6 +470,7 @@ void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t i
   }
   const double scale = std::sqrt(E / energy);
   for (const std::int32_t id : order) state.velocity[id] *= scale;
+  return report;
 }
 
 template <int D>
@@ -444,8 +516,8 @@ template std::vector<Vec<3>> random_sequential_addition_report<3>(std::mt19937_6
                                                                   RsaReport&, std::uint64_t);
 template std::vector<Vec<2>> random_sequential_addition<2>(std::mt19937_64&, std::size_t, double, double);
 template std::vector<Vec<3>> random_sequential_addition<3>(std::mt19937_64&, std::size_t, double, double);
-template void kick_impurities<2>(std::mt19937_64&, InitialState<2>&, std::size_t, double, double);
-template void kick_impurities<3>(std::mt19937_64&, InitialState<3>&, std::size_t, double, double);
+template KickReport kick_impurities<2>(std::mt19937_64&, InitialState<2>&, std::size_t, double, double);
+template KickReport kick_impurities<3>(std::mt19937_64&, InitialState<3>&, std::size_t, double, double);
 template InitialState<2> lattice_start<2>(std::mt19937_64&, std::size_t, double, const Vec<2>&, double);
 template InitialState<3> lattice_start<3>(std::mt19937_64&, std::size_t, double, const Vec<3>&, double);
 

@@ -62,12 +62,21 @@ template <int D>
 std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t count, double radius,
                                                double region_radius);
 
+/// How kick_impurities moved the host particles that a larger impurity would overlap.
+struct KickReport {
+  std::size_t displaced = 0;         ///< host particles moved
+  std::size_t placed_by_voxels = 0;  ///< of which placed by RSA's voxel phase
+  double inner_radius = 0.0;         ///< r_in = farthest impurity + a + r_imp: moved hosts lie at |x| >= r_in
+};
+
 /// Blast set-up: the `impurity_count` particles nearest the origin become impurities (their own
-/// radius and mass; host particles that would overlap a larger impurity are moved to new random
-/// places) with random momenta: total kinetic energy exactly E, total momentum exactly zero.
+/// radius and mass) with random momenta: total kinetic energy exactly E, total momentum exactly zero.
+/// Host particles that would overlap a larger impurity move to new random places at |x| >= r_in
+/// (plain trials, then RSA's voxel phase after rsa_voxel_switch_default failures in a row); if they
+/// provably do not fit, std::invalid_argument naming impurities.radius.
 template <int D>
-void kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
-                     double region_radius);
+KickReport kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
+                           double region_radius);
 
 /// Periodic box start: `count` spheres on a simple cubic (square) lattice filling the box row by row,
 /// Maxwellian velocities at temperature T with zero total momentum, rescaled so that the kinetic

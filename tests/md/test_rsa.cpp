@@ -219,3 +219,122 @@ TEST_CASE("RSA: a blast whose region saturates is bad input naming phi, n and a"
     CHECK(what.find("(0, 0.547)") != std::string::npos);
   }
 }
+
+namespace {
+
+/// A ball of radius R filled by RSA with `count` hosts of radius 0.5, ready for kick_impurities
+/// with impurities of radius r_imp (the steps of md::blast_initial_state).
+template <int D>
+InitialState<D> rsa_state(std::mt19937_64& rng, std::size_t count, double R, double r_imp) {
+  InitialState<D> s;
+  s.host = {0.5, 1.0};
+  s.impurity = {r_imp, 1.0};
+  s.position = random_sequential_addition<D>(rng, count, 0.5, R);
+  s.velocity.assign(count, Vec<D>::Zero());
+  s.species.assign(count, host_species);
+  return s;
+}
+
+/// Checks a kicked state against the state before the kick, from the definitions alone: the count
+/// and the impurities are kept; exactly the hosts that overlapped an impurity moved, each to
+/// r_in <= |x| < R; no two particles overlap (host-host 2a, host-impurity a + r_imp,
+/// impurity-impurity 2 r_imp; all pairs).
+template <int D>
+void check_kick(const InitialState<D>& before, const InitialState<D>& after, const KickReport& report,
+                std::size_t impurities, double R) {
+  const std::size_t n = before.size();
+  const double a = before.host.radius, r_imp = before.impurity.radius;
+  REQUIRE(after.size() == n);
+  double farthest = 0.0;
+  std::vector<std::size_t> impurity;
+  for (std::size_t i = 0; i < n; ++i)
+    if (after.species[i] == impurity_species) {
+      impurity.push_back(i);
+      farthest = std::max(farthest, after.position[i].norm());
+      CHECK(after.position[i] == before.position[i]);
+    }
+  REQUIRE(impurity.size() == impurities);
+  const double r_in = farthest + a + r_imp;
+  CHECK(report.inner_radius == r_in);
+  std::size_t moved = 0, moved_as_expected = 0, outside = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (after.species[i] == impurity_species) continue;
+    bool touched = false;
+    for (const std::size_t k : impurity)
+      touched = touched || (before.position[k] - before.position[i]).norm() < a + r_imp;
+    const bool did_move = after.position[i] != before.position[i];
+    moved += did_move;
+    moved_as_expected += did_move == touched;
+    if (did_move && !(after.position[i].norm() >= r_in && after.position[i].norm() < R)) ++outside;
+  }
+  CHECK(moved == report.displaced);
+  CHECK(moved_as_expected == n - impurities);
+  CHECK(outside == 0);
+  std::size_t overlaps = 0;
+  const auto radius = [&](std::size_t i) { return after.species[i] == impurity_species ? r_imp : a; };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double sigma = radius(i) + radius(j);
+      if ((after.position[i] - after.position[j]).squaredNorm() < sigma * sigma) ++overlaps;
+    }
+  CHECK(overlaps == 0);
+}
+
+}  // namespace
+
+TEST_CASE("RSA: large impurities near jamming re-place their hosts by the voxel phase (2D, 3D)", "[fast]") {
+  // Balls filled near their saturation (seed 7: the 2D R = 20 ball saturates at 907 discs, phi =
+  // 0.567, the 3D R = 7 ball at 1200 spheres, phi = 0.437). 837 discs (phi = 0.523) with impurities
+  // of radius 2 and 1148 spheres (phi = 0.418) with radius 1: the first displaced host fails 1000
+  // plain trials, so all are placed by the voxel phase. 777 discs: the plain trials place the
+  // first displaced hosts, then switch (the hosts still to move are lifted out of the grid).
+  struct Case {
+    int d;
+    std::size_t count;
+    double R, r_imp;
+    bool all_by_voxels;
+  };
+  for (const Case c : {Case{2, 837, 20.0, 2.0, true}, Case{3, 1148, 7.0, 1.0, true}, Case{2, 777, 20.0, 2.0, false}}) {
+    INFO("d = " << c.d << ", " << c.count << " particles, impurity radius " << c.r_imp);
+    auto rng = realization_rng(7, 0);
+    KickReport report;
+    if (c.d == 2) {
+      InitialState<2> s = rsa_state<2>(rng, c.count, c.R, c.r_imp);
+      const InitialState<2> before = s;
+      report = kick_impurities<2>(rng, s, 4, 1.0, c.R);
+      check_kick<2>(before, s, report, 4, c.R);
+    } else {
+      InitialState<3> s = rsa_state<3>(rng, c.count, c.R, c.r_imp);
+      const InitialState<3> before = s;
+      report = kick_impurities<3>(rng, s, 4, 1.0, c.R);
+      check_kick<3>(before, s, report, 4, c.R);
+    }
+    INFO(report.displaced << " displaced, " << report.placed_by_voxels << " by voxels");
+    CHECK(report.displaced > 20);
+    if (c.all_by_voxels)
+      CHECK(report.placed_by_voxels == report.displaced);
+    else
+      CHECK((report.placed_by_voxels > 0 && report.placed_by_voxels < report.displaced));
+  }
+}
+
+TEST_CASE("RSA: displaced hosts that do not fit are bad input naming impurities.radius", "[fast]") {
+  // 897 discs in the 2D R = 20 ball (phi = 0.561, saturation 0.567): the 48 hosts that impurities
+  // of radius 2 displace do not all fit back; the voxel phase proves it. And an impurity radius of
+  // 20 (one impurity: four would not fit apart) puts r_in beyond the region (R = 20), so no host
+  // can move anywhere.
+  for (const double r_imp : {2.0, 20.0}) {
+    auto rng = realization_rng(7, 0);
+    InitialState<2> s = rsa_state<2>(rng, r_imp == 2.0 ? 897 : 800, 20.0, r_imp);
+    try {
+      kick_impurities<2>(rng, s, r_imp == 2.0 ? 4 : 1, 1.0, 20.0);
+      FAIL("no exception");
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      INFO(what);
+      CHECK(what.find("impurities.radius = " + std::string(r_imp == 2.0 ? "2: " : "20: ")) == 0);
+      CHECK(what.find("do not fit back into the region") != std::string::npos);
+      CHECK(what.find("saturated") != std::string::npos);
+    }
+  }
+}
