@@ -189,10 +189,15 @@ int main(int argc, char** argv) {
                        static_cast<std::uint64_t>(arg(5, 5e5)), static_cast<std::uint64_t>(arg(6, 1e6)));
   }
   if (mode == "setup") {
-    const ResolvedScene scene =
-        resolve_scene(parse_scene(default_scene_toml(), std::vector<std::string>(argv + 3, argv + argc)));
-    const int realization = std::atoi(argv[2]);
-    return scene.config.d == 2 ? setup<2>(scene, realization) : setup<3>(scene, realization);
+    try {  // A_d must be given: the driver links md only, not hydro's amplitude policy
+      const ResolvedScene scene =
+          resolve_scene(parse_scene(default_scene_toml(), std::vector<std::string>(argv + 3, argv + argc)));
+      const int realization = std::atoi(argv[2]);
+      return scene.config.d == 2 ? setup<2>(scene, realization) : setup<3>(scene, realization);
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "md_driver: %s\n", e.what());
+      return 2;
+    }
   }
   return usage();
 }

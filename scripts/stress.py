@@ -153,6 +153,11 @@ def md(only=None):
     sweeps = [
         ("impurity mass ratio", [f"impurities.mass={m}" for m in ("1e-3", "1e-2", "0.1", "1", "10", "100", "1e3")]),
         ("impurity radius ratio", [f"impurities.radius={r}" for r in ("0.1", "0.5", "1", "2", "5", "10", "20")]),
+        # 3D radius 20 near jamming is left out: its region (R = 193: 2σ + 2 cells of σ = 40 around the
+        # blast) holds 2.2e7 particles, hours of RSA here (docs/stress.md).
+        ("impurity radius ratio near RSA jamming", ["n=0.69;impurities.radius=2", "n=0.69;impurities.radius=5",
+                                                    "n=0.69;impurities.radius=20", "n=0.73;d=3;impurities.radius=2",
+                                                    "n=0.73;d=3;impurities.radius=5"]),
         ("E", [f"E={e}" for e in ("1e-6", "1e-4", "1e-2", "1", "1e2", "1e4", "1e6")]),
         ("φ (2D) up to RSA jamming", [f"n={n}" for n in ("0.01", "0.1", "0.3", "0.5", "0.6", "0.65", "0.7")]),
         ("φ (3D) up to RSA jamming", [f"n={n};d=3" for n in ("0.01", "0.1", "0.3", "0.5", "0.7", "0.73", "0.8")]),
@@ -166,13 +171,19 @@ def md(only=None):
             args = list(base)
             for kv in setting.split(";"):
                 args += ["--set", kv]
-            s.case(setting, args, judge, timeout=900)
+            # near jamming a 3D set-up of 10^6 particles takes minutes of CPU (2 realizations, shared cores)
+            s.case(setting, args, judge, timeout=1800 if "near RSA jamming" in name else 900)
         s.row()
 
 
 def md_phi():
     """Only the MD φ sweeps (2D and 3D up to RSA jamming)."""
     md("φ")
+
+
+def md_radius():
+    """Only the MD impurity radius sweeps (at the default n, and near RSA jamming)."""
+    md("impurity radius")
 
 
 def md_memory():
