@@ -556,6 +556,10 @@ Transport transport_from_string(const std::string& text, const std::string& opti
   throw std::invalid_argument(option + " = " + text + " is not one of dilute, enskog");
 }
 
+double navier_stokes_max_packing_fraction(Eos eos) {
+  return eos == Eos::carnahan_starling ? random_close_packing_spheres : max_ambient_packing_fraction(eos);
+}
+
 double NavierStokesPhysics::resolved_phi() const {
   return eos != Eos::ideal && phi == 0 ? default_packing_fraction : phi;
 }
@@ -579,12 +583,17 @@ void validate_dense_physics(const NavierStokesPhysics& physics) {
     throw std::invalid_argument("eos = " + to_string(physics.eos) + " is defined for d = " +
                                 std::to_string(eos_dimension(physics.eos)) + ", not d = " + std::to_string(physics.d) +
                                 " (allowed: ideal for any d, henderson for d = 2, carnahan-starling for d = 3)");
+  const std::string why =
+      physics.eos == Eos::carnahan_starling
+          ? "random close packing: an amorphous gas at rest is not denser, and above it the blast empties its "
+            "centre to a near vacuum where the continuum equations fail and the solver stalls; docs/hydro.md"
+          : "the shocked gas must stay below close packing " +
+                common::format_number(close_packing_fraction(physics.eos));
   if (physics.phi != 0)
-    common::require_in_range(
-        "phi", physics.phi, 0.0, max_ambient_packing_fraction(physics.eos), common::Bound::open, common::Bound::open,
-        "for eos = " + to_string(physics.eos) + " (the shocked gas must stay below close packing " +
-            common::format_number(close_packing_fraction(physics.eos)) + "; 0 selects the default " +
-            common::format_number(default_packing_fraction) + ")");
+    common::require_in_range("phi", physics.phi, 0.0, navier_stokes_max_packing_fraction(physics.eos),
+                             common::Bound::open, common::Bound::open,
+                             "for eos = " + to_string(physics.eos) + " (" + why + "; 0 selects the default " +
+                                 common::format_number(default_packing_fraction) + ")");
 }
 
 }  // namespace

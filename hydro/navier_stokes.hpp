@@ -26,6 +26,19 @@ Transport transport_from_string(const std::string& text, const std::string& opti
 /// φ∞ used when the EOS is a hard-particle one and phi is left at 0: the paper's MD value.
 constexpr double default_packing_fraction = 0.118;
 
+/// Random close packing of equal spheres, φ ≈ 0.64: the densest amorphous packing (the maximally
+/// random jammed state, Torquato, Truskett & Debenedetti, Phys. Rev. Lett. 84, 2064 (2000)).
+constexpr double random_close_packing_spheres = 0.64;
+
+/// The largest ambient φ∞ the Navier–Stokes blast accepts (open bound). Henderson (discs):
+/// max_ambient_packing_fraction (0.89286), where the strong shock reaches close packing; the solver
+/// runs to R/λ = 1e12 up to it. Carnahan–Starling (spheres): random close packing 0.64, not the
+/// Hugoniot's 0.72042, since an amorphous gas at rest cannot be denser; measured (docs/stress.md),
+/// φ∞ = 0.639 runs to R/λ = 1e12 in 11 s, while above 0.64 the blast first empties its centre to
+/// n0/n∞ ~ 1e-20 (a mean free path 1e17 R: no continuum there) and CVODE's steps collapse (φ∞ = 0.685
+/// to R/λ = 1e8 did not finish in 15 min). Ideal gas: no bound (phi must be 0).
+double navier_stokes_max_packing_fraction(Eos eos);
+
 /// Physical model (units: m = 1, k_B = 1; a is the particle radius).
 struct NavierStokesPhysics {
   int d = 2;                              ///< spatial dimension, 1 (planar), 2 (cylindrical) or 3 (spherical)
@@ -39,7 +52,7 @@ struct NavierStokesPhysics {
   /// p = n T Z(φ), φ = φ∞ n/n∞; ideal (Z = 1), henderson (d = 2) or carnahan_starling (d = 3).
   Eos eos = Eos::ideal;
   /// Ambient packing fraction φ∞: 0 for the ideal gas; for a hard-particle EOS in
-  /// (0, max_ambient_packing_fraction(eos)), and 0 means default_packing_fraction (resolved_phi()).
+  /// (0, navier_stokes_max_packing_fraction(eos)), and 0 means default_packing_fraction (resolved_phi()).
   /// An independent parameter: λ still follows from n∞ and a (Eq. (5)), as in `tvns --eos --phi`.
   double phi = 0;
   Transport transport = Transport::dilute;  ///< enskog needs a hard-particle EOS

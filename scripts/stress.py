@@ -128,9 +128,9 @@ def hydro():
               "reaches 2 R (`--outer-margin 2`: on the default 1.15 R heat conduction outruns the shock at the "
               "start, exit 1 naming --outer-margin)", check)
     for d, eos in ((2, "henderson"), (3, "carnahan-starling")):
-        # the accepted φ range: TvNS's (the grid scale needs its A_d(φ); hydro's own check stops at the
-        # Hugoniot's 0.72042 for spheres, TvNS at 0.686), read from its exit-2 message as above
-        code, out, err = run(["tvns", "--d", str(d), "--eos", eos, "--phi", "2", "--format", "json"])
+        # the accepted φ range of the Navier–Stokes blast (henderson: the Hugoniot's 0.89286; spheres:
+        # random close packing 0.64), read from its exit-2 message as above
+        code, out, err = run(["hydro", "core", "--d", str(d), "--eos", eos, "--phi", "2", "--format", "json"])
         m = re.search(r"outside \(0, ([0-9.eE+-]+)\)", err)
         limit = float(m.group(1)) if m else 0.6
         for phi in (0.118, 0.4, limit - 1e-3):
