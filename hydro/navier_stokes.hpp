@@ -33,10 +33,11 @@ constexpr double random_close_packing_spheres = 0.64;
 /// The largest ambient φ∞ the Navier–Stokes blast accepts (open bound). Henderson (discs):
 /// max_ambient_packing_fraction (0.89286), where the strong shock reaches close packing; the solver
 /// runs to R/λ = 1e12 up to it. Carnahan–Starling (spheres): random close packing 0.64, not the
-/// Hugoniot's 0.72042, since an amorphous gas at rest cannot be denser; measured (docs/stress.md),
-/// φ∞ = 0.639 runs to R/λ = 1e12 in 11 s, while above 0.64 the blast first empties its centre to
-/// n0/n∞ ~ 1e-20 (a mean free path 1e17 R: no continuum there) and CVODE's steps collapse (φ∞ = 0.685
-/// to R/λ = 1e8 did not finish in 15 min). Ideal gas: no bound (phi must be 0).
+/// Hugoniot's 0.72042, since an amorphous gas at rest cannot be denser (a physical bound, not a fitted
+/// one). Measured to R/λ = 1e12 at 128 cells (docs/stress.md): 0.639, 0.641 and 0.65 run in about
+/// 10 s; 0.66 exits 1 at R/λ = 2.5e9 (the shell is driven past close packing); 0.67 and 0.685 empty
+/// their centre (n0/n∞ ~ 1e-20 at 0.685: a mean free path of 1e17 R) and CVODE's steps collapse (no
+/// progress past R/λ = 2e6 in 5 and 15 min). Ideal gas: no bound (phi must be 0).
 double navier_stokes_max_packing_fraction(Eos eos);
 
 /// Physical model (units: m = 1, k_B = 1; a is the particle radius).
