@@ -123,8 +123,12 @@ double integrate_to_end(Stepper stepper, System system, OdeState& y, double t, c
     OdeState slope{};
     system(y, slope, t);
     const double J = y[3] + y[4];
+    // A loose step control can step across the singular line W = 1 (V = x), where the right-hand side
+    // diverges, and the state turns NaN (accepted: NaN fails no error test); integrate_self_similar
+    // retries at a tighter tolerance.
     if (!std::isfinite(J) || !std::isfinite(slope[3] + slope[4]))
-      throw std::runtime_error("TvNS ODE: non-finite state at " + common::format_number(t));
+      throw StallError("TvNS ODE: non-finite state at x = exp(-" + common::format_number(t) + ") (tolerance " +
+                       common::format_number(tolerance) + " too loose?)");
     // Stop when what is left is negligible, or when the power laws at the inner end hold so well that
     // the rest is known in closed form (its relative error is O(tau) or O(1 - W)).
     const double negligible = 0.1 * tolerance * J;
@@ -157,6 +161,56 @@ double integrate_to_end(Stepper stepper, System system, OdeState& y, double t, c
   }
 }
 
+/// Profiles only: the energy integrals are complete at out.end_s; extends the checkpoints in chunks of
+/// 1/2 in s until tau = x^2 G/P and phi G are below 1e-14 (the relative error of the power laws used
+/// beyond), at most 40 further units of s. Only in the near-centre regime (not near the singular case,
+/// where tau stays O(1)). The centre is a saddle: physically dW/ds decays like tau, the growing mode
+/// makes it grow like x^-d, and at loose tolerances the mode takes W to 1, where the right-hand side is
+/// singular and the steps end in NaN (which the step control accepts). A chunk is kept only if its
+/// end is finite and |dW/ds| did not grow over it; a chunk whose step control fails or needs more
+/// than max_chunk_steps steps is dropped, since A is already complete. Sets out.end_s and
+/// out.end_slope and returns the state at out.end_s.
+template <class Stepper, class System>
+OdeState extend_checkpoints(Stepper& stepper, System& system, const OdeSettings& settings, OdeResult& out,
+                            OdeState extended) {
+  constexpr std::size_t max_chunk_steps = 10000;
+  OdeState slope{};
+  system(extended, slope, out.end_s);
+  const double s_limit = out.end_s + 40.0;  // fixed here: out.end_s advances with every chunk kept
+  while (out.end_s < s_limit) {
+    const double s = out.end_s;
+    const double tau = std::exp(-2.0 * s + extended[1] - extended[2]);
+    const double correction = std::max(tau, 4.0 * settings.phi * std::exp(extended[1]));
+    if (!(correction >= 1e-14 && correction <= 1e-3)) break;  // also stops on NaN
+    OdeState next = extended, next_slope{};
+    std::vector<double> times;
+    std::vector<OdeState> states;
+    try {
+      odeint::integrate_adaptive(stepper, system, next, s, s + 0.5, 1e-3, [&](const OdeState& state, double time) {
+        if (times.size() >= max_chunk_steps) throw StallError("chunk step limit");
+        times.push_back(time);
+        states.push_back(state);
+      });
+    } catch (const odeint::step_adjustment_error&) {
+      break;
+    } catch (const StallError&) {
+      break;
+    }
+    system(next, next_slope, s + 0.5);
+    bool finite = true;
+    for (std::size_t i = 0; i < next.size(); ++i)
+      finite = finite && std::isfinite(next[i]) && std::isfinite(next_slope[i]);
+    if (!(finite && std::abs(next_slope[0]) <= std::abs(slope[0]))) break;
+    extended = next;
+    slope = next_slope;
+    out.checkpoint_s.insert(out.checkpoint_s.end(), times.begin(), times.end());
+    out.checkpoint_state.insert(out.checkpoint_state.end(), states.begin(), states.end());
+    out.end_s = s + 0.5;
+  }
+  out.end_slope = slope;
+  return extended;
+}
+
 /// Controlled Runge-Kutta steppers, or Bulirsch-Stoer (already controlled), at absolute = relative tolerance.
 template <class Stepper>
 auto make_stepper(double tolerance) {
@@ -185,36 +239,7 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
       equations.standard(state, derivative, s);
     };
     out.end_s = integrate_to_end(stepper, system, y, 0.0, settings, &out.checkpoint_s, &out.checkpoint_state, true);
-    // The energy integrals are complete; for profiles, extend the checkpoints until tau = x^2 G/P and
-    // phi G are below 1e-14 (the relative error of the power laws used beyond), unless the saddle's
-    // growing mode shows first: physically dW/ds decays like tau, the mode makes it grow like x^-d.
-    // Only in the near-centre regime (not near the singular case, where tau stays O(1)); a chunk whose
-    // step control fails is dropped, since A is already complete.
-    OdeState extended = y, slope{};
-    double previous_drift = std::numeric_limits<double>::infinity();
-    for (double s = out.end_s; s < out.end_s + 40.0; s += 0.5) {
-      system(extended, slope, s);
-      const double tau = std::exp(-2.0 * s + extended[1] - extended[2]);
-      const double correction = std::max(tau, 4.0 * settings.phi * std::exp(extended[1]));
-      if (correction < 1e-14 || correction > 1e-3 || std::abs(slope[0]) > previous_drift) break;
-      previous_drift = std::abs(slope[0]);
-      OdeState next = extended;
-      std::vector<double> times;
-      std::vector<OdeState> states;
-      try {
-        odeint::integrate_adaptive(stepper, system, next, s, s + 0.5, 1e-3, [&](const OdeState& state, double time) {
-          times.push_back(time);
-          states.push_back(state);
-        });
-      } catch (const odeint::step_adjustment_error&) {
-        break;
-      }
-      extended = next;
-      out.checkpoint_s.insert(out.checkpoint_s.end(), times.begin(), times.end());
-      out.checkpoint_state.insert(out.checkpoint_state.end(), states.begin(), states.end());
-      out.end_s = s + 0.5;
-    }
-    system(extended, out.end_slope, out.end_s);
+    const OdeState extended = extend_checkpoints(stepper, system, settings, out, y);
     // Centre: W -> 1/gamma0, G ∝ x^k with k = d/(gamma0 - 1) (gamma0 = kappa of the dilute gas), P -> P_c;
     // the corrections decay like tau ∝ x^(2+k), or like phi G ∝ x^k for hard particles.
     const double gamma0 = equations.kappa(0.0);
@@ -263,13 +288,24 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
 OdeResult integrate_self_similar(const OdeSettings& settings) {
   const bool vacuum = settings.eos == Eos::ideal && tvns_case(settings.d, settings.gamma) == TvnsCase::vacuum;
   // Within ~1e-3 of d = 3, gamma = 7 the flow passes close to a saddle and the step control can stall at
-  // one tolerance and not at a neighbouring one: retry at 10x tighter, then 10x looser, and report the
-  // tolerance used. Any other failure propagates.
+  // one tolerance and not at a neighbouring one; at loose tolerances (1e-3 to 1e-8) near the upper end of
+  // phi the step control can cross the singular line W = 1 (a NaN state) or run into the saddle at the
+  // centre. Retry at 10x tighter, then at the default 1e-13 (the tolerance the stress grid checks over
+  // the whole accepted range of d, gamma and phi), then 10x looser, and report the tolerance used: a
+  // tighter tolerance only makes A more accurate than asked. Any other failure propagates.
+  constexpr double reliable_tolerance = 1e-13;
+  std::vector<double> tolerances;
+  for (const double tolerance :
+       {settings.tolerance, 0.1 * settings.tolerance, reliable_tolerance, 10.0 * settings.tolerance}) {
+    const bool looser_than_asked = tolerance == reliable_tolerance && settings.tolerance < reliable_tolerance;
+    if (tolerance >= 1e-15 && tolerance <= 1e-3 && !looser_than_asked &&
+        std::find(tolerances.begin(), tolerances.end(), tolerance) == tolerances.end())
+      tolerances.push_back(tolerance);
+  }
   std::string failures;
-  for (const double factor : {1.0, 0.1, 10.0}) {
+  for (const double tolerance : tolerances) {
     OdeSettings attempt = settings;
-    attempt.tolerance = settings.tolerance * factor;
-    if (attempt.tolerance < 1e-15 || attempt.tolerance > 1e-3) continue;
+    attempt.tolerance = tolerance;
     try {
       OdeResult result = attempt.check_stepper ? run<odeint::runge_kutta_dopri5<OdeState>>(attempt, vacuum)
                                                : run<odeint::bulirsch_stoer<OdeState>>(attempt, vacuum);
@@ -281,8 +317,10 @@ OdeResult integrate_self_similar(const OdeSettings& settings) {
       failures += " [tolerance " + common::format_number(attempt.tolerance) + ": " + error.what() + "]";
     }
   }
-  throw std::runtime_error("TvNS ODE failed for d = " + std::to_string(settings.d) +
-                           ", gamma = " + common::format_number(settings.gamma) + ":" + failures);
+  const std::string physics = settings.eos == Eos::ideal ? "gamma = " + common::format_number(settings.gamma)
+                                                         : "eos = " + to_string(settings.eos) +
+                                                               ", phi = " + common::format_number(settings.phi);
+  throw std::runtime_error("TvNS ODE failed for d = " + std::to_string(settings.d) + ", " + physics + ":" + failures);
 }
 
 TvnsPoint ode_point(const OdeSettings& settings, const OdeResult& result, double r_over_R) {
