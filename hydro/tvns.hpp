@@ -81,7 +81,8 @@ class TvnsSolution {
   TvnsCase solution_case() const { return case_; }
   /// Eq. (1) [R-shock]: R = (E t^2/(A_d n))^(1/(d+2)), E = ∫ [rho u^2/2 + rho e] dV over all space.
   double A() const { return A_; }
-  /// Absolute error estimate of A() (quadrature/ODE estimates and the two methods' difference).
+  /// Absolute error estimate of A() (quadrature/ODE estimates and the two methods' difference; for a
+  /// non-ideal EOS also twice the difference from Bulirsch-Stoer at 10x tighter tolerance).
   double A_error() const { return A_error_; }
   /// |A_1 - A_2|/A of the two independent methods (closed form vs ODE; Bulirsch-Stoer vs Dormand-Prince
   /// if non-ideal).
@@ -99,7 +100,8 @@ class TvnsSolution {
   /// rho/rho0 underflows (below 2.2e-308, e.g. d = 1, gamma = 1.01, r/R < 1e-3); inside the cavity
   /// (vacuum case) every field is 0. Throws std::invalid_argument outside [0, 1].
   TvnsPoint at(double r_over_R) const;
-  /// Profile at many r/R, in the given order (non-ideal EOS: each from the nearest stored ODE checkpoint).
+  /// Profile at many r/R, in the given order (non-ideal EOS: each from the nearest stored ODE checkpoint,
+  /// so near the centre its error grows like tolerance x (r/R)^-d: docs/cli.md).
   std::vector<TvnsPoint> profile(const std::vector<double>& r_over_R) const;
 
   /// Near-centre power laws, Eqs. (18a,b) [r-est, T-est]: rho ∝ x^density_exponent,
