@@ -28,6 +28,7 @@ namespace odeint = boost::numeric::odeint;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr long max_steps = 200000;
+constexpr double min_step = 1e-13;  // in s = -ln x; the vacuum branch's first stage stalls below it
 
 /// The step control made no progress (too many steps, or none towards the cavity edge).
 struct StallError : std::runtime_error {
@@ -211,6 +212,49 @@ OdeState extend_checkpoints(Stepper& stepper, System& system, const OdeSettings&
   return extended;
 }
 
+/// Vacuum branch, first stage: integrates in s = -ln x from the shock until W reaches W_switch (returns
+/// true), or until the energy still to come is provably negligible (adds it and returns false).
+/// Near gamma = 7 (d = 3) the flow follows the singular solution W = 1/4 to tiny x and the cavity edge is
+/// at x_c -> 0 (4e-4 at gamma - 7 = 2e-7). Along it a fast unstable mode amplifies every local error so
+/// strongly (the ODE drifted from the closed form by 1e-3 in W by x = exp(-5) at tolerance 1e-13) that
+/// the integration can leave the physical solution towards W < 1/4, where the steps collapse to 1e-19
+/// (gamma = 7.00000019165, an options-fuzz finding: 200 000 tries, 35 s, exit 1). By then the rest of the
+/// energy is ~2e-14 of it: towards the cavity G and P decrease and W0 <= W <= 1 (the closed form's
+/// profiles, gamma = 7 + 1e-10 to 1000), so the s-integrals still to come are bounded by
+/// (G W^2/2 x^(d+2))/(W^2 (d+2)) and (e x^d)/d. Once that bound is below the tolerance times the energy,
+/// the power-law estimate of the rest (whose error the bound also bounds) is added and the integration
+/// stops: the ODE's A then carries up to twice the tolerance, and A_error of the ideal gas includes its
+/// difference from the closed form. A step below min_step is a stall: the next tolerance is tried.
+template <class Stepper, class System>
+bool integrate_towards_cavity(Stepper& stepper, System& system, const OdeSettings& settings, double W_switch,
+                              OdeState& y, double& s) {
+  const double d = settings.d;
+  double step = 1e-3;
+  for (long tries = 0; y[0] < W_switch; ++tries) {
+    if (tries > max_steps || step < min_step)
+      throw StallError("TvNS ODE: no progress towards the cavity edge (step " + common::format_number(step) +
+                       " at x = exp(-" + common::format_number(s) + "), W = " + common::format_number(y[0]) + ")");
+    const OdeState saved = y;
+    const double s_saved = s, step_saved = step;
+    if (stepper.try_step(system, y, s, step) == odeint::fail) continue;  // step already reduced
+    if (!(std::isfinite(y[1] + y[2] + y[3] + y[4]) && y[0] < 1.0)) {     // stepped past the edge
+      y = saved;
+      s = s_saved;
+      step = step_saved / 4.0;
+      continue;
+    }
+    OdeState slope{};
+    system(y, slope, s);
+    const double W = y[0], bound = slope[3] / (W * W * (d + 2.0)) + slope[4] / d;
+    if (W > 0.0 && bound < settings.tolerance * (y[3] + y[4])) {
+      y[3] += slope[3] / (d + 2.0 + std::max(0.0, -slope[1]));  // G ∝ x^k: the kinetic rest
+      y[4] += slope[4] / (d + std::max(0.0, -slope[2]));        // P ∝ x^k: the internal rest
+      return false;
+    }
+  }
+  return true;
+}
+
 /// Controlled Runge-Kutta steppers, or Bulirsch-Stoer (already controlled), at absolute = relative tolerance.
 template <class Stepper>
 auto make_stepper(double tolerance) {
@@ -254,26 +298,18 @@ OdeResult run(const OdeSettings& settings, bool vacuum) {
     auto system_s = [&](const OdeState& state, OdeState& derivative, double s) {
       equations.standard(state, derivative, s);
     };
-    const double W_switch = 1.0 - x / 2.0;
-    double s = 0.0, step = 1e-3;
-    for (long tries = 0; y[0] < W_switch; ++tries) {
-      if (tries > max_steps) throw StallError("TvNS ODE: no progress towards the cavity edge");
-      const OdeState saved = y;
-      const double s_saved = s, step_saved = step;
-      if (stepper.try_step(system_s, y, s, step) == odeint::fail) continue;  // step already reduced
-      if (!(std::isfinite(y[1] + y[2] + y[3] + y[4]) && y[0] < 1.0)) {       // stepped past the edge
-        y = saved;
-        s = s_saved;
-        step = step_saved / 4.0;
-      }
+    double s = 0.0;
+    if (integrate_towards_cavity(stepper, system_s, settings, 1.0 - x / 2.0, y, s)) {
+      const double sigma = -std::log1p(-y[0]);
+      y[0] = -s;  // ln x
+      auto system = [&](const OdeState& state, OdeState& derivative, double sigma_value) {
+        equations.vacuum(state, derivative, sigma_value);
+      };
+      integrate_to_end(make_stepper<Stepper>(settings.tolerance), system, y, sigma, settings, nullptr, nullptr, false);
+      out.cavity_radius = std::exp(y[0]);
+    } else {
+      out.cavity_radius = std::numeric_limits<double>::quiet_NaN();  // not reached: the rest was negligible
     }
-    const double sigma = -std::log1p(-y[0]);
-    y[0] = -s;  // ln x
-    auto system = [&](const OdeState& state, OdeState& derivative, double sigma_value) {
-      equations.vacuum(state, derivative, sigma_value);
-    };
-    integrate_to_end(make_stepper<Stepper>(settings.tolerance), system, y, sigma, settings, nullptr, nullptr, false);
-    out.cavity_radius = std::exp(y[0]);
   }
   out.energy.kinetic = y[3];
   out.energy.internal = y[4];

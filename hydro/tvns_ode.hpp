@@ -27,9 +27,9 @@ struct OdeSettings {
 /// Result of one integration: energy integrals, cavity edge and checkpoints for profiles.
 struct OdeResult {
   EnergyIntegrals energy;
-  double cavity_radius = 0.0;
-  double shock_compression = 0.0;          ///< rho1/rho0
-  std::vector<double> checkpoint_s;        ///< s = -ln(r/R) at accepted steps (standard branch)
+  double cavity_radius = 0.0;        ///< vacuum branch; NaN when the integration stopped before it (near gamma = 7)
+  double shock_compression = 0.0;    ///< rho1/rho0
+  std::vector<double> checkpoint_s;  ///< s = -ln(r/R) at accepted steps (standard branch)
   std::vector<OdeState> checkpoint_state;  ///< state there
   double centre_pressure = 0.0;            ///< P at r = 0 (standard branch)
   double end_s = 0.0;                      ///< last s integrated; beyond it the near-centre expansion below is used

@@ -98,7 +98,20 @@ def tvns():
         for phi in (1e-6, 0.01, 0.1, 0.3, 0.5, limit - 1e-3, limit, limit + 1e-3):
             s.case(f"{eos} φ={phi:.6g}", ["tvns", "--d", str(d), "--eos", eos, "--phi", repr(phi), "--format", "json"], tvns_judge)
     s.row()
+    tvns_near_singular()
     tvns_tolerance()
+
+
+def tvns_near_singular():
+    """d = 3 just above the singular gamma = 7, where the vacuum branch's ODE follows the unstable
+    singular solution (issue 16's fuzz finding: gamma = 7.00000019165 exited 1 after 35 s)."""
+    gammas = [7 + 10 ** (k / 4) for k in range(-48, -7)] + [7.00000019165]
+    s = Sweep("TvNS (γ just above 7)", "d = 3, γ − 7 = 10^(k/4), k = −48..−8 (1e−12 to 0.01, 41 values) and the fuzz input γ = 7.00000019165, 200-point profile",
+              "A_d and the profile finite; closed form and ODE agree to 1e−8")
+    for g in gammas:
+        s.case(f"γ={g!r}", ["tvns", "--d", "3", "--gamma", repr(g), "--format", "json", "--points", "200",
+                            "--profile", os.path.join(WORK, "p.csv")], tvns_judge)
+    s.row()
 
 
 def tvns_tolerance():
