@@ -159,9 +159,11 @@ class VoxelPhase {
     const std::int64_t per_axis = static_cast<std::int64_t>(std::ceil(2.0 * R / side_));
     const Index lo = uniform_index<std::int64_t, D>(0), hi = uniform_index<std::int64_t, D>(per_axis - 1);
     Index v = lo;
-    do
+    std::uint64_t tested = 0;
+    do {
+      poll_stop(tested);
       if (!excluded(v)) voxels_.push_back(v);
-    while (next_multi_index(v, lo, hi));
+    } while (next_multi_index(v, lo, hi));
   }
   std::size_t size() const { return voxels_.size(); }
   int level() const { return level_; }
@@ -200,13 +202,21 @@ class VoxelPhase {
     side_ *= 0.5;
     ++level_;
     std::vector<Index> children;
+    std::uint64_t tested = 0;
     for (const Index& v : voxels_)
       for (int bits = 0; bits < (1 << D); ++bits) {
+        poll_stop(tested);
         Index c;
         for (int k = 0; k < D; ++k) c[k] = 2 * v[k] + ((bits >> k) & 1);
         if (!excluded(c)) children.push_back(c);
       }
     voxels_.swap(children);
+  }
+  /// Polls SIGTERM/SIGINT at the first and every 4096th voxel tested: a tiling or a subdivision of a
+  /// region of 2e7 spheres tests ~1e8 voxels and took 1-2 min between two polls (docs/stress.md).
+  /// The phase is abandoned by the throw (no state to keep: the set-up is redone on resume).
+  static void poll_stop(std::uint64_t& tested) {
+    if ((tested++ & 0xfff) == 0) common::throw_if_stop_requested();
   }
   void drop_if_excluded(std::size_t which) {
     if (!excluded(voxels_[which])) return;

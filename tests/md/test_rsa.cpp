@@ -4,6 +4,7 @@
 // literature's jamming limits.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <map>
 #include <random>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "common/interrupt.hpp"
 #include "md/ensemble.hpp"
 #include "md/initial_state.hpp"
 #include "md/scenes.hpp"
@@ -102,6 +104,29 @@ TEST_CASE("RSA: the voxel phase places the counts the plain trials stalled at (2
   CHECK(r3.placed_by_voxels > 0);
   CHECK(overlapping_pairs<3>(x3, 1.0) == 0);
   for (const auto& c : x3) CHECK(c.squaredNorm() < 64.0);
+}
+
+TEST_CASE("RSA: a stop requested before the voxel phase ends it in the voxel tiling", "[fast]") {
+  // The voxel tiling and each subdivision poll SIGTERM/SIGINT every 4096 voxels: a subdivision of a
+  // 2.2e7-sphere region had run 1-2 min without polling (docs/stress.md). switch_after = 0 skips the
+  // plain trials, so the first poll is the tiling's; the same call without the request completes.
+  auto rng = realization_rng(1, 0);
+  RsaReport report;
+  coldblast::common::request_stop(SIGTERM);
+  try {
+    random_sequential_addition_report<3>(rng, 1668, 0.5, 8.0, report, 0);
+    FAIL("no Interrupted thrown");
+  } catch (const coldblast::common::Interrupted& stop) {
+    CHECK(stop.exit_code() == 143);
+  }
+  coldblast::common::clear_stop();
+  CHECK(report.voxels_initial == 0);  // stopped inside the tiling (the placement's own poll comes after it)
+  CHECK(report.placed_by_voxels == 0);
+  auto again = realization_rng(1, 0);
+  const auto x = random_sequential_addition_report<3>(again, 1668, 0.5, 8.0, report, 0);
+  CHECK(x.size() == 1668);
+  CHECK(report.placed_by_voxels == 1668);
+  CHECK(overlapping_pairs<3>(x, 1.0) == 0);
 }
 
 TEST_CASE("RSA: saturation is proved, and random_sequential_addition throws RsaSaturated", "[fast]") {
