@@ -7,14 +7,15 @@ import sys
 import textwrap
 import time
 
-CHILD = textwrap.dedent("""
+CHILD = textwrap.dedent(r"""
     import sys, coldblast
-    def progress(done, total):
-        print("progress", done, total, flush=True)
+    def progress(done, total):  # one write: SIGINT cannot land between its words
+        sys.stdout.write(f"progress {done} {total}\n")
+        sys.stdout.flush()
     try:
         coldblast.md.run(realizations=1000000, threads=1, out=sys.argv[1], progress=progress)
     except KeyboardInterrupt:
-        print("KeyboardInterrupt", flush=True)
+        print("\nKeyboardInterrupt", flush=True)  # on its own line even if a progress line was cut
         after = coldblast.md.run(realizations=2, t_max=20, progress=False)  # the stop request was cleared
         print("usable", after.summary["realizations"], flush=True)
         sys.exit(7)
@@ -54,14 +55,15 @@ def test_sigint_interrupts_md_run(tmp_path):
     assert not (out / "observables.csv").exists() and not (out / "summary.json").exists()
     assert not any(name.endswith(".tmp") or ".tmp" in name for _, _, files in os.walk(tmp_path) for name in files)
 
-HYDRO_CHILD = textwrap.dedent("""
-    import coldblast
-    def progress(x, until):
-        print("progress", x, flush=True)
+HYDRO_CHILD = textwrap.dedent(r"""
+    import sys, coldblast
+    def progress(x, until):  # one write: SIGINT cannot land between its words
+        sys.stdout.write(f"progress {x}\n")
+        sys.stdout.flush()
     try:
         coldblast.hydro.core(until=1e12, cells=512, progress=progress)
     except KeyboardInterrupt:
-        print("KeyboardInterrupt", flush=True)
+        print("\nKeyboardInterrupt", flush=True)  # on its own line even if a progress line was cut
         after = coldblast.hydro.core(until=10, cells=32, progress=False)  # the stop request was cleared
         print("usable", after.cells, flush=True)
         raise SystemExit(7)
