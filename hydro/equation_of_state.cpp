@@ -58,16 +58,8 @@ int eos_dimension(Eos eos) {
   throw std::logic_error("eos_dimension: unknown Eos");
 }
 
-double close_packing_fraction(Eos eos) {
-  switch (eos) {
-    case Eos::ideal:
-      return std::numeric_limits<double>::infinity();
-    case Eos::henderson:
-      return pi / (2.0 * std::sqrt(3.0));
-    case Eos::carnahan_starling:
-      return pi / (3.0 * std::sqrt(2.0));
-  }
-  throw std::logic_error("close_packing_fraction: unknown Eos");
+void detail::unknown_eos(const char* where) {
+  throw std::logic_error(std::string(where) + ": unknown Eos");
 }
 
 double compressibility(Eos eos, double phi) {
@@ -163,16 +155,10 @@ double sound_speed_squared_over_temperature(Eos eos, double phi) {
   return Z + phi * compressibility_derivative(eos, phi) + 2.0 / d * Z * Z;
 }
 
-double contact_value(Eos eos, double phi) {
-  if (eos == Eos::ideal) return 1.0;
-  if (!(phi >= 0.0 && phi < close_packing_fraction(eos)))  // called per face by the solver: no string unless bad
-    common::require_in_range("phi", phi, 0.0, close_packing_fraction(eos), common::Bound::closed, common::Bound::open,
-                             " for " + to_string(eos) + " (close packing)");
-  const double one_minus = 1.0 - phi;
-  // (Z - 1)/(2^(d-1) phi) of the two closed forms above, simplified so that phi = 0 is regular:
-  // Henderson Z - 1 = (2 phi - 7 phi^2/8)/(1 - phi)^2; Carnahan-Starling Z - 1 = (4 phi - 2 phi^2)/(1 - phi)^3.
-  if (eos == Eos::henderson) return (1.0 - 7.0 * phi / 16.0) / (one_minus * one_minus);
-  return (1.0 - 0.5 * phi) / (one_minus * one_minus * one_minus);
+void detail::reject_contact_phi(Eos eos, double phi) {
+  common::require_in_range("phi", phi, 0.0, close_packing_fraction(eos), common::Bound::closed, common::Bound::open,
+                           " for " + to_string(eos) + " (close packing)");
+  throw std::logic_error("contact_value: phi = " + common::format_number(phi) + " passed the range check");
 }
 
 }  // namespace coldblast::hydro

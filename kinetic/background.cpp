@@ -30,10 +30,6 @@ double ContactModel::chi(double n) const {
   return enskog ? chi_at_phi(n * packing_per_density()) : 1.0;
 }
 
-double host_mean_speed(int d, double T) {
-  return T > 0.0 ? maxwellian_mean_speed(d, T) : 0.0;
-}
-
 EquilibriumBackground::EquilibriumBackground(int d, double n, double T, const ContactModel& contact) : d_(d) {
   state_ = {n, 0.0, T, contact.chi(n)};
   flux_ = n * state_.chi * host_mean_speed(d, T);
@@ -92,6 +88,8 @@ GridBackground::GridBackground(int d, std::vector<double> x, double edge, std::v
   for (std::size_t i = 0; i < x_.size(); i += band_width_) band_start_.push_back(x_[i]);
   if (band_start_.back() < x_.back()) band_start_.push_back(x_.back());
   for (std::size_t k = 0; k + 1 < frames_.size(); ++k) window_bands_.push_back(band_bounds(k, k + 1));
+  for (long j = -ratio_power_limit; j <= ratio_power_limit; ++j)
+    ratio_powers_.push_back(std::pow(extension_window_ratio, static_cast<double>(j)));
   first_bands_ = band_bounds(0, 0);
   last_bands_ = band_bounds(frames_.size() - 1, frames_.size() - 1);
 }
@@ -141,6 +139,45 @@ TimeSlice GridBackground::slice(const WindowBound& window, double t) const {
   return s;
 }
 
+namespace {
+/// ln(1 + e) for 0 <= e <= 2^-8: Taylor series to e^8 (Horner, reciprocals as constants). The
+/// first omitted term is below e^9/9, i.e. 6e-21 relative to the result: under its round-off.
+double log1p_small(double e) {
+  constexpr double c2 = -1.0 / 2, c3 = 1.0 / 3, c4 = -1.0 / 4, c5 = 1.0 / 5, c6 = -1.0 / 6, c7 = 1.0 / 7, c8 = -1.0 / 8;
+  return e * (1.0 + e * (c2 + e * (c3 + e * (c4 + e * (c5 + e * (c6 + e * (c7 + e * c8)))))));
+}
+/// exp(y) for |y| <= 2^-8: Taylor series to y^7 (Horner); the first omitted term, y^8/8!, is
+/// 1.3e-24 relative: under the round-off.
+double exp_small(double y) {
+  constexpr double c2 = 1.0 / 2, c3 = 1.0 / 6, c4 = 1.0 / 24, c5 = 1.0 / 120, c6 = 1.0 / 720, c7 = 1.0 / 5040;
+  return 1.0 + y * (1.0 + y * (c2 + y * (c3 + y * (c4 + y * (c5 + y * (c6 + y * c7))))));
+}
+constexpr double small_limit = 0x1p-8;
+}  // namespace
+
+TimeSlice GridBackground::slice_near(const WindowBound& window, TimeSlice& anchor, double t) const {
+  const TimeSlice& reference = anchor;
+  const double epsilon = (t - reference.t) / reference.t;
+  if (reference.index != window.index || !(epsilon >= 0.0 && epsilon <= small_limit)) {
+    anchor = slice(window, t);
+    return anchor;
+  }
+  const double log_ratio = log1p_small(epsilon);  // ln(t / t_a)
+  TimeSlice s = reference;
+  s.t = t;
+  if (window.index >= 0) {  // slice(): w linear in ln t, ln s linear in w, so s = s_a (t/t_a)^α
+    const std::size_t k = static_cast<std::size_t>(window.index);
+    s.w = reference.w + log_ratio * window_slope_inverse_[k];
+    const double y = window_scale_exponent_[k] * log_ratio;
+    s.scale = reference.scale * (std::abs(y) <= small_limit ? exp_small(y) : std::exp(y));
+    return s;
+  }
+  // Self-similar continuation: s ∝ t^(2/(d+2)), fu ∝ t^(-d/(d+2)); both exponents are below 1.
+  s.scale = reference.scale * exp_small(2.0 / (d_ + 2) * log_ratio);
+  s.fu = reference.fu * exp_small(-static_cast<double>(d_) / (d_ + 2) * log_ratio);
+  return s;
+}
+
 double GridBackground::bound_length(const TimeSlice& now, double r) const {
   // Two widths of the band holding r (the grid is refined at the centre, so a fixed reach would
   // span the core's many narrow bands and loosen the majorant; docs/kinetic.md).
@@ -183,10 +220,8 @@ WindowBound GridBackground::local_bound(const WindowBound& window, const TimeSli
     }
   }
   if (x_hi > edge_) n_chi = std::max(n_chi, n_inf_ * contact_.chi(n_inf_));  // ambient gas at rest, T = 0
-  // Self-similar continuation: u, c̄ scale by (t/t_frame)^(-d/(d+2)), largest at t.
-  const double fu = window.index >= 0 ? 1.0
-                                      : std::pow(t / (window.index == -1 ? frames_.front().t : frames_.back().t),
-                                                 -static_cast<double>(d_) / (d_ + 2));
+  // Self-similar continuation: u, c̄ scale by fu = (t/t_frame)^(-d/(d+2)), largest at t (now.fu).
+  const double fu = window.index >= 0 ? 1.0 : now.fu;
   local.n_chi_max = std::min(window.n_chi_max, n_chi);
   local.flux_max = std::min(window.flux_max, fu * flux);
   return local;
@@ -278,6 +313,12 @@ HostState GridBackground::at(double r, const TimeSlice& slice) const {
   return h;
 }
 
+double GridBackground::ratio_power(long j) const {
+  const long k = j + ratio_power_limit;
+  if (k >= 0 && k < static_cast<long>(ratio_powers_.size())) return ratio_powers_[static_cast<std::size_t>(k)];
+  return std::pow(extension_window_ratio, static_cast<double>(j));
+}
+
 WindowBound GridBackground::bound(double t) const {
   if (!(t >= 0.0)) throw std::runtime_error("background: time " + format_number(t) + " is negative");
   const double t0 = frames_.front().t, tL = frames_.back().t;
@@ -288,10 +329,10 @@ WindowBound GridBackground::bound(double t) const {
   if (t < t0) {
     if (!(t > 0.0)) throw std::runtime_error("background: t = 0 has no finite majorant; start at t > 0");
     long j = static_cast<long>(std::floor(std::log(t0 / t) / std::log(q))) + 1;
-    while (t0 * std::pow(q, -j) > t) ++j;
-    while (j > 1 && t0 * std::pow(q, -(j - 1)) <= t) --j;
-    w.t_begin = t0 * std::pow(q, -j);
-    w.t_end = j == 1 ? t0 : t0 * std::pow(q, -(j - 1));
+    while (t0 * ratio_power(-j) > t) ++j;
+    while (j > 1 && t0 * ratio_power(-(j - 1)) <= t) --j;
+    w.t_begin = t0 * ratio_power(-j);
+    w.t_end = j == 1 ? t0 : t0 * ratio_power(-(j - 1));
     w.flux_max = std::pow(w.t_begin / t0, exponent) * first_bands_.flux.back();
     w.index = -1;
     return w;
@@ -309,10 +350,10 @@ WindowBound GridBackground::bound(double t) const {
                                " (it ends at t = " + format_number(tL) + ")");
     }
     long j = static_cast<long>(std::floor(std::log(t / tL) / std::log(q)));
-    while (j > 0 && tL * std::pow(q, j) > t) --j;
-    while (tL * std::pow(q, j + 1) <= t) ++j;
-    w.t_begin = tL * std::pow(q, j);
-    w.t_end = tL * std::pow(q, j + 1);
+    while (j > 0 && tL * ratio_power(j) > t) --j;
+    while (tL * ratio_power(j + 1) <= t) ++j;
+    w.t_begin = tL * ratio_power(j);
+    w.t_end = tL * ratio_power(j + 1);
     w.flux_max = std::pow(w.t_begin / tL, exponent) * last_bands_.flux.back();
     w.index = -2;
     return w;

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "kinetic/kinetic_theory.hpp"
+
 namespace coldblast::kinetic {
 
 /// Enskog factor of the impurity–host pair: 1 (dilute) or pair_contact_value at the local packing
@@ -55,8 +57,10 @@ struct TimeSlice {
   std::size_t cell = 0;
 };
 
-/// Mean thermal speed of the host (mass 1) Maxwellian at temperature T (kinetic_theory.hpp).
-double host_mean_speed(int d, double T);
+/// Mean thermal speed of the host (mass 1) Maxwellian at temperature T (kinetic_theory.hpp); 0 at T <= 0.
+inline double host_mean_speed(int d, double T) {
+  return T > 0.0 ? maxwellian_mean_speed(d, T) : 0.0;
+}
 
 class Background {
  public:
@@ -68,6 +72,15 @@ class Background {
     s.t = t;
     s.index = window.index;
     return s;
+  }
+  /// The slice of time t in `window`, derived from `anchor` (a slice(window, t_a) of an earlier
+  /// time t_a <= t) when t is near t_a: the same values as slice(window, t) to round-off, cheaper
+  /// (the many candidate times of the late, many-collision regime). Otherwise it returns
+  /// slice(window, t) and makes it the new anchor, so a derived slice is never derived from
+  /// another. By default always slice(window, t).
+  virtual TimeSlice slice_near(const WindowBound& window, TimeSlice& anchor, double t) const {
+    anchor = slice(window, t);
+    return anchor;
   }
   /// Host state at radius r >= 0 at the time of `slice`.
   virtual HostState at(double r, const TimeSlice& slice) const = 0;
@@ -130,6 +143,9 @@ class GridBackground final : public Background {
                  const ContactModel& contact, bool self_similar_after);
   int dimension() const override { return d_; }
   TimeSlice slice(const WindowBound& window, double t) const override;
+  /// For t/t_a − 1 in [0, 2^-8]: ln(t/t_a) and the exponentials of the slice by their Taylor
+  /// series (no log or exp call); otherwise, or in another window, a new anchor.
+  TimeSlice slice_near(const WindowBound& window, TimeSlice& anchor, double t) const override;
   using Background::at;
   HostState at(double r, const TimeSlice& slice) const override;
   WindowBound bound(double t) const override;
@@ -166,6 +182,11 @@ class GridBackground final : public Background {
     std::vector<double> n_chi, flux;
   };
   BandBounds band_bounds(std::size_t k0, std::size_t k1) const;
+  /// q^j for the extension windows' ratio q: std::pow(q, j), from a table for |j| <= ratio_power_limit
+  /// (the windows' edges are computed at every window change; the same values as the pow calls).
+  double ratio_power(long j) const;
+  static constexpr long ratio_power_limit = 2048;  // q^2048 = 2^256
+  std::vector<double> ratio_powers_;               // q^j, j = -limit..limit
   /// Scale s(t) of window `window` (frame pair or self-similar continuation) and the velocity factor.
   double scale_at(const WindowBound& window, double t) const;
   int d_;

@@ -12,18 +12,17 @@ namespace {
 constexpr double pi = 3.141592653589793238462643;
 
 void require_dimension(int d) {
-  if (d != 2 && d != 3) throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
+  if (d != 2 && d != 3) detail::reject_dimension(d);
 }
 }  // namespace
+
+void detail::reject_dimension(int d) {
+  throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
+}
 
 double total_cross_section(int d, double sigma_c) {
   require_dimension(d);
   return d == 2 ? 2.0 * sigma_c : pi * sigma_c * sigma_c;
-}
-
-double maxwellian_mean_speed(int d, double s2) {
-  require_dimension(d);
-  return d == 2 ? std::sqrt(pi * s2 / 2.0) : std::sqrt(8.0 * s2 / pi);
 }
 
 double mean_relative_speed(int d, double T, double M) {

@@ -3,15 +3,26 @@
 // hard particles (mass 1, radius a) at density n, temperature T, Enskog contact value chi: the
 // collision rate, the first Sonine (Chapman–Enskog) tracer diffusion coefficient and the pair
 // contact value of a tracer in a hard-disc/sphere fluid. Units: m = 1, k_B = 1.
+#include <cmath>
+
 namespace coldblast::kinetic {
+
+namespace detail {
+/// Throws std::invalid_argument "d = <d> is outside [2, 3]".
+[[noreturn]] void reject_dimension(int d);
+}  // namespace detail
 
 /// Total cross-section of hard particles with contact distance sigma_c = a + a_imp: the volume of
 /// the unit (d-1)-ball times sigma_c^(d-1) (2 sigma_c in 2D, π sigma_c² in 3D); d in {2, 3}.
 double total_cross_section(int d, double sigma_c);
 
 /// Mean speed of a d-dimensional Maxwellian with per-component variance s2 = T/m:
-/// √(π s2/2) (d = 2), √(8 s2/π) (d = 3).
-double maxwellian_mean_speed(int d, double s2);
+/// √(π s2/2) (d = 2), √(8 s2/π) (d = 3). Inline: the tracer evaluates it at every candidate.
+inline double maxwellian_mean_speed(int d, double s2) {
+  constexpr double pi = 3.141592653589793238462643;
+  if (d != 2 && d != 3) detail::reject_dimension(d);
+  return d == 2 ? std::sqrt(pi * s2 / 2.0) : std::sqrt(8.0 * s2 / pi);
+}
 
 /// Mean relative speed ⟨|g|⟩ of an impurity of mass M and a host (mass 1), both Maxwellian at T:
 /// the mean speed at the reduced mass mu = M/(M+1).

@@ -74,6 +74,9 @@ struct Segment {
   double t_end = 0.0;
   double majorant = 0.0;
   std::size_t cell = 0;  ///< grid cell near the segment's radii (TimeSlice::cell, a search hint)
+  /// The local bound behind the majorant: A >= n chi and B >= n chi (|u| + c̄) at every radius in
+  /// [r_lo, r_hi] and time in [t_open, bound_end] (bound_end >= t_end).
+  double r_lo = 0.0, r_hi = 0.0, bound_end = 0.0, n_chi = 0.0, flux = 0.0;
 };
 
 template <int D>
@@ -85,11 +88,34 @@ Segment open_segment(const Background& background, const WindowBound& window, co
   const double radius0 = s.r.norm();
   if (speed > 0.0) segment.t_end = std::min(segment.t_end, s.t + background.bound_length(now, radius0) / speed);
   const double reach = speed * (segment.t_end - s.t);
-  const WindowBound local =
-      background.local_bound(window, now, segment.t_end, std::max(0.0, radius0 - reach), radius0 + reach);
-  segment.majorant = S * (local.n_chi_max * speed + local.flux_max);
+  segment.r_lo = std::max(0.0, radius0 - reach);
+  segment.r_hi = radius0 + reach;
+  segment.bound_end = segment.t_end;
+  const WindowBound local = background.local_bound(window, now, segment.t_end, segment.r_lo, segment.r_hi);
+  segment.n_chi = local.n_chi_max;
+  segment.flux = local.flux_max;
+  segment.majorant = S * (segment.n_chi * speed + segment.flux);
   segment.cell = local.cell;
   return segment;
+}
+
+/// After a collision at radius `radius` (inside [r_lo, r_hi]) the old segment's bound still holds
+/// wherever the new straight path stays in that shell before bound_end: it stays there at least
+/// until it could have covered the distance to the nearer edge (none below if r_lo = 0). So the
+/// same A and B with the new speed make an exact majorant until that time, and no new bound is
+/// needed. Returns false (open a fresh segment) when fewer than two candidates are expected
+/// before that time.
+template <int D>
+bool reuse_segment(Segment& segment, double S, const TracerState<D>& s, double radius, double t_target) {
+  const double speed = s.v.norm();
+  const double margin = std::min(segment.r_lo > 0.0 ? radius - segment.r_lo : std::numeric_limits<double>::infinity(),
+                                 segment.r_hi - radius);
+  const double majorant = S * (segment.n_chi * speed + segment.flux);
+  const double t_end = std::min({segment.bound_end, t_target, s.t + margin / speed});
+  if (!(margin > 0.0) || !((t_end - s.t) * majorant >= 2.0)) return false;
+  segment.majorant = majorant;
+  segment.t_end = t_end;
+  return true;
 }
 }  // namespace
 
@@ -98,10 +124,12 @@ void advance(const Background& background, const ImpurityModel& impurity, Tracer
              Random& rng, TracerCounters& counters) {
   const double S = impurity.cross_section();
   WindowBound window = background.bound(s.t);
-  Segment segment = open_segment(background, window, background.slice(window, s.t), S, s, t_target);
+  TimeSlice anchor = background.slice(window, s.t);  // the slices of nearby times derive from it
+  Segment segment = open_segment(background, window, anchor, S, s, t_target);
+  ++counters.segments;
   // Every time slice carries the segment's grid cell as its search hint (same results, fewer comparisons).
   const auto slice_at = [&](double t) {
-    TimeSlice slice = background.slice(window, t);
+    TimeSlice slice = background.slice_near(window, anchor, t);
     slice.cell = segment.cell;
     return slice;
   };
@@ -117,6 +145,7 @@ void advance(const Background& background, const ImpurityModel& impurity, Tracer
       if (s.t >= t_target) return;
       if (s.t >= window.t_end) window = background.bound(s.t);
       segment = open_segment(background, window, slice_at(s.t), S, s, t_target);
+      ++counters.segments;
       continue;
     }
     s.t += dt;
@@ -143,7 +172,10 @@ void advance(const Background& background, const ImpurityModel& impurity, Tracer
     binary_collision<D>(e, s.v, w, impurity.M);
     ++s.collisions;
     ++counters.collisions;
-    segment = open_segment(background, window, now, S, s, t_target);
+    if (!reuse_segment(segment, S, s, radius, t_target)) {
+      segment = open_segment(background, window, now, S, s, t_target);
+      ++counters.segments;
+    }
   }
 }
 

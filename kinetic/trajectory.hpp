@@ -34,9 +34,10 @@ struct TracerState {
   std::uint64_t collisions = 0;
 };
 
-/// Work counters: candidate (majorant) events and accepted collisions.
+/// Work counters: candidate (majorant) events, accepted collisions and segments (fresh local
+/// bounds of the majorant; a collision keeps the old bound where it can).
 struct TracerCounters {
-  std::uint64_t candidates = 0, collisions = 0;
+  std::uint64_t candidates = 0, collisions = 0, segments = 0;
 };
 
 /// Impact direction e for relative velocity direction g_hat (unit): density ∝ (g_hat·e)_+ on the

@@ -149,3 +149,63 @@ TEST_CASE("grid background: a time slice's cell hint changes no result, only the
     }
   }
 }
+
+TEST_CASE("grid background: a slice derived from a nearby anchor is the direct slice to round-off") {
+  // Between frames (s ∝ t^(1/2), t^(3/2)) and in both self-similar continuations; t/t_a − 1 from
+  // 1e-12 to 2^-8 (derived: series) and beyond, to 0.1 (a new anchor, computed directly). The
+  // direct slice's own round-off is that of exp and log of arguments up to |ln s| ≈ 3: ≈ 1e-15.
+  const double scale_exponent = GENERATE(0.5, 1.5);
+  const GridBackground bg = linear_background(true, true, true, scale_exponent);
+  Random rng(9, static_cast<std::uint64_t>(scale_exponent * 2));
+  int derived = 0, renewed = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double t_a = std::exp(-3 + 6 * rng.uniform());
+    const WindowBound w = bg.bound(t_a);
+    TimeSlice anchor = bg.slice(w, t_a);
+    const double epsilon = std::exp(std::log(1e-12) + (std::log(0.1) - std::log(1e-12)) * rng.uniform());
+    const double t = std::min(t_a * (1 + epsilon), std::nextafter(w.t_end, 0.0));
+    const TimeSlice near = bg.slice_near(w, anchor, t), direct = bg.slice(w, t);
+    INFO("t_a = " << t_a << ", t = " << t << ", window " << w.index);
+    REQUIRE(near.t == t);
+    REQUIRE(near.index == direct.index);
+    REQUIRE(near.w == Approx(direct.w).margin(1e-15).epsilon(1e-15));
+    REQUIRE(near.scale == Approx(direct.scale).epsilon(2e-15));
+    REQUIRE(near.fu == Approx(direct.fu).epsilon(2e-15));
+    if (anchor.t == t_a) {
+      ++derived;
+      REQUIRE(t / t_a - 1 <= 0x1p-8 * (1 + 1e-12));
+    } else {  // not near: the direct slice, which is the new anchor
+      ++renewed;
+      REQUIRE(anchor.t == t);
+      REQUIRE(near.w == direct.w);
+      REQUIRE(near.scale == direct.scale);
+    }
+    const double r = 1.1 * direct.scale * rng.uniform();
+    const HostState a = bg.at(r, near), b = bg.at(r, direct);
+    REQUIRE(a.n == Approx(b.n).epsilon(1e-14));
+    REQUIRE(a.u == Approx(b.u).margin(1e-14).epsilon(1e-14));
+    REQUIRE(a.T == Approx(b.T).epsilon(1e-14));
+  }
+  CHECK(derived > 10000);
+  CHECK(renewed > 1000);
+}
+
+TEST_CASE("grid background: self-similar windows hold t, also beyond the table of window ratios") {
+  // Windows t0 q^-j .. t0 q^-(j-1) before the first frame (t0 = 1) and tL q^j .. tL q^(j+1) after
+  // the last (tL = 8); q^j comes from a table for |j| <= 2048 and from std::pow beyond it.
+  const GridBackground bg = linear_background(true);
+  const double q = GridBackground::extension_window_ratio;
+  for (const double j : {1.0, 2.0, 100.0, 2047.0, 2048.0, 2049.0, 2050.0, 3000.0}) {
+    for (const double inside : {0.0, 0.5, 0.999}) {
+      const double before = std::pow(q, -j + inside), after = 8.0 * std::pow(q, j + inside);
+      for (const double t : {before, after}) {
+        const WindowBound w = bg.bound(t);
+        INFO("j = " << j << ", t = " << t);
+        REQUIRE(w.t_begin <= t);
+        REQUIRE(t < w.t_end);
+        REQUIRE(w.t_end / w.t_begin == Approx(q).epsilon(1e-12));
+        REQUIRE(w.index == (t < 1.0 ? -1 : -2));
+      }
+    }
+  }
+}
