@@ -20,6 +20,11 @@ struct ReproduceOptions {
 
 void print_verdict(const char* name, const compare::CompareResult& result) {
   std::printf("\nagainst %-6s: %s\n", name, compare::verdict_summary(result).c_str());
+  // The rule behind each row's word, as `compare` prints it: a row can pass beyond 2 sigma by the allowance.
+  if (result.against == compare::Reference::paper)
+    std::printf("  (exponents pass within %g sigma of MD and paper errors combined)\n", result.sigma);
+  else
+    std::printf("  (exponents pass within %g sigma + allowance %g)\n", result.sigma, result.allowance);
   for (const auto& v : result.observables)
     std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma)  %s\n", v.name.c_str(),
                 v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error, v.deviation_sigma,
