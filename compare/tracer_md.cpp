@@ -50,7 +50,9 @@ TracerMdSeries compare_series(const RunData& tracer, const RunData& md, const st
   const auto [vb, eb] = values_with_errors(b);
   TracerMdSeries out;
   out.observable = name;
-  const theory::Exponent& alpha = paper_exponent(theory::scaling_exponents(tracer.d), name);
+  // Held in a local: paper_exponent returns a reference into it (a temporary would dangle).
+  const theory::ScalingExponents exponents = theory::scaling_exponents(tracer.d);
+  const theory::Exponent& alpha = paper_exponent(exponents, name);
   out.alpha = theory::to_double(alpha.in_time);
   out.alpha_rational = theory::to_string(alpha.in_time);
   std::size_t j = 0;
