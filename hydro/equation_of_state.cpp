@@ -18,8 +18,6 @@ namespace coldblast::hydro {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
 void check_gsl(int status, const std::string& context) {
   if (status != GSL_SUCCESS) throw std::runtime_error("GSL error in " + context + ": " + gsl_strerror(status));
 }

@@ -15,7 +15,9 @@
 // Boost.Odeint 1.74's steppers copy members that g++ 12 reports as maybe-uninitialized (a false
 // positive inside Boost's headers); silence that one warning for this file only.
 #pragma GCC diagnostic push
+#if !defined(__clang__)  // a g++ warning group; clang has none of that name and would warn about it
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <boost/numeric/odeint.hpp>
 
 #include "common/validate.hpp"
