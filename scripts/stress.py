@@ -266,8 +266,64 @@ def md_memory():
     sys.stderr.write(rows[-1] + "\n")
 
 
+def tracer():
+    """The kinetic tracer (issue 13): impurity masses and radii, φ, backgrounds, bath temperatures
+    and R/λ up to 1e6. Each run must end with finite results (a violated null-collision majorant is
+    exit 1, so this also checks the majorant everywhere), and in an equilibrium bath the rate must
+    lie within 5 errors of the exact n χ S ⟨|g|⟩."""
+    scenes = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes")
+    base = ["tracer", "--threads", "2", "--seed", "7", "--format", "json", "--out", os.path.join(WORK, "tracer")]
+
+    def scene(d):  # the paper's scenes: the embedded default (t_max = 200) ends before a 3D background starts
+        return [os.path.join(scenes, f"paper-{d}d.toml")]
+
+    def judge(doc):
+        if not finite_tree(doc):
+            return "non-finite value"
+        if not 0 <= doc["rejection_rate"] < 1:
+            return f"rejection rate {doc['rejection_rate']}"
+        if doc.get("collision_rate_exact"):
+            z = (doc["collision_rate"] - doc["collision_rate_exact"]) / doc["collision_rate_error"]
+            if abs(z) > 5:
+                return f"equilibrium rate {z:+.1f} errors from n chi S <g>"
+        return None
+
+    enskog = ["--transport", "enskog"]
+    sweeps = [
+        ("impurity mass ratio (2D, dense NS)", [(f"M={m}", scene(2) + enskog + ["--set", f"impurities.mass={m}", "--trajectories", "2000"])
+                                               for m in ("1e-3", "1e-2", "0.1", "1", "10", "100", "1e3")]),
+        ("impurity radius ratio (2D, dense NS)", [(f"a_imp={r}", scene(2) + enskog + ["--set", f"impurities.radius={r}", "--trajectories", "2000"])
+                                                 for r in ("0.1", "0.5", "1", "2", "5", "10", "20")]),
+        ("φ (2D, dense NS)", [(f"n={n}", scene(2) + enskog + ["--set", f"n={n}", "--trajectories", "1000"])
+                             for n in ("0.01", "0.1", "0.3", "0.5", "0.6", "0.65", "0.7")]),
+        ("φ (3D, dense NS)", [(f"n={n}", scene(3) + enskog + ["--set", f"n={n}", "--trajectories", "1000"])
+                             for n in ("0.01", "0.1", "0.3", "0.5", "0.7", "0.73", "0.8")]),
+        # equilibrium: thermal start (collision_rate_exact is the rate of an impurity in equilibrium with the bath)
+        ("background", [(f"d={d} {b}", scene(d) + ["--background", b.split()[0], "--trajectories", "2000"] +
+                         (enskog if "enskog" in b else []) +
+                         (["--start", "thermal"] if "equilibrium" in b else []))
+                        for d in (2, 3) for b in ("ns", "ns enskog", "tvns", "equilibrium", "equilibrium enskog")]),
+        # t_max ≈ 400 mean free times of the bath (rate ≈ 2 n σ χ √(πT) ≈ 0.5 √T here)
+        ("bath temperature (equilibrium, 3D, φ = 0.3)",
+         [(f"T={T}", scene(3) + ["--background", "equilibrium", "--phi", "0.3", "--T", T, "--trajectories", "1000", "--start", "thermal",
+                      "--set", f"t_max={100 / math.sqrt(float(T))!r}", "--set", f"t_min={1 / math.sqrt(float(T))!r}"] + enskog)
+          for T in ("1e-6", "1e-3", "1", "1e3", "1e6")]),
+        ("R/λ up to 1e6 (dense NS)", [(f"d={d} t_max={t}", scene(d) + enskog + ["--set", f"t_max={t}", "--trajectories", "40"])
+                                     for d, t in ((2, "3.8e8"), (2, "3.7e12"), (3, "7.5e10"), (3, "7.9e15"))]),
+        ("start", [(f"d={d} {start}", scene(d) + enskog + ["--start", start.split()[0], "--trajectories", "2000"] +
+                    (["--start-time", "40"] if "late" in start else []))
+                   for d in (2, 3) for start in ("kick", "thermal", "thermal late")]),
+    ]
+    for name, cases in sweeps:
+        s = Sweep("Tracer", f"{name}: " + ", ".join(label for label, _ in cases),
+                  "finite results (a violated majorant would be exit 1); equilibrium rate within 5 errors of n χ S ⟨\\|g\\|⟩; or exit 2 naming the key")
+        for label, args in cases:
+            s.case(label, base + args, judge, timeout=1800)
+        s.row()
+
+
 if __name__ == "__main__":
-    which = sys.argv[2:] or ["tvns", "hydro", "md", "md_memory"]
+    which = sys.argv[2:] or ["tvns", "hydro", "md", "md_memory", "tracer"]
     print("| solver | sweep | checked | result |")
     print("|---|---|---|---|")
     for part in which:
