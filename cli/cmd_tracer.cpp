@@ -30,7 +30,10 @@ struct TracerOptions {
 };
 
 void run(TracerOptions& o) {
-  std::vector<std::string> overrides = o.set;
+  // The tracer records no particle snapshots: a scene's snapshot_times (an md key, which must lie
+  // within t_max) would otherwise refuse a shorter --set t_max; the user's own --set still applies.
+  std::vector<std::string> overrides{"snapshot_times=[]"};
+  overrides.insert(overrides.end(), o.set.begin(), o.set.end());
   if (o.seed != -1) {
     common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
     overrides.push_back("seed=" + std::to_string(o.seed));
