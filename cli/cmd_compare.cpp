@@ -127,6 +127,7 @@ compare::HydroModelOptions hydro_model(const CompareOptions& options) {
 }
 
 void run(CompareOptions& options) {
+  if (!options.out.empty()) compare::report_folder(options.out);  // before the work, not after
   options.config.run_dir = options.run_dir;
   options.config.against = compare::parse_reference(options.against);
   options.config.observables = split_list(options.observables);

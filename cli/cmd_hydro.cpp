@@ -140,6 +140,7 @@ void write_files(const hydro::NavierStokesResult& r, const std::string& director
 }
 
 void run_core(const HydroOptions& options) {
+  if (!options.out.empty()) common::require_output_folder(options.out, "--out");
   const hydro::NavierStokesConfig config = make_config(options, false);
   const hydro::NavierStokesResult r = solve(config, "core");
   write_files(r, options.out);
@@ -195,6 +196,7 @@ void run_core(const HydroOptions& options) {
 }
 
 void run_euler(const HydroOptions& options) {
+  if (!options.out.empty()) common::require_output_folder(options.out, "--out");
   const hydro::NavierStokesConfig config = make_config(options, true);
   const hydro::NavierStokesResult r = solve(config, "euler");
   write_files(r, options.out);

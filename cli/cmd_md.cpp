@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "common/input.hpp"
 #include "common/interrupt.hpp"
+#include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/md_run.hpp"
 #include "md/ensemble.hpp"
@@ -127,6 +128,7 @@ void run_md(const MdRunOptions& o) {
     out = o.resume;
     options.resume = true;
   }
+  common::require_output_folder(out, o.resume.empty() ? "--out" : "--resume");
   options.checkpoint = std::filesystem::path(out) / "checkpoint";
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks; rank 0 alone reports progress and writes the outputs.
@@ -143,6 +145,7 @@ void run_md(const MdRunOptions& o) {
 }
 
 void merge_md(const MdMergeOptions& o) {
+  common::require_output_folder(o.out, "--out");
   std::vector<std::filesystem::path> inputs(o.inputs.begin(), o.inputs.end());
   if (kinetic::is_tracer_run(inputs.front())) {  // tracer shards: also moments.csv and the tracer's keys
     write_tracer_run(kinetic::merge_tracer_outputs(inputs), o.out, o.format);

@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "common/input.hpp"
+#include "common/output.hpp"
 #include "common/validate.hpp"
 #include "kinetic/tracer.hpp"
 #include "md/scenes.hpp"
@@ -30,6 +31,7 @@ struct TracerOptions {
 };
 
 void run(TracerOptions& o) {
+  common::require_output_folder(o.out, "--out");
   // The tracer records no particle snapshots: a scene's snapshot_times (an md key, which must lie
   // within t_max) would otherwise refuse a shorter --set t_max; the user's own --set still applies.
   std::vector<std::string> overrides{"snapshot_times=[]"};

@@ -66,6 +66,30 @@ ssize_t write_checked_stdout(void*, const char* data, std::size_t size) {
 }
 #endif
 
+/// What a path is, for error messages ("a regular file", "a character device", ...).
+std::string kind_of(const fs::file_status& status) {
+  switch (status.type()) {
+    case fs::file_type::regular:
+      return "a regular file";
+    case fs::file_type::directory:
+      return "a folder";
+    case fs::file_type::symlink:
+      return "a symlink";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::socket:
+      return "a socket";
+    case fs::file_type::not_found:
+      return "missing";
+    default:
+      return "of an unknown type";
+  }
+}
+
 /// A device, FIFO or socket: opened as it is (never created, truncated or renamed onto).
 void write_through(const fs::path& path, const std::string& content) {
   int fd;
@@ -248,6 +272,31 @@ std::string provenance_header(const HeaderFields& extra, const std::string& unit
   header += "# units: " + units + "\n";
   for (const auto& [key, value] : extra) header += "# " + key + ": " + value + "\n";
   return header;
+}
+
+void require_output_folder(const fs::path& path, const std::string& option) {
+  const std::string named = option + " = " + path.string();
+  const std::string allowed = " (allowed: a folder or a new path; nothing else is replaced)";
+  if (path.empty()) throw std::invalid_argument(option + ": the output folder must not be empty");
+  std::error_code error;
+  const fs::file_status link = fs::symlink_status(path, error);
+  if (fs::exists(link)) {
+    const fs::file_status target = fs::status(path, error);
+    if (fs::is_directory(target)) return;
+    if (fs::is_symlink(link))
+      throw std::invalid_argument(named + " is a symlink to " +
+                                  (fs::exists(target) ? kind_of(target) : std::string("nothing")) + allowed);
+    throw std::invalid_argument(named + " is " + kind_of(target) + allowed);
+  }
+  // A new path: the writers create it, so its nearest existing ancestor must be a folder.
+  fs::path ancestor = path.parent_path();
+  while (!ancestor.empty() && !fs::exists(fs::symlink_status(ancestor, error))) ancestor = ancestor.parent_path();
+  if (ancestor.empty()) return;  // relative to the working folder
+  const fs::file_status target = fs::status(ancestor, error);
+  if (!fs::is_directory(target))
+    throw std::invalid_argument(named + " cannot be created: " + ancestor.string() + " is " +
+                                (fs::exists(target) ? kind_of(target) : std::string("a symlink to nothing")) +
+                                ", not a folder");
 }
 
 }  // namespace coldblast::common

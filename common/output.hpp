@@ -26,6 +26,12 @@ using Json = nlohmann::ordered_json;
 /// atomic write leaves the old file untouched and no temporary behind.
 void write_file_atomic(const std::filesystem::path& path, const std::string& content);
 
+/// Checks an output folder before any work is done (`option` names it in the error, e.g. "--out"):
+/// a folder, also through symlinks, or a new path whose nearest existing ancestor is a folder, is
+/// accepted; a regular file, a device, a FIFO, a socket or a symlink to nothing throws
+/// std::invalid_argument naming the option, the path and what it is. Creates and replaces nothing.
+void require_output_folder(const std::filesystem::path& path, const std::string& option);
+
 /// Removes the temporary files that atomic writes of killed processes left in `folder`
 /// ("NAME.tmp.PID.N" whose process PID no longer runs); returns how many. Missing folder: 0.
 int remove_stale_temporaries(const std::filesystem::path& folder);

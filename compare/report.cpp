@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/figures.hpp"
 #include "compare/tracer_md.hpp"
@@ -407,9 +409,23 @@ std::vector<ProfileCurve> profile_curves(const CompareResult& result) {
 
 }  // namespace
 
+fs::path report_folder(const fs::path& out) {
+  common::require_output_folder(out, "--out");
+  if (!fs::exists(out)) return out;
+  static const std::set<std::string> entries{"report.md",        "verdict.json",          "exponents.csv",
+                                             "tracer_vs_md.csv", "distribution_fit.json", "figures"};
+  const fs::path folder = fs::canonical(out);
+  for (const auto& entry : fs::directory_iterator(folder))
+    if (entries.count(entry.path().filename().string()) == 0)
+      throw std::invalid_argument("--out = " + out.string() + " holds " + entry.path().filename().string() +
+                                  ", which is not part of a compare report (a report replaces its folder whole: "
+                                  "allowed are a new or empty folder, or a previous report's)");
+  return folder;
+}
+
 std::vector<fs::path> write_report(const CompareResult& result, const ReportConfig& config) {
-  if (config.out.empty()) throw std::invalid_argument("--out: the report directory must not be empty");
-  const fs::path staging = config.out.string() + ".tmp." + std::to_string(::getpid());
+  const fs::path out = report_folder(config.out);
+  const fs::path staging = out.string() + ".tmp." + std::to_string(::getpid());
   fs::remove_all(staging);
   std::vector<fs::path> written;
   try {
@@ -444,11 +460,11 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
     fs::remove_all(staging);
     throw;
   }
-  const fs::path old = config.out.string() + ".old." + std::to_string(::getpid());
-  if (fs::exists(config.out)) fs::rename(config.out, old);
-  fs::rename(staging, config.out);
+  const fs::path old = out.string() + ".old." + std::to_string(::getpid());
+  if (fs::exists(out)) fs::rename(out, old);
+  fs::rename(staging, out);
   fs::remove_all(old);
-  for (const auto& entry : fs::recursive_directory_iterator(config.out))
+  for (const auto& entry : fs::recursive_directory_iterator(out))
     if (entry.is_regular_file()) written.push_back(entry.path());
   return written;
 }

@@ -18,9 +18,16 @@ common::Json verdict_json(const CompareResult& result);
 std::string running_exponents_csv(const CompareResult& result);
 
 struct ReportConfig {
-  std::filesystem::path out;  ///< report directory (replaced atomically if it exists)
+  std::filesystem::path out;  ///< report directory (replaced whole; see report_folder)
   bool figures = true;        ///< run gnuplot (Debian gnuplot-nox) to draw PNG figures
 };
+
+/// The folder a report at `out` replaces, checked before any work: `out` itself if new, else the
+/// folder it is or points to (a symlink stays a link). It must be new, empty or a previous report
+/// (only report.md, verdict.json, exponents.csv, tracer_vs_md.csv, distribution_fit.json, figures/),
+/// so that replacing it whole never removes anything else; otherwise, and for anything but a
+/// folder (common::require_output_folder), std::invalid_argument naming --out.
+std::filesystem::path report_folder(const std::filesystem::path& out);
 
 /// Writes report.md, verdict.json, exponents.csv and (optionally) figures/*.png; returns the
 /// paths written. Throws std::runtime_error if gnuplot is needed but missing or fails.

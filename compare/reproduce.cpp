@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "coldblast/paper_scene.hpp"
+#include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/hydro_reference.hpp"
 #include "compare/report.hpp"
@@ -31,7 +32,9 @@ void ReproduceConfig::validate() const {
   common::require_integer_in_range("--realizations", realizations, 0, 100000000);
   if (hydro_until != 0)
     common::require_in_range("--hydro-until", hydro_until, 20.0, 1e8, common::Bound::closed, common::Bound::closed);
-  if (out.empty()) throw std::invalid_argument("--out: the output directory must not be empty");
+  common::require_output_folder(out, "--out");
+  if (fs::is_directory(out))  // the reports replace these folders whole: checked before the work
+    for (const char* report : {"report-theory", "report-paper", "report-hydro"}) report_folder(out / report);
 }
 
 namespace {

@@ -21,6 +21,7 @@
 
 #include "common/input.hpp"
 #include "common/interrupt.hpp"
+#include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/md_run.hpp"
 #include "compare/report.hpp"
@@ -342,6 +343,7 @@ py::dict estimate_dict(const md::BlastResult& result) {
 py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
                 long long realizations, long long seed, int threads, const std::string& out,
                 const py::object& progress_callback) {
+  if (!out.empty()) common::require_output_folder(out, "--out");
   const compare::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
   compare::MdRunPlan plan = compare::plan_md_run(request);
   md::RunOptions& options = plan.options;
@@ -384,6 +386,7 @@ struct TracerOptions {
 py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
                     long long seed, const TracerOptions& o, const std::string& out,
                     const py::object& progress_callback) {
+  if (!out.empty()) common::require_output_folder(out, "--out");
   if (seed != -1) {
     common::require_integer_in_range("--seed", seed, 0, std::numeric_limits<long long>::max());
     overrides.push_back("seed=" + std::to_string(seed));
@@ -442,6 +445,7 @@ py::object compare_run(const std::string& run_dir, const std::string& against, d
                        int hydro_cells, const std::string& hydro_eos, std::optional<double> hydro_phi,
                        const std::string& hydro_transport, const std::string& md_run, const std::string& out,
                        bool figures, const py::object& progress_callback) {
+  if (!out.empty()) compare::report_folder(out);
   compare::CompareConfig config;
   config.run_dir = run_dir;
   config.against = compare::parse_reference(against);

@@ -63,3 +63,59 @@ expect("... with SIGPIPE ignored" 0 "^1\ncoldblast: error: cannot write standard
        bash -c "trap '' PIPE
 '${BINARY}' theory --d-range 2..1001 --format json | head -c 10 >/dev/null
 echo \${PIPESTATUS[0]}")
+
+# Output folders (--out of compare, md run, tracer, hydro; common::require_output_folder and
+# compare::report_folder): anything but a folder or a new path exits 2 naming --out before any work,
+# and is left as it was; a compare report replaces only a new, empty or previous report's folder, and
+# through a symlink it fills the link's folder while the link stays a link.
+set(fixture ${CMAKE_CURRENT_LIST_DIR}/data/run_T0_wrong)
+file(MAKE_DIRECTORY ${WORK}/folders/user)
+file(WRITE ${WORK}/folders/user/mine.txt "precious\n")
+file(WRITE ${WORK}/folders/file "precious\n")
+file(CREATE_LINK nowhere ${WORK}/folders/dangling SYMBOLIC)
+execute_process(COMMAND mkfifo ${WORK}/folders/fifo)
+set(kinds "fifo=a FIFO" "file=a regular file" "dangling=a symlink to nothing")
+execute_process(COMMAND mknod ${WORK}/folders/device c 1 3 RESULT_VARIABLE no_device ERROR_QUIET)  # root only
+if(no_device EQUAL 0)
+  list(APPEND kinds "device=a character device")
+endif()
+foreach(entry IN LISTS kinds)
+  string(REPLACE "=" ";" pair "${entry}")
+  list(GET pair 0 name)
+  list(GET pair 1 kind)
+  set(path ${WORK}/folders/${name})
+  expect("compare --out ${name}" 2 "--out = ${path} is ${kind}" ${BINARY} compare ${fixture} --no-figures --out ${path})
+  expect("tracer --out ${name}" 2 "--out = ${path} is ${kind}" ${BINARY} tracer --trajectories 4 --out ${path})
+  expect("md run --out ${name}" 2 "--out = ${path} is ${kind}" ${BINARY} md run --set t_max=5 --out ${path})
+  expect("hydro core --out ${name}" 2 "--out = ${path} is ${kind}" ${BINARY} hydro core --until 30 --out ${path})
+  expect("reproduce --out ${name}" 2 "--out = ${path} is ${kind}" ${BINARY} reproduce --out ${path})
+endforeach()
+file(MAKE_DIRECTORY ${WORK}/folders/reproduce/report-paper)
+file(WRITE ${WORK}/folders/reproduce/report-paper/mine.txt "precious\n")
+expect("reproduce into a folder whose report-paper holds other files" 2
+       "--out = ${WORK}/folders/reproduce/report-paper holds mine.txt" ${BINARY} reproduce --out ${WORK}/folders/reproduce)
+expect("compare --out a folder of other files" 2 "--out = ${WORK}/folders/user holds mine.txt, which is not part of a compare report"
+       ${BINARY} compare ${fixture} --no-figures --out ${WORK}/folders/user)
+expect("md run --out under a file" 2 "--out = ${WORK}/folders/file/run cannot be created: ${WORK}/folders/file is a regular file"
+       ${BINARY} md run --set t_max=5 --out ${WORK}/folders/file/run)
+file(READ ${WORK}/folders/file file_text)
+file(READ ${WORK}/folders/user/mine.txt user_text)
+file(GLOB reproduce_entries RELATIVE ${WORK}/folders/reproduce ${WORK}/folders/reproduce/*)
+if(NOT reproduce_entries STREQUAL "report-paper")  # refused before step 1: nothing written
+  message(FATAL_ERROR "reproduce wrote before refusing its folder: ${reproduce_entries}")
+endif()
+execute_process(COMMAND test -p ${WORK}/folders/fifo RESULT_VARIABLE fifo_kept)
+execute_process(COMMAND sh -c "test ${no_device} -ne 0 || test -c '${WORK}/folders/device'" RESULT_VARIABLE device_kept)
+if(NOT file_text STREQUAL "precious\n" OR NOT user_text STREQUAL "precious\n" OR NOT fifo_kept EQUAL 0
+   OR NOT device_kept EQUAL 0 OR NOT IS_SYMLINK ${WORK}/folders/dangling OR EXISTS ${WORK}/folders/nowhere)
+  message(FATAL_ERROR "an output path given to --out was replaced or changed")
+endif()
+file(MAKE_DIRECTORY ${WORK}/folders/empty)
+file(CREATE_LINK empty ${WORK}/folders/report-link SYMBOLIC)
+foreach(round first second)  # the second replaces the first report through the link
+  expect("compare --out a symlink to a folder (${round})" 3 "wrote 3 files to ${WORK}/folders/report-link"
+         ${BINARY} compare ${fixture} --no-figures --out ${WORK}/folders/report-link)
+endforeach()
+if(NOT IS_SYMLINK ${WORK}/folders/report-link OR NOT EXISTS ${WORK}/folders/empty/verdict.json)
+  message(FATAL_ERROR "the report replaced the symlink instead of filling its folder")
+endif()

@@ -132,6 +132,39 @@ TEST_CASE("write_file_atomic refuses folders and sockets, naming the path", "[fa
   fs::remove_all(dir);
 }
 
+TEST_CASE("require_output_folder accepts folders and new paths, refuses the rest and changes nothing", "[fast]") {
+  const fs::path dir = fresh_folder("coldblast_test_output_folder");
+  fs::create_directories(dir / "folder");
+  fs::create_directory_symlink("folder", dir / "link");
+  std::ofstream(dir / "file") << "precious\n";
+  fs::create_symlink("nowhere", dir / "dangling");
+  fs::create_symlink("file", dir / "file_link");
+  REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);
+  REQUIRE_NOTHROW(require_output_folder(dir / "folder", "--out"));
+  REQUIRE_NOTHROW(require_output_folder(dir / "link", "--out"));
+  REQUIRE_NOTHROW(require_output_folder(dir / "new" / "deeper", "--out"));
+  REQUIRE_NOTHROW(require_output_folder("relative-new-folder", "--out"));
+  const auto refused = [&](const fs::path& path, const std::string& message) {
+    REQUIRE_THROWS_AS(require_output_folder(path, "--out"), std::invalid_argument);
+    REQUIRE_THROWS_WITH(require_output_folder(path, "--out"), Catch::StartsWith("--out = " + path.string() + message));
+  };
+  refused(dir / "file", " is a regular file (allowed: a folder or a new path");
+  refused(dir / "fifo", " is a FIFO");
+  refused(dir / "dangling", " is a symlink to nothing");
+  refused(dir / "file_link", " is a symlink to a regular file");
+  refused("/dev/null", " is a character device");
+  refused(dir / "file" / "sub", " cannot be created: " + (dir / "file").string() + " is a regular file, not a folder");
+  refused(dir / "dangling" / "sub", " cannot be created: " + (dir / "dangling").string() + " is a symlink to nothing");
+  REQUIRE_THROWS_WITH(require_output_folder("", "out"), "out: the output folder must not be empty");
+  REQUIRE(slurp(dir / "file") == "precious\n");  // nothing was created or replaced
+  REQUIRE(fs::is_fifo(dir / "fifo"));
+  REQUIRE(fs::is_character_file("/dev/null"));
+  REQUIRE(fs::is_symlink(dir / "dangling"));
+  REQUIRE(entries_in(dir) == 6);
+  REQUIRE(!fs::exists("relative-new-folder"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("provenance_header carries version, commit, command and units", "[fast]") {
   set_command_line(2, std::array<const char*, 2>{"coldblast", "theory"}.data());
   const std::string header = provenance_header({{"seed", "42"}}, "m = 1, k_B = 1");

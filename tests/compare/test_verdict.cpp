@@ -1,5 +1,8 @@
 // Verdicts on synthetic runs whose exponents are known: the exact rationals pass against theory,
 // a wrong exponent fails, the paper reference combines both errors, and bad configs are rejected.
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -200,5 +203,53 @@ TEST_CASE("an observable whose mean reaches zero has an undefined exponent, name
   CHECK(text.find("| u_flow | -3/5 (-0.6000) | -0.6000 | undefined (a mean <= 0)") != std::string::npos);
   CHECK(text.find("nan") == std::string::npos);
   fs::remove_all(out);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a report replaces only a new, empty or previous report's folder, and keeps a symlink", "[fast]") {
+  const fs::path dir = make_run(2);
+  CompareConfig config;
+  config.run_dir = dir;
+  const CompareResult result = run_compare(config);
+  const fs::path root = coldblast::test::unique_temp_path("coldblast_report_folders");
+  fs::create_directories(root / "target");
+  const auto entries = [](const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  };
+  const std::vector<std::string> report{"exponents.csv", "report.md", "verdict.json"};
+
+  // A new folder, then the same again: the previous report is replaced whole, nothing left beside it.
+  CHECK(write_report(result, {root / "new", false}).size() == 3);
+  std::ofstream(root / "new" / "notes.txt");  // not a report's entry: the next write must refuse
+  CHECK_THROWS_WITH(write_report(result, {root / "new", false}), Catch::Contains("holds notes.txt"));
+  fs::remove(root / "new" / "notes.txt");
+  CHECK(write_report(result, {root / "new", false}).size() == 3);
+  CHECK(entries(root / "new") == report);
+
+  // Through a symlink: the link's folder gets the report (twice), the link stays a link.
+  fs::create_directory_symlink("target", root / "link");
+  write_report(result, {root / "link", false});
+  write_report(result, {root / "link", false});
+  CHECK(fs::is_symlink(root / "link"));
+  CHECK(entries(root / "target") == report);
+  CHECK(entries(root) == std::vector<std::string>{"link", "new", "target"});
+
+  // A folder with anything else in it is refused before anything is written: the file survives.
+  fs::create_directories(root / "user");
+  std::ofstream(root / "user" / "mine.txt") << "precious\n";
+  CHECK_THROWS_AS(report_folder(root / "user"), std::invalid_argument);
+  CHECK_THROWS_WITH(write_report(result, {root / "user", false}),
+                    "--out = " + (root / "user").string() +
+                        " holds mine.txt, which is not part of a compare report (a report replaces its folder whole: "
+                        "allowed are a new or empty folder, or a previous report's)");
+  CHECK(entries(root / "user") == std::vector<std::string>{"mine.txt"});
+  // Not a folder at all: refused, left as it is.
+  REQUIRE(::mkfifo((root / "fifo").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(write_report(result, {root / "fifo", false}), Catch::Contains("is a FIFO"));
+  CHECK(fs::is_fifo(root / "fifo"));
+  fs::remove_all(root);
   fs::remove_all(dir);
 }

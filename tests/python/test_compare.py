@@ -44,3 +44,25 @@ def test_not_a_run(tmp_path):
     with pytest.raises(ValueError) as error:
         coldblast.compare(tmp_path)
     assert str(error.value) == cli_error("compare", tmp_path)
+
+
+@pytest.mark.parametrize("what", ["file", "fifo", "folder of other files"])
+def test_out_that_is_not_a_report_folder_is_the_cli_error_and_stays(tmp_path, what):
+    path = tmp_path / "out"
+    if what == "file":
+        path.write_text("precious\n")
+    elif what == "fifo":
+        os.mkfifo(path)
+    else:
+        path.mkdir()
+        (path / "mine.txt").write_text("precious\n")
+    with pytest.raises(ValueError) as error:
+        coldblast.compare(FIXTURE, out=path, figures=False)
+    assert str(error.value) == cli_error("compare", FIXTURE, "--no-figures", "--out", path)
+    assert "--out = " in str(error.value)
+    if what == "file":
+        assert path.read_text() == "precious\n"
+    elif what == "fifo":
+        assert path.is_fifo()
+    else:
+        assert [p.name for p in path.iterdir()] == ["mine.txt"]

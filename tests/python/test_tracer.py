@@ -74,3 +74,16 @@ def test_compare_md_run_missing(tmp_path):
     with pytest.raises(ValueError) as error:
         coldblast.compare(tmp_path / "tracer", md_run="/nonexistent", figures=False)
     assert str(error.value) == cli_error("compare", tmp_path / "tracer", "--md-run", "/nonexistent", "--no-figures")
+
+
+def test_out_that_is_a_file_is_the_cli_error(tmp_path):
+    path = tmp_path / "file"
+    path.write_text("precious\n")
+    with pytest.raises(ValueError) as error:
+        coldblast.tracer.run(background="tvns", trajectories=4, out=path, progress=False, **TINY)
+    assert str(error.value) == cli_error("tracer", "--background", "tvns", "--trajectories", 4, "--out", path)
+    assert str(error.value).startswith(f"--out = {path} is a regular file")
+    with pytest.raises(ValueError) as error:
+        coldblast.md.run(realizations=1, out=path, progress=False, **TINY)
+    assert str(error.value) == cli_error("md", "run", "--set", "t_max=50", "--out", path)
+    assert path.read_text() == "precious\n"
