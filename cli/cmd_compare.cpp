@@ -112,8 +112,8 @@ compare::HydroModelOptions hydro_model(const CompareOptions& options) {
   compare::HydroModelOptions model;
   if (!options.hydro_config.empty()) {
     // The [hydro] keys first; a flag given as well replaces its key (and its name in messages).
-    const hydro::HydroModelKeys keys =
-        hydro::read_hydro_model_keys(common::read_text(options.hydro_config, "--hydro-config"), options.hydro_config);
+    const hydro::HydroModelKeys keys = hydro::read_hydro_model_keys(
+        common::read_text(options.hydro_config, "--hydro-config", common::text_size_limit), options.hydro_config);
     if (keys.eos) model.eos = hydro::eos_from_string(*keys.eos, model.eos_name = "hydro.eos");
     if (keys.phi) model.phi = *keys.phi, model.phi_name = "hydro.phi";
     if (keys.transport)

@@ -251,8 +251,8 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
 /// Reads --config's [hydro] keys, minus those whose flag was given (flags win).
 void read_config_keys(const CLI::App& command, HydroOptions& options) {
   if (options.config_file.empty()) return;
-  options.file_keys =
-      hydro::read_hydro_model_keys(common::read_text(options.config_file, "--config"), options.config_file);
+  options.file_keys = hydro::read_hydro_model_keys(
+      common::read_text(options.config_file, "--config", common::text_size_limit), options.config_file);
   if (command.count("--eos")) options.file_keys.eos.reset();
   if (command.count("--phi")) options.file_keys.phi.reset();
   if (command.get_option_no_throw("--transport") && command.count("--transport")) options.file_keys.transport.reset();

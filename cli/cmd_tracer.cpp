@@ -40,7 +40,8 @@ void run(TracerOptions& o) {
     common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
     overrides.push_back("seed=" + std::to_string(o.seed));
   }
-  const std::string text = o.scene_file.empty() ? md::default_scene_toml() : common::read_text(o.scene_file, "SCENE");
+  const std::string text = o.scene_file.empty() ? md::default_scene_toml()
+                                                : common::read_text(o.scene_file, "SCENE", common::text_size_limit);
   kinetic::TracerConfig config = o.config;
   config.scene = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
   config.phi = o.phi;

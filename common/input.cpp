@@ -7,14 +7,32 @@
 
 namespace coldblast::common {
 
-std::string read_text(const std::filesystem::path& path, const std::string& what) {
+namespace {
+/// "16 MiB" for whole mebibytes, else "N bytes".
+std::string size_text(std::size_t bytes) {
+  if (bytes > 0 && bytes % (std::size_t{1} << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+  return std::to_string(bytes) + " bytes";
+}
+}  // namespace
+
+std::string read_text(const std::filesystem::path& path, const std::string& what, std::size_t max_bytes) {
+  const auto refuse = [&](const std::string& why) {
+    return std::invalid_argument(what.empty() ? "cannot read " + path.string() + ": it " + why
+                                              : what + " = " + path.string() + " " + why);
+  };
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw refuse("is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw std::invalid_argument(what.empty() ? "cannot read " + path.string()
-                                             : what + " = " + path.string() + " cannot be read");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  if (!in) throw what.empty() ? std::invalid_argument("cannot read " + path.string()) : refuse("cannot be read");
+  // Chunked, so that an endless device (/dev/zero) stops at the limit instead of filling the memory.
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_bytes) throw refuse("is longer than " + size_text(max_bytes) + ", the limit for this input");
+  }
+  if (in.bad()) throw refuse("cannot be read");
+  return text;
 }
 
 std::vector<std::string> split_fields(const std::string& line, char separator) {

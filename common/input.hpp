@@ -1,15 +1,24 @@
 #pragma once
 // Input plumbing shared by every reader: whole-file reads and comma-separated tables whose errors
 // name the file and the line ("blocks.csv line 7: ..."), the mirror of common/output.*.
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace coldblast::common {
 
-/// The bytes of `path`. Throws std::invalid_argument "<what> = <path> cannot be read", what naming
-/// the parameter that gave the path (e.g. "SCENE", "--resume"), or "cannot read <path>" without it.
-std::string read_text(const std::filesystem::path& path, const std::string& what = "");
+/// Largest input read_text accepts by default (run data: blocks.csv, snapshots; 1 GiB).
+inline constexpr std::size_t data_size_limit = std::size_t{1} << 30;
+/// Largest scene or configuration file (a short TOML text; 16 MiB), so that a device such as
+/// /dev/zero given as SCENE fails at once instead of filling the memory.
+inline constexpr std::size_t text_size_limit = std::size_t{1} << 24;
+
+/// The bytes of `path`. Throws std::invalid_argument "<what> = <path> cannot be read" (or "is a
+/// folder, not a file", or "is longer than <max_bytes> bytes"), what naming the parameter that gave
+/// the path (e.g. "SCENE", "--resume"); without it the message starts "cannot read <path>".
+std::string read_text(const std::filesystem::path& path, const std::string& what = "",
+                      std::size_t max_bytes = data_size_limit);
 
 /// Splits one line at `separator`; a trailing separator yields a trailing empty field.
 std::vector<std::string> split_fields(const std::string& line, char separator = ',');

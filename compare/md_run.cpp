@@ -22,7 +22,7 @@ MdRunPlan plan_md_run(const MdRunRequest& request) {
   common::require_integer_in_range("--threads", request.threads, 1, 1024);
   std::string text, source;
   if (!request.scene_file.empty()) {
-    text = common::read_text(request.scene_file, "SCENE");
+    text = common::read_text(request.scene_file, "SCENE", common::text_size_limit);
     source = request.scene_file;
   } else if (!request.scene_text.empty()) {
     text = request.scene_text;

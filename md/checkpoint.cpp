@@ -141,7 +141,8 @@ Checkpoint load_checkpoint(const fs::path& directory, const ResolvedScene& scene
   if (!fs::exists(scene_path))
     throw std::invalid_argument("--resume: no checkpoint in " + directory.string() +
                                 " (scene.toml missing); run without --resume to start");
-  const std::string saved = common::read_text(scene_path, "--resume"), current = scene.config.to_toml();
+  const std::string saved = common::read_text(scene_path, "--resume", common::text_size_limit),
+                    current = scene.config.to_toml();
   if (saved != current) {
     const auto a = toml_entries(saved), b = toml_entries(current);
     std::string key = "(formatting)", was = "", now = "";

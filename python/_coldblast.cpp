@@ -391,7 +391,7 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
     common::require_integer_in_range("--seed", seed, 0, std::numeric_limits<long long>::max());
     overrides.push_back("seed=" + std::to_string(seed));
   }
-  const std::string text = !scene_file.empty() ? common::read_text(scene_file, "SCENE")
+  const std::string text = !scene_file.empty() ? common::read_text(scene_file, "SCENE", common::text_size_limit)
                                                : (scene_text.empty() ? md::default_scene_toml() : scene_text);
   kinetic::TracerConfig config;
   config.scene = md::parse_scene(text, overrides, scene_file.empty() ? "default scene" : scene_file);

@@ -24,6 +24,24 @@ TEST_CASE("read_text returns the bytes written and names the path it cannot read
   fs::remove_all(dir);
 }
 
+TEST_CASE("read_text refuses folders and stops an endless device at its size limit", "[fast]") {
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_input_limits");
+  fs::remove_all(dir);
+  const std::string content(200000, 'x');  // several chunks of the reading loop
+  write_file_atomic(dir / "big.toml", content);
+  REQUIRE(read_text(dir / "big.toml", "SCENE", content.size()) == content);  // exactly at the limit
+  REQUIRE_THROWS_WITH(
+      read_text(dir / "big.toml", "SCENE", content.size() - 1),
+      "SCENE = " + (dir / "big.toml").string() + " is longer than 199999 bytes, the limit for this input");
+  REQUIRE_THROWS_AS(read_text(dir, "SCENE"), std::invalid_argument);
+  REQUIRE_THROWS_WITH(read_text(dir, "SCENE"), "SCENE = " + dir.string() + " is a folder, not a file");
+  REQUIRE_THROWS_WITH(read_text(dir), "cannot read " + dir.string() + ": it is a folder, not a file");
+  REQUIRE_THROWS_WITH(read_text("/dev/zero", "--config", text_size_limit),
+                      "--config = /dev/zero is longer than 16 MiB, the limit for this input");
+  REQUIRE(read_text("/dev/null", "SCENE").empty());
+  fs::remove_all(dir);
+}
+
 TEST_CASE("split_fields keeps empty fields, including a trailing one", "[fast]") {
   REQUIRE(split_fields("a,,b") == std::vector<std::string>{"a", "", "b"});
   REQUIRE(split_fields("a,b,") == std::vector<std::string>{"a", "b", ""});
