@@ -148,10 +148,13 @@ void merge_md(const MdMergeOptions& o) {
   common::require_output_folder(o.out, "--out");
   std::vector<std::filesystem::path> inputs(o.inputs.begin(), o.inputs.end());
   if (kinetic::is_tracer_run(inputs.front())) {  // tracer shards: also moments.csv and the tracer's keys
-    write_tracer_run(kinetic::merge_tracer_outputs(inputs), o.out, o.format);
+    const kinetic::TracerResult result = kinetic::merge_tracer_outputs(inputs);
+    if (const std::string note = md::partial_merge_note(result.ensemble); !note.empty()) std::cerr << note << '\n';
+    write_tracer_run(result, o.out, o.format);
     return;
   }
   const md::BlastResult result = md::merge_blast_outputs(inputs);
+  if (const std::string note = md::partial_merge_note(result); !note.empty()) std::cerr << note << '\n';
   md::write_blast_outputs(result, o.out);
   print_summary(result, o.out, o.format);
 }

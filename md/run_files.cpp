@@ -366,6 +366,25 @@ MergedSummary read_merged_summary(const std::filesystem::path& path) {
 }
 }  // namespace
 
+std::string partial_merge_note(const BlastResult& merged) {
+  const long long expected = merged.scene.config.realizations, got = merged.realizations();
+  if (got >= expected) return "";
+  const long long block_size = merged.scene.config.block_size;
+  const long long blocks = (expected + block_size - 1) / block_size;
+  std::string missing;
+  int listed = 0;
+  for (long long b = 0; b < blocks; ++b) {
+    if (merged.blocks.count(b)) continue;
+    if (listed++ == 8) {
+      missing += ", ...";
+      break;
+    }
+    missing += (missing.empty() ? "" : ", ") + std::to_string(b);
+  }
+  return "md merge: " + std::to_string(got) + " of the scene's " + std::to_string(expected) + " realizations (blocks " +
+         missing + " missing): a partial ensemble";
+}
+
 BlastResult merge_blast_outputs(const std::vector<fs::path>& directories) {
   if (directories.empty()) throw std::invalid_argument("md merge: no input directories");
   BlastResult merged;

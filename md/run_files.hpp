@@ -70,6 +70,11 @@ struct ObservableEstimate {
   long long count;
 };
 
+/// Empty when `merged` holds every block of its scene; otherwise a one-line note for stderr, e.g.
+/// "md merge: 2 of the scene's 4 realizations (blocks 1, 3 missing): a partial ensemble", so that a
+/// merge of some shards is not mistaken for the whole run (md merge accepts it: a progress check).
+std::string partial_merge_note(const BlastResult& merged);
+
 /// The ensemble estimates (mean, standard error) of the scalar observables, in output order, with
 /// the catalogue's transform (theory/observables.hpp; Eq. (38)'s square root by the delta method).
 std::vector<ObservableEstimate> estimate_observables(const BlastResult& result);

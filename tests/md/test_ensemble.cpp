@@ -144,6 +144,13 @@ TEST_CASE("shards merged equal the unsharded run", "[slow]") {
   }
   CHECK(data_lines(root / "all" / "observables.csv").size() > 100);
   CHECK_THROWS_WITH(merge_blast_outputs({root / "s0", root / "s0"}), Catch::Contains("appears twice"));
+  // One shard alone merges (a progress check), with a note naming what is missing; both: none.
+  CHECK(partial_merge_note(merged).empty());
+  const BlastResult half = merge_blast_outputs({root / "s1"});
+  REQUIRE((scene.realizations == 7 && scene.block_size == 2));  // blocks 0..3; shard 1/2 ran 1 and 3
+  CHECK(half.realizations() == 3);
+  CHECK(partial_merge_note(half) ==
+        "md merge: 3 of the scene's 7 realizations (blocks 0, 2 missing): a partial ensemble");
   fs::remove_all(root);
 }
 
