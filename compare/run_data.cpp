@@ -104,6 +104,11 @@ void truncate_run(RunData& run, double until) {
   }
 }
 
+bool is_tracer_run(const RunData& run) {
+  const auto engine = run.summary.find("engine");
+  return engine != run.summary.end() && engine->is_string() && engine->get<std::string>().rfind("tracer", 0) == 0;
+}
+
 RunData read_run(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory))
     throw std::invalid_argument("RUN_DIR = " + directory.string() + " is not a directory");

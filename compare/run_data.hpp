@@ -45,6 +45,10 @@ struct RunData {
   std::map<std::string, BlockSeries> series;  ///< keyed by observable name
 };
 
+/// Whether the run was written by `coldblast tracer` (summary.json's "engine" starts with "tracer",
+/// the key kinetic/tracer.cpp writes; MD runs have no "engine").
+bool is_tracer_run(const RunData& run);
+
 /// Reads blocks.csv and summary.json from `directory`; throws std::invalid_argument naming the
 /// file (and line) when the directory, a file or a field is missing or malformed.
 RunData read_run(const std::filesystem::path& directory);

@@ -249,12 +249,18 @@ CompareResult run_compare(const CompareConfig& config, const ReferenceExponents&
     result.observables.push_back(std::move(v));
   }
   if (!config.md_run.empty()) {
+    if (!is_tracer_run(result.run))
+      throw std::invalid_argument("--md-run compares a tracer run (coldblast tracer) with an MD run, but RUN_DIR = " +
+                                  result.run.directory.string() + " is an MD run");
     RunData md;
     try {
       md = read_run(config.md_run);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string("--md-run: ") + e.what());
     }
+    if (is_tracer_run(md))
+      throw std::invalid_argument("--md-run = " + config.md_run.string() +
+                                  " is a tracer run; it must be an MD run (coldblast md run)");
     if (config.until > 0) truncate_run(md, config.until);
     result.tracer_md = compare_tracer_with_md(result.run, md);
   }
