@@ -2,6 +2,7 @@
 // BlastConfig and calls md::run_blast; `md merge` combines shard directories exactly; `md
 // equilibrium` runs periodic hard spheres (md::run_equilibrium). Output formats: docs/md-output.md.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -80,12 +81,25 @@ void print_summary(const md::BlastResult& result, const std::string& out, Format
               static_cast<unsigned long long>(result.collisions()), result.wall_seconds,
               summary["collisions_per_second"].get<double>());
   std::printf("max relative energy error %.2g; output in %s\n", result.energy_error_max(), out.c_str());
-  const auto rows = md::estimate_observables(result);
-  const double t_last = rows.empty() ? 0.0 : rows.back().t;
-  for (const auto& row : rows)
-    if (row.t == t_last)
-      std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
+  print_final_estimates(result);
 }
+
+}  // namespace
+
+void print_final_estimates(const md::BlastResult& ensemble) {
+  const auto rows = md::estimate_observables(ensemble);
+  const double t_last = rows.empty() ? 0.0 : rows.back().t;
+  for (const auto& row : rows) {
+    if (row.t != t_last) continue;
+    if (std::isfinite(row.stderr_))
+      std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
+    else  // one realization, or a flow below its noise (u_flow's mean <= 0; docs/md-output.md)
+      std::printf("  t = %-10g %-6s %14.6g (no error: %s)\n", row.t, row.observable.c_str(), row.mean,
+                  row.count < 2 ? "one realization" : "undefined at a zero mean");
+  }
+}
+
+namespace {
 
 // The ensemble (over MPI ranks when built with MPI); a SIGINT/SIGTERM stop says how to resume.
 md::BlastResult run_ensemble(const md::BlastConfig& config, const md::RunOptions& options, const std::string& out) {

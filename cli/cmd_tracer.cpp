@@ -81,10 +81,7 @@ void write_tracer_run(const kinetic::TracerResult& result, const std::string& ou
               result.collision_rate(), result.collision_rate_error(), result.chi, result.rejection_rate());
   std::printf("  impurity temperature at t_max %.6g ± %.2g; output in %s\n", result.temperature_final(),
               result.temperature_final_error(), out.c_str());
-  const auto rows = md::estimate_observables(result.ensemble);
-  for (const auto& row : rows)
-    if (row.t == rows.back().t)
-      std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
+  print_final_estimates(result.ensemble);
 }
 
 void add_tracer_command(CLI::App& app) {

@@ -6,6 +6,7 @@
 
 #include "common/output.hpp"
 #include "kinetic/tracer.hpp"
+#include "md/run_files.hpp"
 
 namespace coldblast::cli {
 
@@ -38,6 +39,10 @@ struct ExitStatus {
 
 /// Prints a JSON document to stdout (2-space indentation, trailing newline).
 void print_json(const common::Json& document);
+
+/// Prints the last recorded time's estimates of an ensemble (md run, md merge, tracer): one line
+/// per observable, "mean ± error", or "mean (no error: one realization)" when there is none.
+void print_final_estimates(const md::BlastResult& ensemble);
 
 /// Writes a tracer run directory and prints its summary (`coldblast tracer`, and `md merge` of
 /// tracer shards); defined in cmd_tracer.cpp.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -320,15 +321,24 @@ ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& am
   // blast that has not reached Eq. (1) by t_max (small E or t_max, a dilute gas, a light or lone
   // impurity) needs more: the region is never smaller than the impurities' neighbourhood
   // (minimum_region_radius) plus where they can get in their early phase (early_reach_bound).
-  s.region_radius =
-      std::max(c.box_margin * s.shock_radius_at_t_max,
-               minimum_region_radius(c) + early_reach_bound(c, s.impurity_radius, s.shock_radius_at_t_max)) +
-      2.0 * contact + 2.0 * std::max(contact, c.cell_width);
+  const double shock_region = c.box_margin * s.shock_radius_at_t_max;
+  const double impurity_region =
+      minimum_region_radius(c) + early_reach_bound(c, s.impurity_radius, s.shock_radius_at_t_max);
+  s.region_radius = std::max(shock_region, impurity_region) + 2.0 * contact + 2.0 * std::max(contact, c.cell_width);
   s.guard_radius = s.region_radius - 2.0 * contact;
   const double count = c.n * theory::unit_ball_volume(c.d) * std::pow(s.region_radius, c.d);
-  if (count > 1.5e9)
-    throw std::invalid_argument("the blast region holds " + format_number(count) +
-                                " particles (more than 1.5e9): lower t_max or E");
+  if (count > 1.5e9) {
+    std::ostringstream message;
+    message << "the blast region holds " << std::setprecision(3) << count << " particles (more than 1.5e9): ";
+    if (impurity_region > shock_region)  // a light or lone impurity outruns the shock early on
+      message << "its radius " << std::setprecision(4) << s.region_radius
+              << " is set by how far the impurities can get before the blast forms, not by the shock (R = "
+              << s.shock_radius_at_t_max << "); raise impurities.mass (= " << c.impurities.mass
+              << "), or lower t_max or E";
+    else
+      message << "lower t_max or E";
+    throw std::invalid_argument(message.str());
+  }
   s.particle_count = static_cast<std::size_t>(std::llround(count));
   require_integer_in_range("impurities.count", c.impurities.count, 1, static_cast<long long>(s.particle_count),
                            " (at most the " + std::to_string(s.particle_count) + " particles of the region)");
