@@ -138,9 +138,14 @@ Checkpoint load_checkpoint(const fs::path& directory, const ResolvedScene& scene
   common::remove_stale_temporaries(directory);  // writes of a killed run
   common::remove_stale_temporaries(directory / "realization0");
   const fs::path scene_path = directory / "scene.toml";
-  if (!fs::exists(scene_path))
-    throw std::invalid_argument("--resume: no checkpoint in " + directory.string() +
-                                " (scene.toml missing); run without --resume to start");
+  if (!fs::exists(scene_path)) {
+    // The checkpoint is removed once a run's outputs are written: a finished run has nothing left.
+    const bool finished = fs::exists(directory.parent_path() / "summary.json");
+    throw std::invalid_argument(
+        "--resume: no checkpoint in " + directory.string() + " (scene.toml missing); " +
+        (finished ? directory.parent_path().string() + " holds a finished run (summary.json): nothing to resume"
+                  : std::string("run without --resume to start")));
+  }
   const std::string saved = common::read_text(scene_path, "--resume", common::text_size_limit),
                     current = scene.config.to_toml();
   if (saved != current) {
