@@ -32,10 +32,7 @@ struct TracerOptions {
 
 void run(TracerOptions& o) {
   common::require_output_folder(o.out, "--out");
-  // The tracer records no particle snapshots: a scene's snapshot_times (an md key, which must lie
-  // within t_max) would otherwise refuse a shorter --set t_max; the user's own --set still applies.
-  std::vector<std::string> overrides{"snapshot_times=[]"};
-  overrides.insert(overrides.end(), o.set.begin(), o.set.end());
+  std::vector<std::string> overrides = o.set;
   if (o.seed != -1) {
     common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
     overrides.push_back("seed=" + std::to_string(o.seed));
@@ -43,7 +40,7 @@ void run(TracerOptions& o) {
   const std::string text = o.scene_file.empty() ? md::default_scene_toml()
                                                 : common::read_text(o.scene_file, "SCENE", common::text_size_limit);
   kinetic::TracerConfig config = o.config;
-  config.scene = md::parse_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
+  config.scene = kinetic::parse_tracer_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
   config.phi = o.phi;
   std::tie(config.shard_index, config.shard_count) = md::parse_shard(o.shard);
   const auto progress = [](long long done, long long total) {

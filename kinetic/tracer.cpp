@@ -217,6 +217,13 @@ double TracerConfig::resolved_start_time() const {
   return scene.t_min;
 }
 
+md::BlastConfig parse_tracer_scene(const std::string& toml_text, const std::vector<std::string>& overrides,
+                                   const std::string& source) {
+  std::vector<std::string> all{"snapshot_times=[]"};
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  return md::parse_scene(toml_text, all, source);
+}
+
 std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description) {
   const md::BlastConfig& c = config.scene;
   ContactModel contact{c.d, c.a, c.impurities.radius > 0.0 ? c.impurities.radius : c.a, config.transport == "enskog"};

@@ -77,6 +77,13 @@ struct TracerResult {
   double rejection_rate() const;
 };
 
+/// The scene of a tracer run: md::parse_scene of `toml_text` with `overrides`, except that the
+/// scene's snapshot_times (particle snapshots, an md key that must lie within t_max) are dropped
+/// first: the tracer records none, and they would refuse a shorter t_max. An override of them
+/// still applies (and is checked).
+md::BlastConfig parse_tracer_scene(const std::string& toml_text, const std::vector<std::string>& overrides,
+                                   const std::string& source);
+
 /// The background of a config (built once per run; `ns` integrates the Navier–Stokes blast).
 std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description = nullptr);
 

@@ -394,7 +394,7 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   const std::string text = !scene_file.empty() ? common::read_text(scene_file, "SCENE", common::text_size_limit)
                                                : (scene_text.empty() ? md::default_scene_toml() : scene_text);
   kinetic::TracerConfig config;
-  config.scene = md::parse_scene(text, overrides, scene_file.empty() ? "default scene" : scene_file);
+  config.scene = kinetic::parse_tracer_scene(text, overrides, scene_file.empty() ? "default scene" : scene_file);
   config.background = o.background;
   config.transport = o.transport;
   config.start = o.start;

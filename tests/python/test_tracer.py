@@ -1,11 +1,12 @@
 """coldblast.tracer.run against `coldblast tracer` (same files, same numbers), the exact equilibrium
 collision rate, and coldblast.compare(..., md_run=...) against `coldblast compare --md-run`."""
 import math
+import os
 
 import pytest
 
 import coldblast
-from conftest import cli_error, cli_json
+from conftest import REPO, cli_error, cli_json
 
 TINY = dict(t_max=50)  # the embedded 2D scene, cut at t = 50
 
@@ -87,3 +88,11 @@ def test_out_that_is_a_file_is_the_cli_error(tmp_path):
         coldblast.md.run(realizations=1, out=path, progress=False, **TINY)
     assert str(error.value) == cli_error("md", "run", "--set", "t_max=50", "--out", path)
     assert path.read_text() == "precious\n"
+
+
+def test_scene_snapshot_times_do_not_refuse_a_shorter_t_max():
+    # scenes/paper-2d.toml lists md snapshot times up to 2000; the tracer records none.
+    scene = os.path.join(REPO, "scenes", "paper-2d.toml")
+    result = coldblast.tracer.run(scene, background="tvns", trajectories=8, progress=False, t_max=1000)
+    assert result.estimates["R_imp"]["t"][-1] <= 1000.0
+    assert "snapshot_times = []" in result.summary["scene_toml"]
