@@ -29,6 +29,8 @@ struct CompareOptions {
   std::string hydro_config;  // --hydro-config FILE: its [hydro] table (flags win)
   double hydro_phi = 0;
   CLI::Option* hydro_phi_option = nullptr;
+  double allowance = 0;
+  CLI::Option* allowance_option = nullptr;
 };
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -131,6 +133,9 @@ void run(CompareOptions& options) {
   options.config.run_dir = options.run_dir;
   options.config.against = compare::parse_reference(options.against);
   options.config.observables = split_list(options.observables);
+  if (options.config.observables.empty() && !options.observables.empty())
+    throw std::invalid_argument("--observables = '" + options.observables + "' names no observable");
+  if (options.allowance_option->count() > 0) options.config.allowance = options.allowance;
   options.config.hydro_model = hydro_model(options);
   const compare::CompareResult result = compare::run_compare(options.config);
   if (!options.out.empty()) {
@@ -158,9 +163,10 @@ void add_compare_command(CLI::App& app) {
       ->add_option("--sigma", options->config.sigma,
                    "k: pass when |alpha_S - alpha_ref| <= k*error (+ allowance); (0, 10]")
       ->capture_default_str();
-  command->add_option("--allowance", options->config.allowance,
-                      "Finite-time allowance on |alpha_S - alpha_ref| for theory/hydro, [0, 1]; "
-                      "default 0.10 (theory), 0.05 (hydro), 0 (paper)");
+  options->allowance_option =
+      command->add_option("--allowance", options->allowance,
+                          "Finite-time allowance on |alpha_S - alpha_ref| for theory/hydro, [0, 1]; "
+                          "default 0.10 (theory), 0.05 (hydro), 0 (paper)");
   command
       ->add_option("--window-decades", options->config.window_decades,
                    "Window fit over the last W decades of recorded time, (0, 6]")

@@ -29,7 +29,10 @@ ReproduceScale parse_scale(const std::string& text) {
 
 void ReproduceConfig::validate() const {
   common::require_integer_in_range("--threads", threads, 0, 1024);
-  common::require_integer_in_range("--realizations", realizations, 0, 100000000);
+  common::require_integer_in_range("--realizations", realizations, 0, 100000000,
+                                   " (0 = the scale's default; at least 2, for error bars)");
+  if (realizations == 1)
+    throw std::invalid_argument("--realizations = 1: an error bar needs at least 2 (0 = the scale's default)");
   if (hydro_until != 0)
     common::require_in_range("--hydro-until", hydro_until, 20.0, 1e8, common::Bound::closed, common::Bound::closed);
   common::require_output_folder(out, "--out");

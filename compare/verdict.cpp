@@ -48,7 +48,7 @@ void CompareConfig::validate() const {
   using common::Bound;
   using common::require_in_range;
   require_in_range("--sigma", sigma, 0.0, 10.0, Bound::open, Bound::closed);
-  if (allowance >= 0) require_in_range("--allowance", allowance, 0.0, 1.0, Bound::closed, Bound::closed);
+  if (allowance) require_in_range("--allowance", *allowance, 0.0, 1.0, Bound::closed, Bound::closed);
   require_in_range("--window-decades", window_decades, 0.0, 6.0, Bound::open, Bound::closed);
   if (until != 0.0 && !(until > 0.0 && std::isfinite(until)))
     throw std::invalid_argument("--until = " + std::to_string(until) +
@@ -72,7 +72,7 @@ void CompareConfig::validate() const {
 }
 
 double CompareConfig::effective_allowance() const {
-  if (allowance >= 0) return allowance;
+  if (allowance) return *allowance;
   switch (against) {
     case Reference::theory:
       return 0.10;

@@ -41,9 +41,9 @@ struct CompareConfig {
   std::filesystem::path run_dir;  ///< an `md run` output directory
   Reference against = Reference::theory;
   double sigma = 2.0;  ///< k: pass when |dev| <= k * error (+ allowance), k in (0, 10]
-  /// Finite-time allowance added to k * error for theory and hydro, in [0, 1]; negative selects
-  /// the documented default of the reference (theory 0.10, hydro 0.05, paper 0: docs/compare.md).
-  double allowance = -1.0;
+  /// Finite-time allowance added to k * error for theory and hydro, in [0, 1]; none selects the
+  /// documented default of the reference (theory 0.10, hydro 0.05, paper 0: docs/compare.md).
+  std::optional<double> allowance;
   double window_decades = 0.5;  ///< window fit over [t_max 10^-w, t_max], w in (0, 6]
   /// Compare as of this time: recorded times > until are ignored (0: use every recorded time). It
   /// must lie in [second recorded time, last recorded time] of the run.
@@ -56,7 +56,7 @@ struct CompareConfig {
   /// the MD (compare/tracer_md.hpp), as of `until` as well.
   std::filesystem::path md_run;
   void validate() const;
-  /// The allowance in force: `allowance` if >= 0, else the reference's default.
+  /// The allowance in force: `allowance` if given, else the reference's default.
   double effective_allowance() const;
 };
 

@@ -440,11 +440,11 @@ py::object read_run_summary(const std::string& directory) {
   return json_to_python(compare::read_run(directory).summary);
 }
 
-py::object compare_run(const std::string& run_dir, const std::string& against, double sigma, double allowance,
-                       double window_decades, double until, const std::vector<std::string>& observables,
-                       int hydro_cells, const std::string& hydro_eos, std::optional<double> hydro_phi,
-                       const std::string& hydro_transport, const std::string& md_run, const std::string& out,
-                       bool figures, const py::object& progress_callback) {
+py::object compare_run(const std::string& run_dir, const std::string& against, double sigma,
+                       std::optional<double> allowance, double window_decades, double until,
+                       const std::vector<std::string>& observables, int hydro_cells, const std::string& hydro_eos,
+                       std::optional<double> hydro_phi, const std::string& hydro_transport, const std::string& md_run,
+                       const std::string& out, bool figures, const py::object& progress_callback) {
   if (!out.empty()) compare::report_folder(out);
   compare::CompareConfig config;
   config.run_dir = run_dir;

@@ -45,7 +45,7 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
     Raises ValueError with the CLI's message for bad input or a directory that is not a run.
     """
     return _coldblast.compare(os.fspath(run_dir), str(against), float(sigma),
-                              -1.0 if allowance is None else float(allowance), float(window_decades),
+                              None if allowance is None else float(allowance), float(window_decades),
                               0.0 if until is None else float(until), list(observables or []), int(hydro_cells),
                               hydro_eos or "", None if hydro_phi is None else float(hydro_phi), hydro_transport or "",
                               "" if md_run is None else os.fspath(md_run), "" if out is None else os.fspath(out),

@@ -33,6 +33,7 @@ def test_subset_and_report(tmp_path):
     ({"observables": ["speed"]}, ["--observables", "speed"]),
     ({"against": "hydro"}, ["--against", "hydro"]),  # the fixture has no lambda in summary.json
     ({"hydro_eos": "vdw"}, ["--hydro-eos", "vdw"]),
+    ({"allowance": -1}, ["--allowance", -1]),  # not the "default" sentinel it once was
 ])
 def test_bad_input_is_the_cli_error(kwargs, flags):
     with pytest.raises(ValueError) as error:
