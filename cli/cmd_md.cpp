@@ -30,8 +30,10 @@ struct MdRunOptions {
   std::string scene_file;
   std::vector<std::string> set;
   long long realizations = 0;
+  CLI::Option* realizations_option = nullptr;  // given or not: no value means "the scene's"
   int threads = 1;
-  long long seed = -1;
+  long long seed = 0;
+  CLI::Option* seed_option = nullptr;
   std::string out = "md-output";
   std::string shard = "0/1";
   std::string resume;      // --resume DIR: continue the checkpoint in DIR/checkpoint
@@ -121,8 +123,8 @@ void run_md(const MdRunOptions& o) {
   compare::MdRunRequest request;
   request.scene_file = o.scene_file;
   request.overrides = o.set;
-  request.realizations = o.realizations;
-  request.seed = o.seed;
+  if (o.realizations_option->count() > 0) request.realizations = o.realizations;
+  if (o.seed_option->count() > 0) request.seed = o.seed;
   request.threads = o.threads;
   const auto [shard_index, shard_count] = md::parse_shard(o.shard);
   compare::MdRunPlan plan = compare::plan_md_run(request);
@@ -234,10 +236,11 @@ void add_md_command(CLI::App& app) {
   run_command->add_option("SCENE", run->scene_file, "Scene file (TOML); keys in docs/md-output.md");
   run_command->add_option("--set", run->set,
                           "Override a scene key: key=value (repeatable; e.g. --set E=20 --set impurities.count=2)");
-  run_command->add_option("--realizations", run->realizations, "Number of realizations (overrides the scene)");
+  run->realizations_option =
+      run_command->add_option("--realizations", run->realizations, "Number of realizations (overrides the scene)");
   run_command->add_option("--threads", run->threads, "Worker threads (results are identical for any count)")
       ->capture_default_str();
-  run_command->add_option("--seed", run->seed, "Master seed (overrides the scene; >= 0)");
+  run->seed_option = run_command->add_option("--seed", run->seed, "Master seed (overrides the scene; >= 0)");
   CLI::Option* out_option =
       run_command
           ->add_option("--out", run->out,

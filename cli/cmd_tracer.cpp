@@ -23,7 +23,8 @@ struct TracerOptions {
   std::string scene_file;
   std::vector<std::string> set;
   kinetic::TracerConfig config;
-  long long seed = -1;
+  long long seed = 0;
+  CLI::Option* seed_option = nullptr;  // given or not: no value means "the scene's"
   std::optional<double> phi;
   std::string shard = "0/1";
   std::string out = "tracer-output";
@@ -33,10 +34,7 @@ struct TracerOptions {
 void run(TracerOptions& o) {
   common::require_output_folder(o.out, "--out");
   std::vector<std::string> overrides = o.set;
-  if (o.seed != -1) {
-    common::require_integer_in_range("--seed", o.seed, 0, std::numeric_limits<long long>::max());
-    overrides.push_back("seed=" + std::to_string(o.seed));
-  }
+  if (o.seed_option->count() > 0) md::add_seed_override(overrides, o.seed);
   const std::string text = o.scene_file.empty() ? md::default_scene_toml()
                                                 : common::read_text(o.scene_file, "SCENE", common::text_size_limit);
   kinetic::TracerConfig config = o.config;
@@ -98,7 +96,7 @@ void add_tracer_command(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--threads", o->config.threads, "Worker threads (results are identical for any count)")
       ->capture_default_str();
-  c->add_option("--seed", o->seed, "Master seed (overrides the scene; >= 0)");
+  o->seed_option = c->add_option("--seed", o->seed, "Master seed (overrides the scene; >= 0)");
   c->add_option("--shard", o->shard, "Run only blocks i, i+n, ... (combine with coldblast md merge): i/n")
       ->capture_default_str();
   c->add_option("--out", o->out, "Output directory")->capture_default_str();

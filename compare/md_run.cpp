@@ -11,14 +11,11 @@ namespace coldblast::compare {
 
 MdRunPlan plan_md_run(const MdRunRequest& request) {
   std::vector<std::string> overrides = request.overrides;
-  if (request.realizations != 0) {
-    common::require_integer_in_range("--realizations", request.realizations, 1, 1000000000);
-    overrides.push_back("realizations=" + std::to_string(request.realizations));
+  if (request.realizations) {
+    common::require_integer_in_range("--realizations", *request.realizations, 1, 1000000000);
+    overrides.push_back("realizations=" + std::to_string(*request.realizations));
   }
-  if (request.seed != -1) {
-    common::require_integer_in_range("--seed", request.seed, 0, std::numeric_limits<long long>::max());
-    overrides.push_back("seed=" + std::to_string(request.seed));
-  }
+  md::add_seed_override(overrides, request.seed);
   common::require_integer_in_range("--threads", request.threads, 1, 1024);
   std::string text, source;
   if (!request.scene_file.empty()) {

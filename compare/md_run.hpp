@@ -4,6 +4,7 @@
 // file, its text or the embedded default) with `--set key=value` overrides, and the run options
 // with the project's A_d policy, hydro::md_amplitude, for a scene that leaves A_d = 0 (it sizes
 // the box; docs/md-output.md).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,12 +14,12 @@
 namespace coldblast::compare {
 
 struct MdRunRequest {
-  std::string scene_file;              ///< TOML scene file; empty = scene_text, or the embedded default
-  std::string scene_text;              ///< TOML text used when scene_file is empty (empty = default scene)
-  std::vector<std::string> overrides;  ///< "key=value" (--set)
-  long long realizations = 0;          ///< 0 = the scene's; else [1, 1e9] (--realizations)
-  long long seed = -1;                 ///< -1 = the scene's; else >= 0 (--seed)
-  int threads = 1;                     ///< worker threads, [1, 1024] (--threads)
+  std::string scene_file;                 ///< TOML scene file; empty = scene_text, or the embedded default
+  std::string scene_text;                 ///< TOML text used when scene_file is empty (empty = default scene)
+  std::vector<std::string> overrides;     ///< "key=value" (--set)
+  std::optional<long long> realizations;  ///< none = the scene's; else [1, 1e9] (--realizations)
+  std::optional<long long> seed;          ///< none = the scene's; else >= 0 (--seed)
+  int threads = 1;                        ///< worker threads, [1, 1024] (--threads)
 };
 
 /// The scene and options for md::run_blast (the caller adds shards, progress and checkpoints).

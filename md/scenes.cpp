@@ -220,6 +220,12 @@ const std::string& default_scene_toml() {
   return default_scene;
 }
 
+void add_seed_override(std::vector<std::string>& overrides, std::optional<long long> seed) {
+  if (!seed) return;
+  require_integer_in_range("--seed", *seed, 0, std::numeric_limits<long long>::max());
+  overrides.push_back("seed=" + std::to_string(*seed));
+}
+
 BlastConfig parse_scene(const std::string& toml_text, const std::vector<std::string>& overrides,
                         const std::string& source) {
   toml::table table = parse_table(toml_text, source);

@@ -4,6 +4,7 @@
 // the auto-sized region from R(t_max) of Eq. (1), particle count, recording times t_k = t_0 2^(k/4)).
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,6 +55,10 @@ const std::vector<std::string>& scalar_observable_names();
 /// Every name accepted in `observables` (scalars plus profiles, p_imp, snapshots, trajectories), from
 /// the catalogue.
 const std::vector<std::string>& known_observable_names();
+
+/// Appends "seed=S" to `overrides` for a --seed given (S >= 0, else std::invalid_argument naming
+/// --seed and its range); nothing when none is given (the scene's seed stays).
+void add_seed_override(std::vector<std::string>& overrides, std::optional<long long> seed);
 
 /// The embedded default scene (small: a few seconds on one core).
 const std::string& default_scene_toml();

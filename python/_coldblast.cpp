@@ -341,8 +341,8 @@ py::dict estimate_dict(const md::BlastResult& result) {
 }
 
 py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
-                long long realizations, long long seed, int threads, const std::string& out,
-                const py::object& progress_callback) {
+                std::optional<long long> realizations, std::optional<long long> seed, int threads,
+                const std::string& out, const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, "--out");
   const compare::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
   compare::MdRunPlan plan = compare::plan_md_run(request);
@@ -384,13 +384,10 @@ struct TracerOptions {
 };
 
 py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
-                    long long seed, const TracerOptions& o, const std::string& out,
+                    std::optional<long long> seed, const TracerOptions& o, const std::string& out,
                     const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, "--out");
-  if (seed != -1) {
-    common::require_integer_in_range("--seed", seed, 0, std::numeric_limits<long long>::max());
-    overrides.push_back("seed=" + std::to_string(seed));
-  }
+  md::add_seed_override(overrides, seed);
   const std::string text = !scene_file.empty() ? common::read_text(scene_file, "SCENE", common::text_size_limit)
                                                : (scene_text.empty() ? md::default_scene_toml() : scene_text);
   kinetic::TracerConfig config;
@@ -525,9 +522,9 @@ PYBIND11_MODULE(_coldblast, m) {
   m.def(
       "tracer_run",
       [](const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
-         long long seed, const std::string& background, const std::string& transport, const std::string& start,
-         long long trajectories, int threads, double T, std::optional<double> phi, double start_time,
-         int frames_per_decade, int cells, const std::string& out, const py::object& progress) {
+         std::optional<long long> seed, const std::string& background, const std::string& transport,
+         const std::string& start, long long trajectories, int threads, double T, std::optional<double> phi,
+         double start_time, int frames_per_decade, int cells, const std::string& out, const py::object& progress) {
         const TracerOptions options{background, transport, start,      trajectories,      threads,
                                     T,          phi,       start_time, frames_per_decade, cells};
         return tracer_run(scene_file, scene_text, overrides, seed, options, out, progress);

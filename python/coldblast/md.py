@@ -111,8 +111,8 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
     """
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
     raw = _coldblast.md_run(scene_file, scene_text, sets,
-                            0 if realizations is None else _integer(realizations, "--realizations"),
-                            -1 if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
+                            None if realizations is None else _integer(realizations, "--realizations"),
+                            None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
                             "" if out is None else os.fspath(out),
                             _progress.callback(progress, "md run", "realizations"))
     return SimpleNamespace(estimates=raw["estimates"], summary=raw["summary"],

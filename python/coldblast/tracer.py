@@ -58,7 +58,7 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
     not one of ...``), KeyboardInterrupt on Ctrl-C (nothing is written).
     """
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
-    raw = _coldblast.tracer_run(scene_file, scene_text, sets, -1 if seed is None else _integer(seed, "--seed"),
+    raw = _coldblast.tracer_run(scene_file, scene_text, sets, None if seed is None else _integer(seed, "--seed"),
                                 str(background), str(transport), str(start),
                                 0 if trajectories is None else _integer(trajectories, "--trajectories"),
                                 _integer(threads, "--threads"), float(T), None if phi is None else float(phi),

@@ -54,3 +54,24 @@ TEST_CASE("the paper's 3D scene gets the Carnahan-Starling A_3(phi) from md run'
   // Without the policy, md refuses to guess an amplitude for A_d = 0.
   CHECK_THROWS_WITH(md::resolve_scene(plan.config), Catch::Contains("A_d = 0"));
 }
+
+TEST_CASE("md run's --realizations and --seed: none keeps the scene's, every given value is checked", "[fast]") {
+  compare::MdRunRequest request;
+  CHECK(compare::plan_md_run(request).config.realizations == md::parse_scene(md::default_scene_toml()).realizations);
+  request.seed = 7;
+  request.realizations = 3;
+  const compare::MdRunPlan plan = compare::plan_md_run(request);
+  CHECK(plan.config.seed == 7);
+  CHECK(plan.config.realizations == 3);
+  // 0 and -1 were the "not given" sentinels; given, they are out of range like any other value.
+  request.realizations = 0;
+  CHECK_THROWS_WITH(compare::plan_md_run(request), "--realizations = 0 is outside [1, 1000000000]");
+  request.realizations = 3;
+  request.seed = -1;
+  CHECK_THROWS_WITH(compare::plan_md_run(request), "--seed = -1 is outside [0, inf]");
+  std::vector<std::string> overrides;
+  md::add_seed_override(overrides, std::nullopt);
+  CHECK(overrides.empty());
+  md::add_seed_override(overrides, 0);
+  CHECK(overrides == std::vector<std::string>{"seed=0"});
+}

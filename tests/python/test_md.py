@@ -98,11 +98,11 @@ def test_scene_dict_and_file_agree(tmp_path):
     ({"observables": ["magic"]}, ["--set", 'observables=["magic"]']),
     ({"snapshot_times": [300.0]}, ["--set", "snapshot_times=[300.0]"]),
     ({"impurities": {"count": 100000}}, ["--set", "impurities.count=100000"]),
-    ({"realizations": 0}, ["--realizations", -1]),
+    ({"realizations": 0}, ["--realizations", 0]),  # 0 and -1 are no longer "not given" sentinels
+    ({"realizations": -1}, ["--realizations", -1]),
+    ({"seed": -1}, ["--seed", -1]),
 ])
 def test_bad_input_is_the_cli_error(kwargs, flags):
-    if "realizations" in kwargs:  # --realizations 0 means "the scene's" in the CLI; compare -1
-        kwargs = {"realizations": -1}
     with pytest.raises(ValueError) as error:
         coldblast.md.run(progress=False, **kwargs)
     assert str(error.value) == cli_error("md", "run", *flags)
