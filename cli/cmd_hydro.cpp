@@ -233,13 +233,13 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
       ->capture_default_str();
   command.add_option("--until", options.until, until_help);
   command.add_option("--cells", options.cells,
-                     "Finite-volume cells, [16, 100000] (default 256 for core; 512 for euler, where A_d meets 0.1 %)");
+                     "Finite-volume cells, [16, 100000] (0 or none: 256 for core; 512 for euler, where A_d meets 0.1 %)");
   command.add_option("--eos", options.eos, "Equation of state: ideal, henderson (d = 2) or carnahan-starling (d = 3)")
       ->capture_default_str();
   command.add_option("--phi", options.phi,
-                     "Ambient packing fraction for a hard-particle --eos (default 0.118, the paper's MD)");
+                     "Ambient packing fraction for a hard-particle --eos (0 or none: 0.118, the paper's MD)");
   command.add_option("--outer-margin", options.outer_margin,
-                     "Outer grid edge / shock radius, [1.05, 2] (default 1.15; raise it when heat conduction "
+                     "Outer grid edge / shock radius, [1.05, 2] (0 or none: 1.15; raise it when heat conduction "
                      "outruns the shock at the start, as in dense gases near close packing)");
   command.add_option("--config", options.config_file,
                      "TOML file whose [hydro] table sets eos, phi, transport (a scene file may carry it; flags win; "
@@ -268,7 +268,7 @@ void add_hydro_command(CLI::App& app) {
   auto core_options = std::make_shared<HydroOptions>();
   CLI::App* core = hydro->add_subcommand(
       "core", "Heat-conducting blast: running exponents of H, n0, T0 and R beside the theory (Eqs. 4, 11, 12)");
-  add_common_options(*core, *core_options, "Stop at R/lambda (default 1e4)");
+  add_common_options(*core, *core_options, "Stop at R/lambda (0 or none: 1e4)");
   core->add_option("--viscosity", core_options->viscosity, "Shear viscosity mu = c_mu n_inf lambda sqrt(T): on or off")
       ->capture_default_str();
   core->add_option("--transport", core_options->transport,
@@ -290,7 +290,7 @@ void add_hydro_command(CLI::App& app) {
   auto euler_options = std::make_shared<HydroOptions>();
   CLI::App* euler = hydro->add_subcommand("euler", "kappa = mu = 0: A_d and profiles against the exact TvNS solution");
   add_common_options(*euler, *euler_options,
-                     "Stop at R/lambda (default 500; the initial hot region has R/lambda = 0.4)");
+                     "Stop at R/lambda (0 or none: 500; the initial hot region has R/lambda = 0.4)");
   euler->callback([euler_options, euler] {
     read_config_keys(*euler, *euler_options);
     run_euler(*euler_options);
