@@ -232,8 +232,9 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
   command.add_option("--d", options.d, "Spatial dimension: 1 planar, 2 cylindrical, 3 spherical")
       ->capture_default_str();
   command.add_option("--until", options.until, until_help);
-  command.add_option("--cells", options.cells,
-                     "Finite-volume cells, [16, 100000] (0 or none: 256 for core; 512 for euler, where A_d meets 0.1 %)");
+  command.add_option(
+      "--cells", options.cells,
+      "Finite-volume cells, [16, 100000] (0 or none: 256 for core; 512 for euler, where A_d meets 0.1 %)");
   command.add_option("--eos", options.eos, "Equation of state: ideal, henderson (d = 2) or carnahan-starling (d = 3)")
       ->capture_default_str();
   command.add_option("--phi", options.phi,
