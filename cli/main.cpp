@@ -10,6 +10,7 @@
 #include <exception>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "coldblast/build_info.hpp"
@@ -25,6 +26,15 @@ void print_json(const common::Json& document) {
 }  // namespace coldblast::cli
 
 namespace {
+/// One message line on stderr in a single write, so that the lines of MPI ranks that fail alike
+/// do not interleave mid-line ("coldblast: error: coldblast: error: n = ...").
+void report(const std::string& line) {
+  const std::string text = line + '\n';
+  std::cerr.flush();
+  std::fwrite(text.data(), 1, text.size(), stderr);  // stderr is unbuffered: one write(2)
+  std::fflush(stderr);
+}
+
 int run(int argc, char** argv) {
   using namespace coldblast;
 #if COLDBLAST_HAVE_MPI
@@ -60,16 +70,16 @@ int run(int argc, char** argv) {
   } catch (const cli::ExitStatus& status) {
     return status.code;
   } catch (const CLI::ParseError& e) {
-    std::cerr << "coldblast: error: " << e.what() << "\n(run with --help for the options)\n";
+    report(std::string("coldblast: error: ") + e.what() + "\n(run with --help for the options)");
     return failure(2);
   } catch (const common::Interrupted& e) {  // SIGINT/SIGTERM during md run or reproduce (common/interrupt.hpp)
-    std::cerr << "coldblast: " << e.what() << '\n';
+    report(std::string("coldblast: ") + e.what());
     return failure(e.exit_code());
   } catch (const std::invalid_argument& e) {
-    std::cerr << "coldblast: error: " << e.what() << '\n';
+    report(std::string("coldblast: error: ") + e.what());
     return failure(2);
   } catch (const std::exception& e) {
-    std::cerr << "coldblast: failed: " << e.what() << '\n';
+    report(std::string("coldblast: failed: ") + e.what());
     return failure(1);
   }
   return 0;

@@ -14,6 +14,10 @@ execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set n=-1 --out ${WORK}/bad
 if(NOT code EQUAL 2 OR NOT err MATCHES "n = -1 is outside")
   message(FATAL_ERROR "bad n under mpirun: exit ${code}, expected 2 naming n\n${out}${err}")
 endif()
+# Each rank's message is one write: the lines of two ranks do not interleave mid-line.
+if(err MATCHES "coldblast: error: [^\n]*coldblast: error: ")
+  message(FATAL_ERROR "the ranks' error lines interleave:\n${err}")
+endif()
 # A runtime failure ends every rank with exit 1 (no hang) and no output files. A_d = 10 (45 times
 # the true A_2) puts Eq. (1)'s R(t_max) far inside the real shock, which reaches the guard at t ≈ 400
 # in both realizations, one per rank (rank 1's is the path where a worker reports to rank 0); the
