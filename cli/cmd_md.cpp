@@ -176,6 +176,16 @@ void merge_md(const MdMergeOptions& o) {
 }
 
 void equilibrium_md(const MdEquilibriumOptions& o) {
+  // The library validates its fields; the messages name this command's flags.
+  static const common::FieldNames flags = {{"d", "--d"},
+                                           {"phi", "--phi"},
+                                           {"particles", "--particles"},
+                                           {"collisions", "--collisions"},
+                                           {"blocks", "--blocks"},
+                                           {"queue", "--queue"},
+                                           {"diffusion_lag", "--diffusion-lag"},
+                                           {"diffusion_windows", "--diffusion-windows"}};
+  common::with_field_names(flags, [&] { o.config.validate(); });
   const md::EquilibriumResult r = md::run_equilibrium(o.config);
   common::Json j;
   j["d"] = r.config.d;
