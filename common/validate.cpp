@@ -24,6 +24,53 @@ std::string format_number(double value) {
   return std::string(buffer, end.ptr);
 }
 
+std::string format_significant(double value, int digits) {
+  if (!std::isfinite(value) || value == 0.0 || digits < 1) return format_number(value);
+  // Rounded at the digit's power of ten, then the shortest form of that double: 12345 → "12350"
+  // and 3363.5857 → "3363.59" (never "1.234e+04" as "%.4g" prints). A power 10^k with |k| <= 22 is
+  // exact, so the rounding is the nearest double to the decimal.
+  const int place = static_cast<int>(std::floor(std::log10(std::abs(value)))) - (std::min(digits, 17) - 1);
+  const double rounded = place < 0 ? std::round(value * std::pow(10.0, -place)) / std::pow(10.0, -place)
+                                   : std::round(value / std::pow(10.0, place)) * std::pow(10.0, place);
+  return format_number(rounded);
+}
+
+namespace {
+/// `x`, already rounded to a multiple of 10^place, with its digits down to that place: fixed
+/// notation for moderate places ("0.037", "232.500", "3364"), else "%#.*g" ("2.5e-14").
+std::string format_at_place(double x, int place) {
+  char buffer[64];
+  if (x == 0.0) x = 0.0;  // no "-0.00"
+  if (place >= 0 && std::abs(x) < 1e15) {
+    std::snprintf(buffer, sizeof buffer, "%.0f", x);
+  } else if (place < 0 && place >= -9 && std::abs(x) < 1e9) {
+    std::snprintf(buffer, sizeof buffer, "%.*f", -place, x);
+  } else {
+    const int magnitude = x == 0.0 ? place : static_cast<int>(std::floor(std::log10(std::abs(x))));
+    const int significant = std::clamp(magnitude - place + 1, 1, 17);
+    std::snprintf(buffer, sizeof buffer, "%#.*g", significant, x);
+    std::string text = buffer;
+    if (!text.empty() && text.back() == '.') text.pop_back();
+    return text;
+  }
+  return buffer;
+}
+}  // namespace
+
+std::string format_measurement(double value, double error, int error_digits) {
+  if (!std::isfinite(value) || !std::isfinite(error) || !(error > 0.0) || error_digits < 1)
+    return format_number(value) + " ± " + format_number(error);
+  int place = static_cast<int>(std::floor(std::log10(error))) - (error_digits - 1);
+  double unit = std::pow(10.0, place);
+  double rounded_error = std::round(error / unit) * unit;
+  if (rounded_error >= std::pow(10.0, place + error_digits) * (1.0 - 1e-12)) {  // 0.0996 → 0.10: one place up
+    ++place;
+    unit = std::pow(10.0, place);
+    rounded_error = std::round(error / unit) * unit;
+  }
+  return format_at_place(std::round(value / unit) * unit, place) + " ± " + format_at_place(rounded_error, place);
+}
+
 void require_in_range(const std::string& name, double value, double lo, double hi, Bound lo_bound, Bound hi_bound,
                       const std::string& context) {
   const bool above = lo_bound == Bound::open ? value > lo : value >= lo;

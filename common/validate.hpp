@@ -23,6 +23,17 @@ void require_integer_in_range(const std::string& name, long long value, long lon
 /// Shortest round-trip decimal form of a double (17 significant digits at most).
 std::string format_number(double value);
 
+/// `value` rounded to `digits` significant digits in format_number's form (3363.585661 → "3363.59"
+/// for 6, 12345 → "12350" for 4), for reports and figure labels; the data files keep full
+/// precision (format_number). Non-finite or zero: format_number.
+std::string format_significant(double value, int digits);
+
+/// "value ± error" with the error rounded to `error_digits` significant digits and the value to the
+/// same decimal place (1.837558 ± 0.036612 → "1.838 ± 0.037"; 0.35193590684 ± 2.5e-14 →
+/// "0.351935906848599 ± 2.5e-14"), the way a measurement is quoted. An error that is not finite and
+/// positive leaves both at full precision (format_number).
+std::string format_measurement(double value, double error, int error_digits = 2);
+
 /// A front end's names for a library config's fields, {field, name} (e.g. {"phi", "--phi"} for a
 /// flag, {"phi", "hydro.phi"} for a TOML key): the one place a command maps its flags or keys.
 using FieldNames = std::vector<std::pair<std::string, std::string>>;

@@ -17,7 +17,7 @@ std::string HydroModel::describe() const {
     return std::string("dilute NS (ideal gas, ") +
            (transport == hydro::Transport::dilute ? "Chapman-Enskog transport)" : "enskog transport)");
   return std::string(transport == hydro::Transport::enskog ? "dense NS (" : "NS (") + hydro::to_string(eos) +
-         " EOS at phi = " + common::format_number(std::round(phi * 1e4) / 1e4) + ", " +
+         " EOS at phi = " + common::format_significant(phi, 4) + ", " +
          (transport == hydro::Transport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport)";
 }
 
@@ -383,9 +383,9 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   const double phi = run_packing_fraction(run);
   if ((run.d == 2 || run.d == 3) && phi > 0) {
     const hydro::Eos eos = run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
-    curves.push_back(tvns_curve(
-        hydro::solve_tvns({run.d, 0.0, eos, phi, 1e-8}), ProfileCurve::Kind::tvns_phi,
-        "TvNS, " + hydro::to_string(eos) + " {/Symbol f} = " + common::format_number(std::round(phi * 1000) / 1000)));
+    curves.push_back(
+        tvns_curve(hydro::solve_tvns({run.d, 0.0, eos, phi, 1e-8}), ProfileCurve::Kind::tvns_phi,
+                   "TvNS, " + hydro::to_string(eos) + " {/Symbol f} = " + common::format_significant(phi, 3)));
   }
   if (!model.dilute()) {
     // only for the figure: no further than the MD's R/λ needs

@@ -151,10 +151,8 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
          << "set xlabel 'r / " << spread << "'\n"
          << "set ylabel '" << theory::observable_info("p_imp").label << "(r,t) " << spread << "'\nset key top right\n"
          << "set title 'Impurity radial distribution (Fig. 3 style): fitted b = "
-         << common::format_number(std::round(fit.b_fit * 1000) / 1000) << " ± "
-         << common::format_number(std::round(fit.b_fit_error * 1000) / 1000) << ", "
-         << theory::observable_info("R_imp").label << "/" << spread << " = "
-         << common::format_number(std::round(fit.b_direct * 1000) / 1000) << "'\n";
+         << common::format_measurement(fit.b_fit, fit.b_fit_error) << ", " << theory::observable_info("R_imp").label
+         << "/" << spread << " = " << common::format_significant(fit.b_direct, 4) << "'\n";
   std::string plot = "plot ";
   for (std::size_t i = first; i < times.size(); ++i) {
     const double scale = std::pow(times[i], fit.spread);

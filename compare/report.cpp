@@ -183,8 +183,7 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
         << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name)
         << ": {/Symbol a}_T = " << v.alpha_theory_rational << ", {/Symbol a}_S = "
         << (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
-                ? format_number(std::round(v.alpha_measured * 1000) / 1000) + " ± " +
-                      format_number(std::round(v.alpha_error * 1000) / 1000)
+                ? common::format_measurement(v.alpha_measured, v.alpha_error)
                 : std::string("undefined (a mean <= 0)"))
         << "'\n"
         << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t 'MD', " << a_last << "*(x/" << t_last
@@ -238,7 +237,7 @@ std::string amplitude_markdown(const CompareResult& result) {
   const ContinuumReference& c = *result.continuum;
   std::ostringstream md;
   md << "\n## Amplitudes against " << c.model.describe()
-     << " at the MD's R/λ = " << format_number(std::round(c.R_over_lambda_last * 100) / 100) << "\n\n"
+     << " at the MD's R/λ = " << common::format_significant(c.R_over_lambda_last, 4) << "\n\n"
      << "Pass when |MD − NS| ≤ k σ, σ = √(δ_MD² + δ_NS²) with δ_NS the NS value's numerical error (the "
         "change to twice the cells and the reading at the MD's R/λ). Beyond that, **miss** when |MD/NS − 1| is "
         "within the first order the NS equations drop (Kn² of the NS core; λ/R for the shock radius): a measured "
@@ -248,9 +247,10 @@ std::string amplitude_markdown(const CompareResult& result) {
         "|---|---|---|---|---|---|---|\n";
   char row[400];
   for (const auto& a : result.amplitudes) {
-    std::snprintf(row, sizeof row, "| %s | %.5g ± %.2g (t = %s) | %.5g ± %.2g | %+.1f %% | %+.1f | %.2g %% | %s |\n",
-                  a.name.c_str(), a.measured, a.error, format_number(a.t).c_str(), a.reference, a.reference_error,
-                  100 * a.relative_difference, a.deviation_sigma, 100 * a.continuum_bound,
+    std::snprintf(row, sizeof row, "| %s | %s (t = %s) | %s | %+.1f %% | %+.1f | %.2g %% | %s |\n", a.name.c_str(),
+                  common::format_measurement(a.measured, a.error).c_str(), common::format_significant(a.t, 6).c_str(),
+                  common::format_measurement(a.reference, a.reference_error).c_str(), 100 * a.relative_difference,
+                  a.deviation_sigma, 100 * a.continuum_bound,
                   a.outcome == AmplitudeOutcome::pass   ? "pass"
                   : a.outcome == AmplitudeOutcome::miss ? "**miss**"
                                                         : "**FAIL**");
@@ -265,11 +265,10 @@ std::string amplitude_markdown(const CompareResult& result) {
   }
   if (std::isfinite(n0) && std::isfinite(H))
     md << "\nCore Knudsen number Kn = λ n∞/(n0 H) = "
-       << format_number(std::round(1000 / (n0 * H * c.R_over_lambda_last)) / 1000) << " (MD), "
-       << format_number(std::round(1000 / (c.amplitudes.n0_over_n * c.amplitudes.H_over_R * c.R_over_lambda_last)) /
-                        1000)
+       << common::format_significant(1 / (n0 * H * c.R_over_lambda_last), 3) << " (MD), "
+       << common::format_significant(1 / (c.amplitudes.n0_over_n * c.amplitudes.H_over_R * c.R_over_lambda_last), 3)
        << " (NS); NS's temperature core radius (T = T0/2): H_T/R = "
-       << format_number(std::round(c.amplitudes.H_temperature_over_R * 1000) / 1000) << ".\n";
+       << common::format_significant(c.amplitudes.H_temperature_over_R, 3) << ".\n";
   md << density_residuals(result);
   return md.str();
 }
@@ -345,7 +344,8 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
     std::snprintf(buffer, sizeof buffer, "| %s | %s (%.4f) | %.4f%s | %s (t = %s) | %s (%d pts) | %s | %s |\n",
                   v.name.c_str(), v.alpha_theory_rational.c_str(), v.alpha_theory, v.alpha_reference,
                   v.alpha_reference_error > 0 ? (" ± " + format_number(v.alpha_reference_error)).c_str() : "",
-                  exponent(v.alpha_measured, v.alpha_error).c_str(), format_number(v.t_measured).c_str(),
+                  exponent(v.alpha_measured, v.alpha_error).c_str(),
+                  common::format_significant(v.t_measured, 6).c_str(),
                   exponent(v.window.exponent, v.window.exponent_error).c_str(), v.window.points, deviation,
                   v.pass ? "pass" : "**fail**");
     md << buffer;
@@ -354,12 +354,12 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
   if (result.against == Reference::hydro && result.continuum) md << amplitude_markdown(result);
   if (figures) md << "\n![Observables with running exponents](figures/observables.png)\n";
   if (fit) {
-    md << "\n## Impurity radial distribution (paper Fig. 3)\n\nAt t = " << format_number(fit->t)
+    md << "\n## Impurity radial distribution (paper Fig. 3)\n\nAt t = " << common::format_significant(fit->t, 6)
        << ", a least-squares fit of the Gaussian radial density (Eq. (39) in 2D, Eq. (35) in general) with R_imp = b t^"
-       << format_number(fit->spread) << " gives b = " << format_number(fit->b_fit) << " ± "
-       << format_number(fit->b_fit_error) << " (unweighted least squares, rms residual "
-       << format_number(fit->residual_rms) << " over " << fit->bins << " bins); directly, R_imp/t^"
-       << format_number(fit->spread) << " = " << format_number(fit->b_direct)
+       << format_number(fit->spread) << " gives b = " << common::format_measurement(fit->b_fit, fit->b_fit_error)
+       << " (unweighted least squares, rms residual " << common::format_significant(fit->residual_rms, 2) << " over "
+       << fit->bins << " bins); directly, R_imp/t^" << format_number(fit->spread) << " = "
+       << common::format_significant(fit->b_direct, 4)
        << ". The paper reports b = 1.75 (fit) and 1.71 (direct) at t = 4000.\n";
     char shape[400];
     std::snprintf(shape, sizeof shape,

@@ -87,13 +87,13 @@ std::string top_report(const ReproduceResult& r) {
      << "## TvNS amplitudes (Eq. (1), exact solver, two independent methods)\n\n"
      << "| quantity | value | error |\n|---|---|---|\n"
      << amplitude_row("A_2 (γ = 2)", r.A2, r.A2_error) << amplitude_row("A_3 (γ = 5/3)", r.A3, r.A3_error)
-     << amplitude_row("A_2 at φ = " + common::format_number(std::round(r.phi_md * 1e4) / 1e4) + " (Henderson EOS)",
-                      r.A2_md, r.A2_md_error)
+     << amplitude_row("A_2 at φ = " + common::format_significant(r.phi_md, 4) + " (Henderson EOS)", r.A2_md,
+                      r.A2_md_error)
      << "\n"
      << "The paper prints A_3 = 0.072401066; see docs/verification.md.\n\n"
      << "## Navier–Stokes blast: " << r.hydro["model"].get<std::string>()
-     << "\n\nRunning time exponents at R/λ = " << common::format_number(r.hydro["R_over_lambda"].get<double>())
-     << " (relative energy error " << common::format_number(r.hydro["energy_error"].get<double>())
+     << "\n\nRunning time exponents at R/λ = " << common::format_significant(r.hydro["R_over_lambda"].get<double>(), 6)
+     << " (relative energy error " << common::format_significant(r.hydro["energy_error"].get<double>(), 2)
      << "):\n\n| quantity | measured | theory |\n|---|---|---|\n";
   for (const char* name : {"H", "n0", "T0", "R"}) {
     const auto& e = r.hydro["exponents"][name];
@@ -105,7 +105,8 @@ std::string top_report(const ReproduceResult& r) {
   md << "\n"
      << "## MD ensemble\n\n"
      << r.md["realizations"] << " realizations of the paper's 2D scene, " << r.md["collisions_total"]
-     << " collisions in " << r.md["wall_seconds"] << " s; largest relative energy error " << r.md["energy_error_max"]
+     << " collisions in " << common::format_significant(r.md["wall_seconds"].get<double>(), 3)
+     << " s; largest relative energy error " << common::format_significant(r.md["energy_error_max"].get<double>(), 2)
      << ". Output: `md/`.\n\n";
   const std::pair<const char*, const CompareResult*> comparisons[] = {
       {"theory", &r.against_theory}, {"paper", &r.against_paper}, {"hydro", &r.against_hydro}};
@@ -117,7 +118,7 @@ std::string top_report(const ReproduceResult& r) {
        << verdict_rows(*result);
     for (const auto& note : result->notes) md << "\n- " << note << "\n";
     if (!result->amplitudes.empty()) {
-      md << "\nAmplitudes at t = " << common::format_number(result->amplitudes[0].t) << " against "
+      md << "\nAmplitudes at t = " << common::format_significant(result->amplitudes[0].t, 6) << " against "
          << result->continuum->model.describe()
          << " at the same R/λ (σ combines the MD error and the NS numerical error δ_NS; a miss is beyond k σ but "
             "within the bound, the first order NS drops):\n\n"
@@ -125,8 +126,9 @@ std::string top_report(const ReproduceResult& r) {
             "|---|---|---|---|---|---|---|\n";
       char row[300];
       for (const auto& a : result->amplitudes) {
-        std::snprintf(row, sizeof row, "| %s | %.5g ± %.2g | %.5g ± %.2g | %+.1f %% | %+.1f | %.2g %% | %s |\n",
-                      a.name.c_str(), a.measured, a.error, a.reference, a.reference_error, 100 * a.relative_difference,
+        std::snprintf(row, sizeof row, "| %s | %s | %s | %+.1f %% | %+.1f | %.2g %% | %s |\n", a.name.c_str(),
+                      common::format_measurement(a.measured, a.error).c_str(),
+                      common::format_measurement(a.reference, a.reference_error).c_str(), 100 * a.relative_difference,
                       a.deviation_sigma, 100 * a.continuum_bound, to_string(a.outcome).c_str());
         md << row;
       }

@@ -137,12 +137,6 @@ std::optional<TracerMdDistribution> compare_distribution(const RunData& tracer, 
   return out;
 }
 
-std::string rounded(double x, int digits) {
-  if (!std::isfinite(x) || x == 0) return format_number(x);
-  const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(std::abs(x))));
-  return format_number(std::round(x * scale) / scale);
-}
-
 std::string observables_figure(const TracerMdComparison& c, const fs::path& folder) {
   const std::size_t n = c.series.size();
   std::ostringstream script;
@@ -170,8 +164,9 @@ std::string observables_figure(const TracerMdComparison& c, const fs::path& fold
            << "set logscale xy\nset format x '10^{%L}'\nset grid\n"
            << xrange << "set xlabel 't'\nset ylabel '" << label << "'\n"
            << "set key " << (s.alpha > 0 ? "top left" : "bottom left") << " font ',11'\n"
-           << "set title '" << label << ": tracer/MD - 1 = " << format_number(std::round(last.ratio * 1000) / 1000)
-           << " ± " << rounded(last.ratio_error, 1) << " at t = " << rounded(last.t, 4) << "'\n"
+           << "set title '" << label
+           << ": tracer/MD - 1 = " << common::format_measurement(last.ratio, last.ratio_error, 1)
+           << " at t = " << common::format_significant(last.t, 4) << "'\n"
            << "plot '" << file << "' u 1:4:5 w yerrorbars pt 7 ps 1.0 lc rgb '#d62728' t 'MD', '" << file
            << "' u 1:2:3 w yerrorbars pt 6 ps 1.4 lw 1.5 lc rgb '#1f77b4' t 'tracer (Eq. 36)', " << last.md << "*(x/"
            << last.t << ")**(" << s.alpha << ") w l dt 2 lw 2 lc rgb 'black' t 't^{" << s.alpha_rational
@@ -200,10 +195,10 @@ std::string distribution_figure(const TracerMdComparison& c, const fs::path& fol
   const std::string p = theory::observable_info("p_imp").label;
   std::ostringstream script;
   script << "set terminal pngcairo size 1000,700 font 'Sans,13'\nset output 'tracer_p_imp.png'\n"
-         << "set title \"" << p << "(r) at t = " << rounded(h.t, 4)
-         << ": <r^4>/<r^2>^2 = " << rounded(h.ratio_tracer, 3) << " ± " << rounded(h.ratio_tracer_error, 1)
-         << " (tracer), " << rounded(h.ratio_md, 3) << " ± " << rounded(h.ratio_md_error, 1) << " (MD), "
-         << format_number(h.ratio_gaussian) << " (Gaussian)\"\n"
+         << "set title \"" << p << "(r) at t = " << common::format_significant(h.t, 4)
+         << ": <r^4>/<r^2>^2 = " << common::format_measurement(h.ratio_tracer, h.ratio_tracer_error, 1) << " (tracer), "
+         << common::format_measurement(h.ratio_md, h.ratio_md_error, 1) << " (MD), " << format_number(h.ratio_gaussian)
+         << " (Gaussian)\"\n"
          << "set xlabel 'r (distance from the start)'\nset ylabel '" << p << "(r)'\nset grid\nset key top right\n"
          << "set xrange [0:*]\n"
          << "plot 'tracer_md_p_imp.dat' u 1:4:5 w yerrorbars pt 7 ps 1.0 lc rgb '#d62728' t 'MD', "

@@ -10,7 +10,9 @@
 #include "common/validate.hpp"
 
 using coldblast::common::Bound;
+using coldblast::common::format_measurement;
 using coldblast::common::format_number;
+using coldblast::common::format_significant;
 using coldblast::common::require_in_range;
 using coldblast::common::require_integer_in_range;
 
@@ -40,6 +42,38 @@ TEST_CASE("format_number round-trips doubles with the fewest digits", "[fast]") 
   const double x = 0.35193590695;
   REQUIRE(std::stod(format_number(x)) == x);
   REQUIRE(format_number(1.0 / 3.0) == "0.3333333333333333");
+}
+
+TEST_CASE("format_significant rounds to the given significant digits", "[fast]") {
+  REQUIRE(format_significant(3363.585661014858, 6) == "3363.59");
+  REQUIRE(format_significant(10008.350573534844, 6) == "10008.4");
+  REQUIRE(format_significant(8.881784197001252e-16, 2) == "8.9e-16");
+  REQUIRE(format_significant(4000.0, 6) == "4000");
+  REQUIRE(format_significant(-0.0012525467, 2) == "-0.0013");
+  REQUIRE(format_significant(12345.0, 4) == "12350");  // not "%.4g"'s 1.234e+04
+  REQUIRE(format_significant(1.7339746558403595, 4) == "1.734");
+  REQUIRE(format_significant(0.0, 3) == "0");
+  REQUIRE(format_significant(std::numeric_limits<double>::quiet_NaN(), 3) == "nan");
+}
+
+TEST_CASE("format_measurement quotes the value to the error's second significant digit", "[fast]") {
+  // The report's Fig. 3 fit, the A_2 solver's precision, a shock radius, an exponent.
+  REQUIRE(format_measurement(1.837558583236845, 0.03661178942101602) == "1.838 ± 0.037");
+  REQUIRE(format_measurement(0.351935906848599, 2.5e-14) == "0.351935906848599 ± 2.5e-14");
+  REQUIRE(format_measurement(232.5, 0.062) == "232.500 ± 0.062");
+  REQUIRE(format_measurement(-0.40594, 0.10621) == "-0.41 ± 0.11");
+  // Rounding carries the error to one more digit: 0.0996 is 0.10, and the value follows that place.
+  REQUIRE(format_measurement(1.23456, 0.0996) == "1.23 ± 0.10");
+  // Errors of 10 and more: integers, never a trailing point.
+  REQUIRE(format_measurement(3363.6, 12.3) == "3364 ± 12");
+  REQUIRE(format_measurement(123456.0, 1234.0) == "123500 ± 1200");
+  // One digit on request, no negative zero, large magnitudes in exponent form.
+  REQUIRE(format_measurement(0.014, 0.19, 1) == "0.0 ± 0.2");
+  REQUIRE(format_measurement(-0.0004, 0.03) == "0.000 ± 0.030");
+  REQUIRE(format_measurement(6.02214076e23, 3.1e20) == "6.0221e+23 ± 3.1e+20");
+  // No usable error: both at full precision, nothing hidden.
+  REQUIRE(format_measurement(1.5, 0.0) == "1.5 ± 0");
+  REQUIRE(format_measurement(1.5, std::numeric_limits<double>::quiet_NaN()) == "1.5 ± nan");
 }
 
 TEST_CASE("format_number equals the %g round-trip search (at least 6 digits) on random doubles", "[fast]") {

@@ -3,12 +3,44 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <string>
 
 #include "compare/reproduce.hpp"
 #include "tests/temp_path.hpp"
 
 using namespace coldblast::compare;
 namespace fs = std::filesystem;
+
+namespace {
+/// Digits after the decimal point of a quoted number ("0.0023": 4, "232": 0).
+int decimals(const std::string& number) {
+  const auto point = number.find('.');
+  return point == std::string::npos ? 0 : static_cast<int>(number.size() - point - 1);
+}
+
+/// REPORT.md quotes each amplitude as "value ± error" with a two-digit error and the value to the
+/// same decimal place, and the value is the verdict's, rounded there.
+void check_amplitude_rows(const std::string& report, const std::vector<AmplitudeVerdict>& amplitudes) {
+  for (const auto& a : amplitudes) {
+    INFO(a.name << " = " << a.measured << " ± " << a.error);
+    const std::regex row("\\| " + std::regex_replace(a.name, std::regex("[\\^/]"), "\\$&") +
+                         " \\| (-?[0-9]+(\\.[0-9]+)?) ± ([0-9]+(\\.[0-9]+)?) \\|");
+    std::smatch m;
+    REQUIRE(std::regex_search(report, m, row));
+    const std::string value = m[1], error = m[3];
+    INFO("quoted " << value << " ± " << error);
+    CHECK(decimals(value) == decimals(error));
+    const std::string error_digits = std::regex_replace(error, std::regex("^[0.]+|\\."), "");
+    CHECK(error_digits.size() == 2);  // "0.0023", "0.062", "12"
+    const double unit = std::pow(10.0, -decimals(value));
+    CHECK(std::abs(std::stod(value) - a.measured) <= 0.5 * unit * (1 + 1e-9));
+    CHECK(std::abs(std::stod(error) - a.error) <= 0.5 * unit * (1 + 1e-9));
+  }
+}
+}  // namespace
 
 TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   ReproduceConfig config;
@@ -41,6 +73,14 @@ TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   for (const char* file : {"REPORT.md", "summary.json", "tvns.json", "hydro/core.json", "md/blocks.csv",
                            "report-theory/verdict.json", "report-paper/report.md", "report-hydro/exponents.csv"})
     CHECK(fs::exists(config.out / file));
+  std::ifstream in(config.out / "REPORT.md");
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  check_amplitude_rows(report, r.against_hydro.amplitudes);
+  // Prose numbers at their meaningful digits, not 17 (R/λ, the energy error, the wall time).
+  CHECK(std::regex_search(report, std::regex("Running time exponents at R/λ = [0-9.]{1,7} \\(relative energy "
+                                             "error [0-9.]+(e-[0-9]+)?\\)")));
+  CHECK(std::regex_search(report, std::regex("collisions in [0-9.]{1,5} s; largest relative energy error "
+                                             "[0-9](\\.[0-9])?e-[0-9]+\\.")));
   fs::remove_all(config.out);
 }
 
