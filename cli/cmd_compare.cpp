@@ -96,14 +96,16 @@ void print_table(const compare::CompareResult& result) {
                 c.md_directory.string().c_str());
     for (const auto& s : c.series) {
       const compare::TracerMdPoint& p = s.points.back();
-      std::printf("  %-6s t = %-9g tracer %.5g ± %.2g, MD %.5g ± %.2g: %+.4f ± %.4f\n", s.observable.c_str(), p.t,
-                  p.tracer, p.tracer_error, p.md, p.md_error, p.ratio, p.ratio_error);
+      std::printf("  %-6s t = %-9g tracer %s, MD %s: %s%s\n", s.observable.c_str(), p.t,
+                  common::format_measurement(p.tracer, p.tracer_error).c_str(),
+                  common::format_measurement(p.md, p.md_error).c_str(), p.ratio >= 0 ? "+" : "",
+                  common::format_measurement(p.ratio, p.ratio_error).c_str());
     }
     if (c.distribution)
-      std::printf("  p_imp  t = %-9g <r^4>/<r^2>^2 tracer %.4f ± %.4f, MD %.4f ± %.4f, Gaussian %.4f; chi2/dof %.3g\n",
-                  c.distribution->t, c.distribution->ratio_tracer, c.distribution->ratio_tracer_error,
-                  c.distribution->ratio_md, c.distribution->ratio_md_error, c.distribution->ratio_gaussian,
-                  c.distribution->chi2_per_dof);
+      std::printf("  p_imp  t = %-9g <r^4>/<r^2>^2 tracer %s, MD %s, Gaussian %.4f; chi2/dof %.3g\n", c.distribution->t,
+                  common::format_measurement(c.distribution->ratio_tracer, c.distribution->ratio_tracer_error).c_str(),
+                  common::format_measurement(c.distribution->ratio_md, c.distribution->ratio_md_error).c_str(),
+                  c.distribution->ratio_gaussian, c.distribution->chi2_per_dof);
   }
   std::printf("\nverdict: %s\n", compare::verdict_summary(result).c_str());
 }

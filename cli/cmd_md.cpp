@@ -94,7 +94,8 @@ void print_final_estimates(const md::BlastResult& ensemble) {
   for (const auto& row : rows) {
     if (row.t != t_last) continue;
     if (std::isfinite(row.stderr_))
-      std::printf("  t = %-10g %-6s %14.6g ± %.2g\n", row.t, row.observable.c_str(), row.mean, row.stderr_);
+      std::printf("  t = %-10g %-6s %20s\n", row.t, row.observable.c_str(),
+                  common::format_measurement(row.mean, row.stderr_).c_str());
     else  // one realization, or a flow below its noise (u_flow's mean <= 0; docs/md-output.md)
       std::printf("  t = %-10g %-6s %14.6g (no error: %s)\n", row.t, row.observable.c_str(), row.mean,
                   row.count < 2 ? "one realization" : "undefined at a zero mean");
@@ -222,13 +223,15 @@ void equilibrium_md(const MdEquilibriumOptions& o) {
   }
   std::printf("hard %s, d = %d, phi = %g, N = %lld (periodic, T = 1)\n", r.config.d == 2 ? "discs" : "spheres",
               r.config.d, r.config.phi, r.config.particles);
-  std::printf("  Z = beta P / n (virial)        %.6f ± %.6f\n", r.Z, r.Z_error);
-  std::printf("  Z from collision rate          %.6f ± %.6f\n", r.Z_from_collision_rate, r.Z_from_collision_rate_error);
+  std::printf("  Z = beta P / n (virial)        %s\n", common::format_measurement(r.Z, r.Z_error).c_str());
+  std::printf("  Z from collision rate          %s\n",
+              common::format_measurement(r.Z_from_collision_rate, r.Z_from_collision_rate_error).c_str());
   std::printf("  %-30s %.6f\n", r.reference_name.c_str(), r.Z_reference);
-  std::printf("  collision rate per particle    %.6f ± %.6f\n", r.collision_rate, r.collision_rate_error);
+  std::printf("  collision rate per particle    %s\n",
+              common::format_measurement(r.collision_rate, r.collision_rate_error).c_str());
   if (r.config.diffusion_lag > 0.0)
-    std::printf("  self-diffusion D (MSD, lag %g) %.6f ± %.6f\n", r.config.diffusion_lag, r.diffusion,
-                r.diffusion_error);
+    std::printf("  self-diffusion D (MSD, lag %g) %s\n", r.config.diffusion_lag,
+                common::format_measurement(r.diffusion, r.diffusion_error).c_str());
   std::printf("  %.3g collisions in %.2f s: %.3g collisions/s\n", static_cast<double>(r.collisions_total),
               r.wall_seconds, r.collisions_per_second);
 }

@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "common/interrupt.hpp"
+#include "common/validate.hpp"
 #include "compare/reproduce.hpp"
 
 namespace coldblast::cli {
@@ -30,8 +31,9 @@ void print_verdict(const char* name, const compare::CompareResult& result) {
                 v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error, v.deviation_sigma,
                 v.pass ? "pass" : "FAIL");
   for (const auto& a : result.amplitudes)
-    std::printf("  %-9s MD = %.4g ± %.2g  NS = %.4g ± %.2g  (%+.1f %%, %+.1f sigma, bound %.2g %%)  %s\n",
-                a.name.c_str(), a.measured, a.error, a.reference, a.reference_error, 100 * a.relative_difference,
+    std::printf("  %-9s MD = %s  NS = %s  (%+.1f %%, %+.1f sigma, bound %.2g %%)  %s\n", a.name.c_str(),
+                common::format_measurement(a.measured, a.error).c_str(),
+                common::format_measurement(a.reference, a.reference_error).c_str(), 100 * a.relative_difference,
                 a.deviation_sigma, 100 * a.continuum_bound, compare::to_string(a.outcome).c_str());
 }
 

@@ -72,10 +72,12 @@ void write_tracer_run(const kinetic::TracerResult& result, const std::string& ou
               result.config.background.c_str(), result.ensemble.scene.config.name.c_str(),
               result.ensemble.scene.config.d, result.trajectories(),
               static_cast<unsigned long long>(result.collisions()), result.wall_seconds);
-  std::printf("  collision rate %.6g ± %.2g per impurity per time (chi = %.6g), null-collision rejection %.3f\n",
-              result.collision_rate(), result.collision_rate_error(), result.chi, result.rejection_rate());
-  std::printf("  impurity temperature at t_max %.6g ± %.2g; output in %s\n", result.temperature_final(),
-              result.temperature_final_error(), out.c_str());
+  std::printf("  collision rate %s per impurity per time (chi = %.6g), null-collision rejection %.3f\n",
+              common::format_measurement(result.collision_rate(), result.collision_rate_error()).c_str(), result.chi,
+              result.rejection_rate());
+  std::printf("  impurity temperature at t_max %s; output in %s\n",
+              common::format_measurement(result.temperature_final(), result.temperature_final_error()).c_str(),
+              out.c_str());
   print_final_estimates(result.ensemble);
 }
 
