@@ -106,9 +106,10 @@ void print_prefactors(int d) {
     for (const auto& p : all) {
       if (p.t != t) continue;
       const int column = std::string(p.observable) == "R_imp" ? 0 : std::string(p.observable) == "V_imp" ? 1 : 2;
-      char cell_text[64];
-      std::snprintf(cell_text, sizeof cell_text, "%.5g +- %.2g", p.value, p.error);
-      cells[column] = cell_text;
+      // ASCII "+-" keeps printf's byte widths aligned.
+      std::string text = common::format_measurement(p.value, p.error);
+      const std::string plus_minus = " ± ";
+      cells[column] = text.replace(text.find(plus_minus), plus_minus.size(), " +- ");
       R_over_lambda = p.R_over_lambda;
       source = p.source;
     }
