@@ -138,19 +138,10 @@ std::string top_report(const ReproduceResult& r) {
   return md.str();
 }
 
-}  // namespace
-
-ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProgress& progress) {
-  config.validate();
-  const bool quick = config.scale == ReproduceScale::quick;
-  ReproduceResult r;
-  r.out = config.out;
-  fs::create_directories(config.out);
-
-  say(progress, "step 1/5: exact TvNS amplitudes A_2, A_3 and A_2 at the MD's packing fraction");
+/// Step 1: A_2, A_3 (Eq. (1), ideal gas) and A_2 at the MD's packing fraction, into r and tvns.json.
+void tvns_step(const ReproduceConfig& config, const md::BlastConfig& scene, ReproduceResult& r) {
   const hydro::TvnsSolution a2 = hydro::solve_tvns({2, 0.0, hydro::Eos::ideal, 0.0, 1e-13});
   const hydro::TvnsSolution a3 = hydro::solve_tvns({3, 0.0, hydro::Eos::ideal, 0.0, 1e-13});
-  md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
   r.phi_md = theory::packing_fraction(scene.d, scene.n, scene.a);
   // the amplitude of hydro::md_amplitude, reported with its error (step 2's box takes it from there)
   const hydro::TvnsSolution a2_md = hydro::solve_tvns_for_md(2, r.phi_md);
@@ -160,45 +151,64 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   r.A3_error = a3.A_error();
   r.A2_md = a2_md.A();
   r.A2_md_error = a2_md.A_error();
-  common::write_file_atomic(config.out / "tvns.json", common::Json{{"A_2", r.A2},
-                                                                   {"A_2_error", r.A2_error},
-                                                                   {"A_3", r.A3},
-                                                                   {"A_3_error", r.A3_error},
-                                                                   {"phi_md", r.phi_md},
-                                                                   {"A_2_phi_md", r.A2_md},
-                                                                   {"A_2_phi_md_error", r.A2_md_error}}
-                                                              .dump(2) +
-                                                          "\n");
+  const common::Json tvns{{"A_2", r.A2},
+                          {"A_2_error", r.A2_error},
+                          {"A_3", r.A3},
+                          {"A_3_error", r.A3_error},
+                          {"phi_md", r.phi_md},
+                          {"A_2_phi_md", r.A2_md},
+                          {"A_2_phi_md_error", r.A2_md_error}};
+  common::write_file_atomic(config.out / "tvns.json", tvns.dump(2) + "\n");
+}
 
-  fs::path md_dir = config.out / "md";
+/// Step 2: the paper scene's MD ensemble (as `coldblast md run`, bit for bit) into out/md, or the
+/// given --md-run; r.md is its summary. Returns the run's folder.
+fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const ReproduceProgress& progress,
+                 ReproduceResult& r) {
   if (!config.md_run.empty()) {
     say(progress, "step 2/5: MD ensemble taken from " + config.md_run.string());
-    md_dir = config.md_run;
-    r.md = read_run(md_dir).summary;
-  } else {
-    say(progress, "step 2/5: MD ensemble of the paper's 2D scene");
-    scene.seed = config.seed;
-    scene.realizations = config.realizations > 0 ? config.realizations : (quick ? 384 : 30000);
-    scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
-    md::RunOptions options;
-    options.amplitude = hydro::md_amplitude;  // as `md run`, so step 2 equals `coldblast md run` bit for bit
-    options.threads =
-        config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    options.progress = [&progress, total = scene.realizations](long long done, long long) {
-      if (progress && (done % std::max<long long>(1, total / 20) == 0 || done == total))
-        progress("  md: " + std::to_string(done) + "/" + std::to_string(total) + " realizations");
-    };
-    const md::BlastResult blast = md::run_blast(scene, options);
-    md::write_blast_outputs(blast, md_dir);
-    r.md = md::blast_summary(blast);
+    r.md = read_run(config.md_run).summary;
+    return config.md_run;
   }
+  say(progress, "step 2/5: MD ensemble of the paper's 2D scene");
+  scene.seed = config.seed;
+  scene.realizations =
+      config.realizations > 0 ? config.realizations : (config.scale == ReproduceScale::quick ? 384 : 30000);
+  scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
+  md::RunOptions options;
+  options.amplitude = hydro::md_amplitude;
+  options.threads =
+      config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  options.progress = [&progress, total = scene.realizations](long long done, long long) {
+    if (progress && (done % std::max<long long>(1, total / 20) == 0 || done == total))
+      progress("  md: " + std::to_string(done) + "/" + std::to_string(total) + " realizations");
+  };
+  const md::BlastResult blast = md::run_blast(scene, options);
+  const fs::path md_dir = config.out / "md";
+  md::write_blast_outputs(blast, md_dir);
+  r.md = md::blast_summary(blast);
+  return md_dir;
+}
+}  // namespace
+
+ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProgress& progress) {
+  config.validate();
+  ReproduceResult r;
+  r.out = config.out;
+  fs::create_directories(config.out);
+
+  say(progress, "step 1/5: exact TvNS amplitudes A_2, A_3 and A_2 at the MD's packing fraction");
+  const md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
+  tvns_step(config, scene, r);
+  const fs::path md_dir = md_step(config, scene, progress, r);
 
   // One continuum solve serves the NS exponent table, the hydro verdicts and all three reports' figures.
   const RunData run = read_run(md_dir);
   const HydroModel model = resolve_hydro_model({}, run.d, run_packing_fraction(run));
-  say(progress, "step 3/5: Navier–Stokes blast, " + model.describe() + ", at the MD's R/lambda and up to R/lambda = " +
-                    common::format_number(config.hydro_until > 0 ? config.hydro_until : (quick ? 1e4 : 1e6)));
-  const double until = config.hydro_until > 0 ? config.hydro_until : (quick ? 1e4 : 1e6);
+  const double until =
+      config.hydro_until > 0 ? config.hydro_until : (config.scale == ReproduceScale::quick ? 1e4 : 1e6);
+  say(progress, "step 3/5: Navier–Stokes blast, " + model.describe() +
+                    ", at the MD's R/lambda and up to R/lambda = " + common::format_number(until));
   const auto continuum = solve_continuum(run, model, 256, until);
   r.hydro = hydro_json(continuum->ns);
   r.hydro["model"] = model.describe();

@@ -182,6 +182,68 @@ double md_R_over_lambda(const RunData& run, double t) {
   return std::exp((1 - w) * std::log(values[k - 1]) + w * std::log(values[k])) / lambda;
 }
 
+namespace {
+/// One observable's verdict: its running exponent at the last two times (and the window fit)
+/// against the reference that config.against names, with that reference's tolerance.
+ObservableVerdict judge_observable(const std::string& name, const BlockSeries& series,
+                                   const theory::ScalingExponents& exact, const CompareConfig& config, double allowance,
+                                   const ReferenceExponents& reference) {
+  ObservableVerdict v;
+  v.name = name;
+  const std::string law = theory::observable_info(name).law;  // u_flow: the law of u_imp
+  v.alpha_theory = theory::to_double(exact.at(law).in_time);
+  v.alpha_theory_rational = theory::to_string(exact.at(law).in_time);
+  v.running = running_exponents(series);
+  v.alpha_measured = v.running.back().alpha;
+  v.alpha_error = v.running.back().error;
+  v.t_measured = v.running.back().t;
+  const double t_last = series.t.back();
+  v.window = fit_power_law(series, t_last * std::pow(10.0, -config.window_decades), t_last);
+
+  double combined = v.alpha_error;
+  switch (config.against) {
+    case Reference::theory:
+      v.alpha_reference = v.alpha_theory;
+      v.tolerance = config.sigma * v.alpha_error + allowance;
+      break;
+    case Reference::paper: {
+      const PaperValue p = paper_table1(name);
+      v.alpha_reference = p.alpha;
+      v.alpha_reference_error = p.error;
+      combined = std::hypot(v.alpha_error, p.error);
+      v.tolerance = config.sigma * combined;
+      break;
+    }
+    case Reference::hydro:
+      v.alpha_reference = reference(name, v.t_measured);
+      v.tolerance = config.sigma * v.alpha_error + allowance;
+      break;
+  }
+  const double difference = v.alpha_measured - v.alpha_reference;
+  v.deviation_sigma = combined > 0 ? difference / combined : (difference == 0 ? 0.0 : INFINITY);
+  v.pass = std::isfinite(v.alpha_measured) && std::abs(difference) <= v.tolerance;
+  return v;
+}
+
+/// --md-run: the tracer run `tracer` against the MD run config.md_run, cut at --until alike.
+TracerMdComparison tracer_against_md(const CompareConfig& config, const RunData& tracer) {
+  if (!is_tracer_run(tracer))
+    throw std::invalid_argument("--md-run compares a tracer run (coldblast tracer) with an MD run, but RUN_DIR = " +
+                                tracer.directory.string() + " is an MD run");
+  RunData md;
+  try {
+    md = read_run(config.md_run);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--md-run: ") + e.what());
+  }
+  if (is_tracer_run(md))
+    throw std::invalid_argument("--md-run = " + config.md_run.string() +
+                                " is a tracer run; it must be an MD run (coldblast md run)");
+  if (config.until > 0) truncate_run(md, config.until);
+  return compare_tracer_with_md(tracer, md);
+}
+}  // namespace
+
 CompareResult run_compare(const CompareConfig& config, const ReferenceExponents& reference) {
   config.validate();
   CompareResult result;
@@ -209,61 +271,12 @@ CompareResult run_compare(const CompareConfig& config, const ReferenceExponents&
     const auto found = result.run.series.find(name);
     if (found == result.run.series.end())
       throw std::invalid_argument("--observables: " + name + " is not recorded in " + config.run_dir.string());
-    const BlockSeries& series = found->second;
-    ObservableVerdict v;
-    v.name = name;
-    const std::string law = theory::observable_info(name).law;  // u_flow: the law of u_imp
-    v.alpha_theory = theory::to_double(exact.at(law).in_time);
-    v.alpha_theory_rational = theory::to_string(exact.at(law).in_time);
-    v.running = running_exponents(series);
-    v.alpha_measured = v.running.back().alpha;
-    v.alpha_error = v.running.back().error;
-    v.t_measured = v.running.back().t;
-    const double t_last = series.t.back();
-    result.until = std::max(result.until, t_last);
-    v.window = fit_power_law(series, t_last * std::pow(10.0, -config.window_decades), t_last);
-
-    double combined = v.alpha_error;
-    switch (config.against) {
-      case Reference::theory:
-        v.alpha_reference = v.alpha_theory;
-        v.tolerance = config.sigma * v.alpha_error + result.allowance;
-        break;
-      case Reference::paper: {
-        const PaperValue p = paper_table1(name);
-        v.alpha_reference = p.alpha;
-        v.alpha_reference_error = p.error;
-        combined = std::hypot(v.alpha_error, p.error);
-        v.tolerance = config.sigma * combined;
-        break;
-      }
-      case Reference::hydro:
-        v.alpha_reference = reference(name, v.t_measured);
-        v.tolerance = config.sigma * v.alpha_error + result.allowance;
-        break;
-    }
-    const double difference = v.alpha_measured - v.alpha_reference;
-    v.deviation_sigma = combined > 0 ? difference / combined : (difference == 0 ? 0.0 : INFINITY);
-    v.pass = std::isfinite(v.alpha_measured) && std::abs(difference) <= v.tolerance;
+    result.until = std::max(result.until, found->second.t.back());
+    ObservableVerdict v = judge_observable(name, found->second, exact, config, result.allowance, reference);
     result.pass = result.pass && v.pass;
     result.observables.push_back(std::move(v));
   }
-  if (!config.md_run.empty()) {
-    if (!is_tracer_run(result.run))
-      throw std::invalid_argument("--md-run compares a tracer run (coldblast tracer) with an MD run, but RUN_DIR = " +
-                                  result.run.directory.string() + " is an MD run");
-    RunData md;
-    try {
-      md = read_run(config.md_run);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("--md-run: ") + e.what());
-    }
-    if (is_tracer_run(md))
-      throw std::invalid_argument("--md-run = " + config.md_run.string() +
-                                  " is a tracer run; it must be an MD run (coldblast md run)");
-    if (config.until > 0) truncate_run(md, config.until);
-    result.tracer_md = compare_tracer_with_md(result.run, md);
-  }
+  if (!config.md_run.empty()) result.tracer_md = tracer_against_md(config, result.run);
   return result;
 }
 
