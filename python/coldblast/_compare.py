@@ -2,6 +2,7 @@
 import os
 
 from . import _coldblast
+from ._arguments import integer as _integer
 from . import _progress
 
 
@@ -46,7 +47,7 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
     """
     return _coldblast.compare(os.fspath(run_dir), str(against), float(sigma),
                               None if allowance is None else float(allowance), float(window_decades),
-                              0.0 if until is None else float(until), list(observables or []), int(hydro_cells),
+                              0.0 if until is None else float(until), list(observables or []), _integer(hydro_cells, "--hydro-cells"),
                               hydro_eos or "", None if hydro_phi is None else float(hydro_phi), hydro_transport or "",
                               "" if md_run is None else os.fspath(md_run), "" if out is None else os.fspath(out),
                               bool(figures), None)

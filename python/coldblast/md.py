@@ -7,6 +7,7 @@ import numpy as np
 
 from . import _coldblast
 from . import _progress
+from ._arguments import integer as _integer
 
 
 def _toml_value(value, key):
@@ -118,9 +119,3 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
     return SimpleNamespace(estimates=raw["estimates"], summary=raw["summary"],
                            realization0_files=raw["realization0_files"],
                            out=None if out is None else os.fspath(out))
-
-
-def _integer(value, name):
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-        raise ValueError(f"{name} = {value!r} is not an integer")
-    return int(value)

@@ -3,6 +3,7 @@ and the impurity prefactors computed by ``coldblast tracer`` (theory/computed_pr
 from fractions import Fraction
 
 from . import _coldblast
+from ._arguments import integer as _integer
 
 
 class Exponents(dict):
@@ -34,8 +35,7 @@ def exponents(d=2):
 
     Raises ValueError (the CLI's message, e.g. ``--d = 0 is outside [1, 10000]``) for d out of range.
     """
-    if isinstance(d, bool) or not isinstance(d, int):
-        raise ValueError(f"--d = {d!r} is not an integer")
+    d = _integer(d, "--d")
     raw = _coldblast.theory_exponents(d)
     frac = lambda pair: Fraction(*pair)
     result = Exponents({name: frac(value) for name, value in raw["in_time"].items()})
@@ -58,6 +58,5 @@ def computed_prefactors(d=2):
 
     Raises ValueError (the CLI's message) for d out of [1, 10000].
     """
-    if isinstance(d, bool) or not isinstance(d, int):
-        raise ValueError(f"--d = {d!r} is not an integer")
+    d = _integer(d, "--d")
     return _coldblast.theory_computed_prefactors(d)

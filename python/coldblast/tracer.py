@@ -5,7 +5,8 @@ from types import SimpleNamespace
 
 from . import _coldblast
 from . import _progress
-from .md import _integer, scene_arguments
+from ._arguments import integer as _integer
+from .md import scene_arguments
 
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",

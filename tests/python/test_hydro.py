@@ -59,3 +59,24 @@ def test_bad_input_is_the_cli_error(kwargs, flags):
     with pytest.raises(ValueError) as error:
         coldblast.hydro.core(progress=False, **kwargs)
     assert str(error.value) == cli_error("hydro", "core", *flags)
+
+
+@pytest.mark.parametrize("call,name", [
+    (lambda v: coldblast.hydro.core(d=v, until=50, cells=64, progress=False), "--d"),
+    (lambda v: coldblast.hydro.core(until=50, cells=v, progress=False), "--cells"),
+    (lambda v: coldblast.hydro.euler(d=v, until=50, progress=False), "--d"),
+    (lambda v: coldblast.tvns(d=v), "--d"),
+    (lambda v: coldblast.theory.exponents(v), "--d"),
+    (lambda v: coldblast.compare("no-such-run", hydro_cells=v), "--hydro-cells"),
+])
+@pytest.mark.parametrize("value", [2.5, 64.0, True, "2"])
+def test_integer_arguments_are_not_truncated(call, name, value):
+    # int(2.5) is 2: before, tvns(d=2.5) solved d = 2 and hydro.core(cells=100.7) ran 100 cells.
+    with pytest.raises(ValueError) as error:
+        call(value)
+    assert str(error.value) == f"{name} = {value!r} is not an integer"
+
+
+def test_numpy_integers_are_integers():
+    assert coldblast.tvns(d=np.int64(2)).A == coldblast.tvns(d=2).A
+    assert coldblast.theory.exponents(np.int32(3))["R_imp"] == coldblast.theory.exponents(3)["R_imp"]
