@@ -2,7 +2,7 @@
 import os
 
 from . import _coldblast
-from ._arguments import integer as _integer
+from ._arguments import flag, integer, names, number, text
 from . import _progress
 
 
@@ -25,8 +25,9 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
         Window fit over the last w decades of recorded time, (0, 6].
     until : float or None
         Measure as of this time (in [second, last] recorded time); None: all times.
-    observables : list of str or None
-        Subset of R_imp, C_imp, V_imp, u_imp, T0, n0; None: all recorded.
+    observables : list of str, str or None
+        Subset of R_imp, C_imp, V_imp, u_imp, T0, n0 (a list, or one string "R_imp,C_imp" as on the
+        command line); None: all recorded.
     hydro_cells : int
         Navier-Stokes cells for against="hydro", [16, 100000].
     hydro_eos, hydro_phi, hydro_transport : str, float, str or None
@@ -45,9 +46,13 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
     docs/cli.md), with ``pass`` True or False (no exception for a failed verdict).
     Raises ValueError with the CLI's message for bad input or a directory that is not a run.
     """
-    return _coldblast.compare(os.fspath(run_dir), str(against), float(sigma),
-                              None if allowance is None else float(allowance), float(window_decades),
-                              0.0 if until is None else float(until), list(observables or []), _integer(hydro_cells, "--hydro-cells"),
-                              hydro_eos or "", None if hydro_phi is None else float(hydro_phi), hydro_transport or "",
+    return _coldblast.compare(os.fspath(run_dir), text(against, "--against"), number(sigma, "--sigma"),
+                              None if allowance is None else number(allowance, "--allowance"),
+                              number(window_decades, "--window-decades"),
+                              0.0 if until is None else number(until, "--until"),
+                              names(observables, "--observables"), integer(hydro_cells, "--hydro-cells"),
+                              "" if hydro_eos is None else text(hydro_eos, "--hydro-eos"),
+                              None if hydro_phi is None else number(hydro_phi, "--hydro-phi"),
+                              "" if hydro_transport is None else text(hydro_transport, "--hydro-transport"),
                               "" if md_run is None else os.fspath(md_run), "" if out is None else os.fspath(out),
-                              bool(figures), None)
+                              flag(figures, "figures"), None)

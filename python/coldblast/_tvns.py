@@ -2,7 +2,7 @@
 import numpy as np
 
 from . import _coldblast
-from ._arguments import integer as _integer
+from ._arguments import integer, number, text
 
 
 class Tvns:
@@ -58,5 +58,5 @@ def tvns(d=2, gamma=None, eos="ideal", phi=0.0, tolerance=1e-13):
 
     Returns a :class:`Tvns`. Raises ValueError with the CLI's message for bad input.
     """
-    return Tvns(_coldblast.tvns_solve(_integer(d, "--d"), 0.0 if gamma is None else float(gamma), str(eos), float(phi),
-                                      float(tolerance)))
+    return Tvns(_coldblast.tvns_solve(integer(d, "--d"), 0.0 if gamma is None else number(gamma, "--gamma"),
+                                      text(eos, "--eos"), number(phi, "--phi"), number(tolerance, "--tolerance")))

@@ -3,15 +3,16 @@ from types import SimpleNamespace
 
 from . import _coldblast
 from . import _progress
-from ._arguments import integer as _integer
+from ._arguments import flag, integer, number, text
 from . import theory as _theory
 
 
 def _run(euler, d, until, cells, viscosity, kappa_prefactor, progress, eos="ideal", phi=0.0, transport="dilute"):
     label = "hydro euler" if euler else "hydro core"
-    raw = _coldblast.hydro_run(euler, _integer(d, "--d"), float(until or 0), _integer(cells, "--cells"), bool(viscosity),
-                               None if kappa_prefactor is None else float(kappa_prefactor), str(eos), float(phi),
-                               str(transport),
+    raw = _coldblast.hydro_run(euler, integer(d, "--d"), 0.0 if until is None else number(until, "--until"),
+                               integer(cells, "--cells"), flag(viscosity, "--viscosity"),
+                               None if kappa_prefactor is None else number(kappa_prefactor, "--kappa-prefactor"),
+                               text(eos, "--eos"), number(phi, "--phi"), text(transport, "--transport"),
                                _progress.callback(progress, label, "R/lambda", "{:.4g}"))
     return SimpleNamespace(**raw)
 
@@ -55,7 +56,7 @@ def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="id
     Ctrl-C raises KeyboardInterrupt within a fraction of a second.
     """
     result = _run(False, d, until, cells, viscosity, kappa_prefactor, progress, eos, phi, transport)
-    exact = _theory.exponents(_integer(d, "--d"))
+    exact = _theory.exponents(integer(d, "--d"))
     result.theory = {name: exact[name] for name in ("H", "n0", "T0", "R")}
     return result
 

@@ -5,7 +5,7 @@ from types import SimpleNamespace
 
 from . import _coldblast
 from . import _progress
-from ._arguments import integer as _integer
+from ._arguments import integer, number, text
 from .md import scene_arguments
 
 
@@ -59,12 +59,14 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
     not one of ...``), KeyboardInterrupt on Ctrl-C (nothing is written).
     """
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
-    raw = _coldblast.tracer_run(scene_file, scene_text, sets, None if seed is None else _integer(seed, "--seed"),
-                                str(background), str(transport), str(start),
-                                0 if trajectories is None else _integer(trajectories, "--trajectories"),
-                                _integer(threads, "--threads"), float(T), None if phi is None else float(phi),
-                                0.0 if start_time is None else float(start_time),
-                                _integer(frames_per_decade, "--frames-per-decade"), _integer(cells, "--cells"),
+    raw = _coldblast.tracer_run(scene_file, scene_text, sets, None if seed is None else integer(seed, "--seed"),
+                                text(background, "--background"), text(transport, "--transport"),
+                                text(start, "--start"),
+                                0 if trajectories is None else integer(trajectories, "--trajectories"),
+                                integer(threads, "--threads"), number(T, "--T"),
+                                None if phi is None else number(phi, "--phi"),
+                                0.0 if start_time is None else number(start_time, "--start-time"),
+                                integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
                                 "" if out is None else os.fspath(out),
                                 _progress.callback(progress, "tracer", "blocks"))
     return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],

@@ -67,3 +67,26 @@ def test_out_that_is_not_a_report_folder_is_the_cli_error_and_stays(tmp_path, wh
         assert path.is_fifo()
     else:
         assert [p.name for p in path.iterdir()] == ["mine.txt"]
+
+
+@pytest.mark.parametrize("kwargs,message", [
+    ({"sigma": "2"}, "--sigma = '2' is not a number"),
+    ({"until": True}, "--until = True is not a number"),
+    ({"against": None}, "--against = None is not a string"),
+    ({"figures": "no"}, "figures = 'no' is not True or False"),
+    ({"observables": 5}, "--observables = 5 is not a name or a list of names"),
+    ({"observables": ["R_imp", 3]}, "--observables = ['R_imp', 3] is not a name or a list of names"),
+])
+def test_argument_types_are_checked_by_name(kwargs, message):
+    # Before: bool("no") is True, str(None) the name "None", list("R_imp") five one-letter names,
+    # and float("2") passed; a bad type now fails before the run directory is read.
+    with pytest.raises(ValueError) as error:
+        coldblast.compare("no-such-run", **kwargs)
+    assert str(error.value) == message
+
+
+def test_observables_as_one_string_are_the_command_line_list():
+    as_list = coldblast.compare(FIXTURE, observables=["R_imp", "n0"], until=200, figures=False)
+    as_text = coldblast.compare(FIXTURE, observables="R_imp,n0", until=200, figures=False)
+    assert [v["name"] for v in as_text["observables"]] == ["R_imp", "n0"]
+    assert as_text == as_list

@@ -80,3 +80,18 @@ def test_integer_arguments_are_not_truncated(call, name, value):
 def test_numpy_integers_are_integers():
     assert coldblast.tvns(d=np.int64(2)).A == coldblast.tvns(d=2).A
     assert coldblast.theory.exponents(np.int32(3))["R_imp"] == coldblast.theory.exponents(3)["R_imp"]
+
+
+@pytest.mark.parametrize("call,message", [
+    (lambda: coldblast.hydro.core(until="1e4", progress=False), "--until = '1e4' is not a number"),
+    (lambda: coldblast.hydro.core(viscosity="no", progress=False), "--viscosity = 'no' is not True or False"),
+    (lambda: coldblast.hydro.core(eos=None, progress=False), "--eos = None is not a string"),
+    (lambda: coldblast.tvns(gamma="5/3"), "--gamma = '5/3' is not a number"),
+    (lambda: coldblast.tracer.run(T=None, background="equilibrium"), "--T = None is not a number"),
+    (lambda: coldblast.tracer.run(background=None), "--background = None is not a string"),
+])
+def test_argument_types_are_checked_by_name(call, message):
+    # bool("no") is True: hydro.core(viscosity="no") used to switch the viscosity on.
+    with pytest.raises(ValueError) as error:
+        call()
+    assert str(error.value) == message
