@@ -6,7 +6,9 @@
 // (`| head -c 10`) ends the process quietly by SIGPIPE's default action, as it does for GNU tools.
 #include <gsl/gsl_errno.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
@@ -35,6 +37,26 @@ void report(const std::string& line) {
   std::fflush(stderr);
 }
 
+/// "1e5" or "3.0e4" as the integer it denotes ("100000", "30000"); any other text unchanged, so
+/// that "2.5" or "1e-3" still fails to convert and CLI11 names the option. Counts are written that
+/// way in physics (1e5 trajectories, 3e4 realizations).
+std::string integer_text(const std::string& text) {
+  if (text.find_first_of(".eE") == std::string::npos) return text;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value != std::floor(value) ||
+      std::abs(value) > 9007199254740992.0)  // 2^53: every integer below is exact
+    return text;
+  return std::to_string(static_cast<long long>(value));
+}
+
+/// Every integer option of `app` and its subcommands accepts integer_text's forms.
+void accept_integer_notation(CLI::App& app) {
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_name() == "INT" || option->get_type_name() == "UINT") option->transform(integer_text);
+  for (CLI::App* command : app.get_subcommands({})) accept_integer_notation(*command);
+}
+
 int run(int argc, char** argv) {
   using namespace coldblast;
 #if COLDBLAST_HAVE_MPI
@@ -58,6 +80,7 @@ int run(int argc, char** argv) {
   cli::add_tvns_command(app);
   cli::add_hydro_command(app);
   cli::add_tracer_command(app);
+  accept_integer_notation(app);
 
   try {
     app.parse(argc, argv);
