@@ -41,8 +41,9 @@ std::vector<std::string> split_list(const std::string& text) {
 }
 
 void print_table(const compare::CompareResult& result) {
-  std::printf("MD (d = %d) against %s: errors by delete-one-block jackknife, tolerance %g sigma%s\n\n", result.d,
-              compare::to_string(result.against).c_str(), result.sigma,
+  std::printf("%s (d = %d) against %s: errors by delete-one-block jackknife, tolerance %g sigma%s\n\n",
+              compare::run_label(result.run).c_str(), result.d, compare::to_string(result.against).c_str(),
+              result.sigma,
               result.against == compare::Reference::paper
                   ? " (combined with the paper's error)"
                   : (" + allowance " + common::format_number(result.allowance)).c_str());

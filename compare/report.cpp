@@ -175,19 +175,19 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
     const double x0 = static_cast<double>(i % columns) * w;
     const double y0 = 1.0 - static_cast<double>(i / columns + 1) * h;
     const double t_last = s.t.back(), a_last = values.back();
-    script
-        << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << h << "\n"
-        << "set logscale xy\nset format x '10^{%L}'\nset xlabel 't (MD time units: m = 1, lengths as in the scene)'\n"
-        << "set ylabel '" << label(v.name) << "'\nset key " << (v.alpha_theory > 0 ? "bottom right" : "bottom left")
-        << " font ',9'\n"
-        << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name)
-        << ": {/Symbol a}_T = " << v.alpha_theory_rational << ", {/Symbol a}_S = "
-        << (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
-                ? common::format_measurement(v.alpha_measured, v.alpha_error)
-                : std::string("undefined (a mean <= 0)"))
-        << "'\n"
-        << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t 'MD', " << a_last << "*(x/" << t_last
-        << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{" << v.alpha_theory_rational << "}'\n";
+    script << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << h << "\n"
+           << "set logscale xy\nset format x '10^{%L}'\nset xlabel 't (units: m = 1, lengths as in the scene)'\n"
+           << "set ylabel '" << label(v.name) << "'\nset key " << (v.alpha_theory > 0 ? "bottom right" : "bottom left")
+           << " font ',9'\n"
+           << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name)
+           << ": {/Symbol a}_T = " << v.alpha_theory_rational << ", {/Symbol a}_S = "
+           << (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
+                   ? common::format_measurement(v.alpha_measured, v.alpha_error)
+                   : std::string("undefined (a mean <= 0)"))
+           << "'\n"
+           << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t '" << run_label(result.run) << "', "
+           << a_last << "*(x/" << t_last << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{"
+           << v.alpha_theory_rational << "}'\n";
     // Inset: running exponent.
     const bool rising = v.alpha_theory > 0;
     // Rising curves leave the top left empty, falling ones the top right.
@@ -316,7 +316,7 @@ std::string tracer_md_markdown(const TracerMdComparison& c, bool figures) {
 std::string markdown(const CompareResult& result, bool figures, const std::optional<DistributionFit>& fit,
                      const ExtraFigures& extra) {
   std::ostringstream md;
-  md << "# coldblast comparison: MD against " << to_string(result.against) << "\n\n"
+  md << "# coldblast comparison: " << run_label(result.run) << " against " << to_string(result.against) << "\n\n"
      << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
      << ", recorded times up to t = " << format_number(result.until) << ". Verdict: **" << verdict_word(result)
      << "** (tolerance: " << format_number(result.sigma) << " sigma";

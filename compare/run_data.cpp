@@ -109,6 +109,10 @@ bool is_tracer_run(const RunData& run) {
   return engine != run.summary.end() && engine->is_string() && engine->get<std::string>().rfind("tracer", 0) == 0;
 }
 
+std::string run_label(const RunData& run) {
+  return is_tracer_run(run) ? "tracer" : "MD";
+}
+
 RunData read_run(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory))
     throw std::invalid_argument("RUN_DIR = " + directory.string() + " is not a directory");

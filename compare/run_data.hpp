@@ -49,6 +49,9 @@ struct RunData {
 /// the key kinetic/tracer.cpp writes; MD runs have no "engine").
 bool is_tracer_run(const RunData& run);
 
+/// What made the run, for headings and legends: "tracer" (the kinetic Monte Carlo of Eq. (36)) or "MD".
+std::string run_label(const RunData& run);
+
 /// Reads blocks.csv and summary.json from `directory`; throws std::invalid_argument naming the
 /// file (and line) when the directory, a file or a field is missing or malformed.
 RunData read_run(const std::filesystem::path& directory);

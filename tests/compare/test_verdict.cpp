@@ -253,3 +253,28 @@ TEST_CASE("a report replaces only a new, empty or previous report's folder, and 
   fs::remove_all(root);
   fs::remove_all(dir);
 }
+
+TEST_CASE("a tracer run is labelled tracer, not MD, in the report and the figure legend", "[fast]") {
+  // is_tracer_run reads summary.json's "engine" (written by kinetic/tracer.cpp); MD runs have none.
+  const fs::path dir = make_run(2);
+  CompareConfig config;
+  config.run_dir = dir;
+  CompareResult result = run_compare(config);
+  CHECK(run_label(result.run) == "MD");
+  result.run.summary["engine"] = "tracer (Monte Carlo of Eq. (36))";
+  CHECK(run_label(result.run) == "tracer");
+  result.run.summary["engine"] = "something else";
+  CHECK(run_label(result.run) == "MD");
+  result.run.summary["engine"] = "tracer";
+
+  const fs::path out = coldblast::test::unique_temp_path("coldblast_verdict_tracer_label");
+  write_report(result, {out, true});
+  std::ifstream report(out / "report.md"), script(out / "figures" / "observables.gp");
+  const std::string text((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  const std::string plot((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
+  CHECK(text.rfind("# coldblast comparison: tracer against theory\n", 0) == 0);
+  CHECK(plot.find("t 'tracer'") != std::string::npos);
+  CHECK(plot.find("t 'MD'") == std::string::npos);
+  fs::remove_all(out);
+  fs::remove_all(dir);
+}
