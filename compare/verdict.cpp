@@ -63,11 +63,13 @@ void CompareConfig::validate() const {
                                 "comparison is --against " +
                                 to_string(against));
   }
-  for (const auto& name : observables) {
-    const theory::ObservableInfo* info = theory::find_observable(name);
+  for (auto name = observables.begin(); name != observables.end(); ++name) {
+    const theory::ObservableInfo* info = theory::find_observable(*name);
     if (!info || !info->verdict)
-      throw std::invalid_argument("--observables: " + name + " is unknown; allowed: " +
+      throw std::invalid_argument("--observables: " + *name + " is unknown; allowed: " +
                                   theory::join_names(theory::observable_names(theory::is_verdict)));
+    if (std::find(observables.begin(), name, *name) != name)
+      throw std::invalid_argument("--observables: " + *name + " is given twice");
   }
 }
 

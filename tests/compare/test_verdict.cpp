@@ -129,6 +129,10 @@ TEST_CASE("bad compare configs name the option", "[fast]") {
   config.sigma = 2.0;
   config.observables = {"speed"};
   CHECK_THROWS_WITH(run_compare(config), Catch::Contains("speed"));
+  config.observables = {"R_imp", "n0", "R_imp"};  // was judged, and listed, twice
+  CHECK_THROWS_WITH(run_compare(config), Catch::Equals("--observables: R_imp is given twice"));
+  config.observables = {"R_imp", "n0"};
+  CHECK(run_compare(config).observables.size() == 2);
   config.observables = {};
   config.allowance = 2.0;
   CHECK_THROWS_WITH(run_compare(config), Catch::Contains("--allowance"));
