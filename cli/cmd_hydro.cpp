@@ -1,7 +1,6 @@
 // coldblast hydro core|euler: the radial Navier–Stokes blast (hydro/navier_stokes.hpp, paper Sec. III,
 // Eqs. (4), (11)-(20)): running exponents of H, n0, T0 beside the theory's rationals, or the Euler
 // limit (κ = μ = 0) against the exact TvNS solution (Eq. (1) [R-shock]).
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -64,13 +63,10 @@ hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
 /// Progress on stderr: a line per decade of R/λ, and at the next sample once 2 s have passed
 /// without one (a fine grid takes minutes per decade: the cost grows as cells²).
 hydro::NavierStokesResult solve(const hydro::NavierStokesConfig& config, const char* mode) {
-  using clock = std::chrono::steady_clock;
   int count = 0;
-  auto last = clock::now();
+  ProgressPacer pacer;
   return hydro::run_navier_stokes(config, [&](const hydro::NavierStokesSample& s) {
-    const auto now = clock::now();
-    if (++count % config.numerics.samples_per_decade != 0 && now - last < std::chrono::seconds(2)) return;
-    last = now;
+    if (!pacer.due(++count % config.numerics.samples_per_decade == 0)) return;
     std::cerr << "hydro " << mode << ": R/lambda = " << number(s.R_over_lambda, 4) << '\n';
   });
 }

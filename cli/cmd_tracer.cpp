@@ -2,6 +2,7 @@
 // [LB-full]) in a Navier–Stokes, TvNS or equilibrium background. Maps flags onto a
 // kinetic::TracerConfig, calls kinetic::run_tracer and writes the `md run` run directory
 // (docs/kinetic.md), over MPI ranks under mpirun (MPI build). Shards are combined with `coldblast md merge`.
+#include <cmath>
 #include <cstdio>
 
 #include "cli/commands.hpp"
@@ -41,15 +42,23 @@ void run(TracerOptions& o) {
   config.scene = kinetic::parse_tracer_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
   config.phi = o.phi;
   std::tie(config.shard_index, config.shard_count) = md::parse_shard(o.shard);
-  const auto progress = [](long long done, long long total) {
+  kinetic::TracerProgress progress;
+  ProgressPacer pacer;
+  double decade = -1e300;
+  progress.background = [&pacer, &decade](double R_over_lambda) {
+    const double reached = std::floor(std::log10(R_over_lambda));
+    if (!pacer.due(reached > decade)) return;
+    decade = reached;
+    std::fprintf(stderr, "tracer: Navier-Stokes background, R/lambda = %.4g\n", R_over_lambda);
+  };
+  progress.blocks = [](long long done, long long total) {
     if (done == total || done % 16 == 0) std::fprintf(stderr, "\rtracer: %lld/%lld blocks   ", done, total);
     if (done == total) std::fprintf(stderr, "\n");
   };
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks (md's launcher); rank 0 alone reports and writes.
-  std::function<void(long long, long long)> report = progress;
-  if (md::MpiSession::rank() != 0) report = nullptr;
-  const kinetic::TracerResult result = kinetic::run_tracer_mpi(config, report);
+  if (md::MpiSession::rank() != 0) progress = {};
+  const kinetic::TracerResult result = kinetic::run_tracer_mpi(config, progress);
   if (md::MpiSession::rank() != 0) return;
 #else
   const kinetic::TracerResult result = kinetic::run_tracer(config, progress);

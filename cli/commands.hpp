@@ -2,6 +2,7 @@
 // One registration function per subcommand (cli/cmd_<name>.cpp), called once by main().
 // Each maps flags to its module's Config, calls run_<x>() and writes files and the summary.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <string>
 
 #include "common/output.hpp"
@@ -35,6 +36,21 @@ inline CLI::Option* add_format_option(CLI::App& command, Format& format) {
 /// (coldblast compare: 3 when the verdict is "fail"); main() returns `code`.
 struct ExitStatus {
   int code;
+};
+
+/// When a progress line on stderr is due: at a milestone (a decade of R/λ, the last block), or at
+/// the first call 2 s after the previous line, so that slow stretches still show progress.
+class ProgressPacer {
+ public:
+  bool due(bool milestone) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!milestone && now - last_ < std::chrono::seconds(2)) return false;
+    last_ = now;
+    return true;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
 /// Prints a JSON document to stdout (2-space indentation, trailing newline).

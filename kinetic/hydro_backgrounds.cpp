@@ -14,7 +14,8 @@ using common::format_number;
 
 std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastConfig& scene, const ContactModel& contact,
                                                               int frames_per_decade, int cells,
-                                                              std::string* description) {
+                                                              std::string* description,
+                                                              const std::function<void(double)>& progress) {
   hydro::NavierStokesConfig ns;
   ns.physics.d = scene.d;
   ns.physics.E = scene.E;
@@ -47,7 +48,9 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   // self-similar continuation (and with it the start) does not change with the frame density.
   const double ratio = std::pow(10.0, 1.0 / frames_per_decade), first = 1.25 * start;
   for (double R = first; R < until / std::sqrt(ratio); R *= ratio) ns.numerics.profile_R_over_lambda.push_back(R);
-  const hydro::NavierStokesResult solution = hydro::run_navier_stokes(ns);
+  hydro::NavierStokesProgress sample_progress;
+  if (progress) sample_progress = [&](const hydro::NavierStokesSample& s) { progress(s.R_over_lambda); };
+  const hydro::NavierStokesResult solution = hydro::run_navier_stokes(ns, sample_progress);
 
   std::vector<double> x;
   std::vector<BackgroundFrame> frames;

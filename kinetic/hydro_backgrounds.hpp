@@ -2,6 +2,7 @@
 // The blast backgrounds of the tracer: the radial Navier–Stokes solution (hydro/navier_stokes.hpp)
 // stored on its self-similar grid at frames_per_decade times per decade of R/λ, and the exact
 // TvNS (Euler) solution (hydro/tvns.hpp), both in the scene's physical units (E, n, a; m = 1).
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -14,9 +15,11 @@ namespace coldblast::kinetic {
 /// 1.05 × R(t_max)/λ; its profiles become the frames. Dilute ideal gas, or with contact.enskog the
 /// dense gas of issue 12 (Henderson / Carnahan–Starling EOS at the scene's φ, Enskog transport). Throws
 /// std::runtime_error when the solution does not reach t_max (the missing-background error of `coldblast tracer`).
+/// `progress(R/λ)` follows the solve (may be empty).
 std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastConfig& scene, const ContactModel& contact,
                                                               int frames_per_decade, int cells,
-                                                              std::string* description = nullptr);
+                                                              std::string* description = nullptr,
+                                                              const std::function<void(double)>& progress = {});
 
 /// Exact ideal-gas TvNS blast (γ = 1 + 2/d) sampled at 8 × 256 points of r/R in (0, 1), continued
 /// self-similarly to any time.

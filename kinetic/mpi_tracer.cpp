@@ -39,11 +39,12 @@ TracerBlockSums from_bytes(const std::vector<char>& bytes) {
 
 }  // namespace
 
-TracerResult run_tracer_mpi(const TracerConfig& config, const std::function<void(long long, long long)>& progress) {
+TracerResult run_tracer_mpi(const TracerConfig& config, const TracerProgress& progress) {
   const int ranks = md::MpiSession::size();
   if (ranks == 1) return run_tracer(config, progress);
-  TracerRun run(config);  // every rank: validation (bad input ends every rank alike) and the background
-  std::mutex mutex;       // guards run's blocks and done
+  TracerRun run(config,
+                progress.background);  // every rank: validation (bad input ends every rank alike) and the background
+  std::mutex mutex;                    // guards run's blocks and done
   long long done = 0;
   const auto total = static_cast<long long>(run.blocks().size());
   md::MpiBlockWork work;
@@ -55,7 +56,7 @@ TracerResult run_tracer_mpi(const TracerConfig& config, const std::function<void
     std::lock_guard<std::mutex> lock(mutex);
     run.add(b, std::move(block));
     ++done;
-    if (progress) progress(done, total);
+    if (progress.blocks) progress.blocks(done, total);
   };
   md::run_blocks_mpi(work);
   if (md::MpiSession::rank() != 0) return TracerResult{};

@@ -12,6 +12,6 @@ namespace coldblast::kinetic {
 /// (the same on every rank of a homogeneous cluster); rank 0 returns the whole result and alone
 /// calls `progress` (blocks done, blocks total); other ranks return an empty result. With one rank
 /// (or without a launcher) this is run_tracer. Errors as md::run_blocks_mpi.
-TracerResult run_tracer_mpi(const TracerConfig& config, const std::function<void(long long, long long)>& progress = {});
+TracerResult run_tracer_mpi(const TracerConfig& config, const TracerProgress& progress = {});
 
 }  // namespace coldblast::kinetic

@@ -224,7 +224,8 @@ md::BlastConfig parse_tracer_scene(const std::string& toml_text, const std::vect
   return md::parse_scene(toml_text, all, source);
 }
 
-std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description) {
+std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description,
+                                            const BackgroundProgress& progress) {
   const md::BlastConfig& c = config.scene;
   ContactModel contact{c.d, c.a, c.impurities.radius > 0.0 ? c.impurities.radius : c.a, config.transport == "enskog"};
   if (config.background == "equilibrium") {
@@ -236,7 +237,7 @@ std::unique_ptr<Background> make_background(const TracerConfig& config, std::str
     return std::make_unique<EquilibriumBackground>(c.d, n, config.T, contact);
   }
   if (config.background == "tvns") return make_tvns_background(c, contact, description);
-  return make_navier_stokes_background(c, contact, config.frames_per_decade, config.cells, description);
+  return make_navier_stokes_background(c, contact, config.frames_per_decade, config.cells, description, progress);
 }
 
 std::uint64_t TracerResult::collisions() const {
@@ -295,7 +296,8 @@ struct TracerRun::Context {
   std::chrono::steady_clock::time_point started;
 };
 
-TracerRun::TracerRun(const TracerConfig& config) : context_(std::make_unique<Context>()) {
+TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progress)
+    : context_(std::make_unique<Context>()) {
   config.validate();
   Context& x = *context_;
   x.started = std::chrono::steady_clock::now();
@@ -315,7 +317,7 @@ TracerRun::TracerRun(const TracerConfig& config) : context_(std::make_unique<Con
   result.config.scene = scene.config;
   result.start_time = config.resolved_start_time();
 
-  x.background = make_background(config, &result.background_description);
+  x.background = make_background(config, &result.background_description, progress);
   if (const auto* grid = dynamic_cast<const GridBackground*>(x.background.get()))
     result.background_frames = grid->frame_count();
   const ImpurityModel impurity{scene.config.d, scene.config.impurities.mass, scene.config.a + scene.impurity_radius};
@@ -351,8 +353,8 @@ TracerResult TracerRun::result(int ranks) const {
   return result;
 }
 
-TracerResult run_tracer(const TracerConfig& config, const std::function<void(long long, long long)>& progress) {
-  TracerRun run(config);
+TracerResult run_tracer(const TracerConfig& config, const TracerProgress& progress) {
+  TracerRun run(config, progress.background);
   const std::vector<long long>& owned = run.blocks();
   std::vector<TracerBlockSums> outputs(owned.size());
   std::mutex mutex;
@@ -361,7 +363,7 @@ TracerResult run_tracer(const TracerConfig& config, const std::function<void(lon
     outputs[slot] = run.run_block(owned[slot], stop);
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
-    if (progress) progress(done, static_cast<long long>(owned.size()));
+    if (progress.blocks) progress.blocks(done, static_cast<long long>(owned.size()));
   });
   for (std::size_t slot = 0; slot < owned.size(); ++slot) run.add(owned[slot], std::move(outputs[slot]));
   return run.result();

@@ -84,12 +84,23 @@ struct TracerResult {
 md::BlastConfig parse_tracer_scene(const std::string& toml_text, const std::vector<std::string>& overrides,
                                    const std::string& source);
 
-/// The background of a config (built once per run; `ns` integrates the Navier–Stokes blast).
-std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description = nullptr);
+/// Progress of the `ns` background's Navier–Stokes solve: called with the shock's R/λ at each of its
+/// diagnostics' samples (20 per decade; the solve ends just after t_max).
+using BackgroundProgress = std::function<void(double R_over_lambda)>;
 
-/// Runs the trajectories of this shard on config.threads threads (md::run_slots_in_parallel);
-/// progress(done, total) after each block (may be empty).
-TracerResult run_tracer(const TracerConfig& config, const std::function<void(long long, long long)>& progress = {});
+/// Progress of a run: the background's solve, then blocks(done, total) after each block. Either may
+/// be empty.
+struct TracerProgress {
+  BackgroundProgress background;
+  std::function<void(long long, long long)> blocks;
+};
+
+/// The background of a config (built once per run; `ns` integrates the Navier–Stokes blast).
+std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description = nullptr,
+                                            const BackgroundProgress& progress = {});
+
+/// Runs the trajectories of this shard on config.threads threads (md::run_slots_in_parallel).
+TracerResult run_tracer(const TracerConfig& config, const TracerProgress& progress = {});
 
 /// One block's sums: md's layout (R_imp, V_imp, C_imp, u_imp, p_imp) and the tracer's own.
 struct TracerBlockSums {
@@ -102,7 +113,8 @@ struct TracerBlockSums {
 /// thread in any order; `add` collects them, and the result depends only on the blocks.
 class TracerRun {
  public:
-  explicit TracerRun(const TracerConfig& config);  ///< validates; builds the background (ns: solves NS)
+  /// Validates; builds the background (ns: solves NS, reporting to `progress`).
+  explicit TracerRun(const TracerConfig& config, const BackgroundProgress& progress = {});
   ~TracerRun();
   TracerRun(const TracerRun&) = delete;
   TracerRun& operator=(const TracerRun&) = delete;

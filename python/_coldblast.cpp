@@ -404,9 +404,11 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   config.cells = o.cells;
   Progress progress(progress_callback);
   const std::function<kinetic::TracerResult()> work = [&] {
-    return kinetic::run_tracer(config, [&progress](long long done, long long total) {
+    kinetic::TracerProgress report;
+    report.blocks = [&progress](long long done, long long total) {
       progress.set(static_cast<double>(done), static_cast<double>(total));
-    });
+    };
+    return kinetic::run_tracer(config, report);
   };
   const kinetic::TracerResult result = run_interruptible(work, progress);
   if (!out.empty()) kinetic::write_tracer_outputs(result, out);
