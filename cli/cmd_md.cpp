@@ -187,7 +187,12 @@ void equilibrium_md(const MdEquilibriumOptions& o) {
                                            {"diffusion_lag", "--diffusion-lag"},
                                            {"diffusion_windows", "--diffusion-windows"}};
   common::with_field_names(flags, [&] { o.config.validate(); });
-  const md::EquilibriumResult r = md::run_equilibrium(o.config);
+  ProgressPacer pacer;
+  const md::EquilibriumResult r =
+      md::run_equilibrium(o.config, [&pacer](const char* stage, long long done, long long total) {
+        if (pacer.due(done == 0 || done == total))
+          std::fprintf(stderr, "md equilibrium: %s %lld/%lld\n", stage, done, total);
+      });
   common::Json j;
   j["d"] = r.config.d;
   j["phi"] = r.config.phi;

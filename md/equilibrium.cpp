@@ -55,7 +55,8 @@ void mean_error(const std::vector<double>& x, double& mean, double& error) {
 /// can be faster than √(2E/m) (E the conserved kinetic energy), so each coordinate moves less than
 /// L/2 between samples and the minimum image of the wrapped difference is the true displacement.
 template <int D, class Queue>
-void measure_self_diffusion(Engine<D, Queue>& engine, const EquilibriumConfig& c, double box, EquilibriumResult& r) {
+void measure_self_diffusion(Engine<D, Queue>& engine, const EquilibriumConfig& c, double box, EquilibriumResult& r,
+                            const std::function<void(const char*, long long, long long)>& report) {
   const std::size_t N = engine.size();
   const double lag = c.diffusion_lag, v_max = std::sqrt(2.0 * engine.kinetic_energy());
   const long long k = std::max(1LL, static_cast<long long>(std::ceil(lag * v_max / (0.4 * box))));
@@ -91,13 +92,17 @@ void measure_self_diffusion(Engine<D, Queue>& engine, const EquilibriumConfig& c
     r.center_of_mass_error = std::max(r.center_of_mass_error, (centre / static_cast<double>(N) - drift).norm());
     msd_window.push_back(msd_lag);
     D_window.push_back((squares() - msd_lag) / (2.0 * D * lag));
+    report("diffusion windows", w + 1, c.diffusion_windows);
   }
   mean_error(D_window, r.diffusion, r.diffusion_error);
   mean_error(msd_window, r.msd_lag, r.msd_lag_error);
 }
 
 template <int D, class Queue>
-EquilibriumResult run(const EquilibriumConfig& c) {
+EquilibriumResult run(const EquilibriumConfig& c, const EquilibriumProgress& progress) {
+  const auto report = [&](const char* stage, long long done, long long total) {
+    if (progress) progress(stage, done, total);
+  };
   EquilibriumResult r;
   r.config = c;
   const double volume = c.particles * theory::unit_ball_volume(D) * std::pow(c.a, D) / c.phi;
@@ -111,7 +116,9 @@ EquilibriumResult run(const EquilibriumConfig& c) {
   const double e0 = engine.kinetic_energy();
   const double N = static_cast<double>(c.particles);
   const auto started = std::chrono::steady_clock::now();
+  report("equilibration", 0, 1);
   engine.run_collisions(static_cast<std::uint64_t>(c.equilibration_per_particle * N));
+  report("equilibration", 1, 1);
   const std::uint64_t per_block = static_cast<std::uint64_t>(c.collisions / c.blocks);
   const double sigma = 2.0 * c.a;
   std::vector<double> Z, nu, Z_rate;
@@ -125,8 +132,9 @@ EquilibriumResult run(const EquilibriumConfig& c) {
     Z.push_back(1.0 + (engine.virial_sum() - w0) / (D * N * T * dt));
     nu.push_back(rate);
     Z_rate.push_back(1.0 + rate * sigma * std::sqrt(M_PI / (4.0 * T)) / D);
+    report("blocks", b + 1, c.blocks);
   }
-  if (c.diffusion_lag > 0.0) measure_self_diffusion(engine, c, r.box_side, r);
+  if (c.diffusion_lag > 0.0) measure_self_diffusion(engine, c, r.box_side, r, report);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   r.collisions_total = engine.collision_count();
   r.collisions_per_second = r.collisions_total / r.wall_seconds;
@@ -141,11 +149,12 @@ EquilibriumResult run(const EquilibriumConfig& c) {
 }
 }  // namespace
 
-EquilibriumResult run_equilibrium(const EquilibriumConfig& config) {
+EquilibriumResult run_equilibrium(const EquilibriumConfig& config, const EquilibriumProgress& progress) {
   config.validate();
   const bool heap = config.queue == "heap";
-  if (config.d == 2) return heap ? run<2, HeapEventQueue>(config) : run<2, CalendarEventQueue>(config);
-  return heap ? run<3, HeapEventQueue>(config) : run<3, CalendarEventQueue>(config);
+  if (config.d == 2)
+    return heap ? run<2, HeapEventQueue>(config, progress) : run<2, CalendarEventQueue>(config, progress);
+  return heap ? run<3, HeapEventQueue>(config, progress) : run<3, CalendarEventQueue>(config, progress);
 }
 
 }  // namespace coldblast::md

@@ -5,6 +5,7 @@
 // optionally the self-diffusion coefficient from the mean squared displacement (every particle is
 // a tagged particle: the impurity of equal mass and radius, compared with coldblast tracer).
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace coldblast::md {
@@ -49,8 +50,12 @@ struct EquilibriumResult {
   double wall_seconds = 0.0, collisions_per_second = 0.0;
 };
 
+/// Progress of run_equilibrium: (stage, done, total) with stage "equilibration" (0 of 1 before,
+/// 1 of 1 after), then "blocks" after each measured block, then "diffusion windows" after each.
+using EquilibriumProgress = std::function<void(const char* stage, long long done, long long total)>;
+
 /// Runs equilibrium MD; throws std::invalid_argument for bad input.
-EquilibriumResult run_equilibrium(const EquilibriumConfig& config);
+EquilibriumResult run_equilibrium(const EquilibriumConfig& config, const EquilibriumProgress& progress = {});
 
 /// Henderson's 2D equation of state (1 + φ²/8)/(1 - φ)² (Mol. Phys. 30, 971 (1975)).
 double henderson_Z(double phi);

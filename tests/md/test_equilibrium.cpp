@@ -5,6 +5,8 @@
 // state: for Maxwellian velocities the collision-averaged normal speed is √(π k_B T/m) (σ = 2a).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "md/equilibrium.hpp"
 
@@ -84,4 +86,33 @@ TEST_CASE("equilibrium input is validated", "[fast]") {
   c = EquilibriumConfig{};
   c.diffusion_windows = 1;
   CHECK_THROWS_WITH(run_equilibrium(c), Catch::Contains("diffusion_windows = 1"));
+}
+
+TEST_CASE("equilibrium progress reports every stage in order and does not change the run", "[fast]") {
+  EquilibriumConfig c;
+  c.d = 2;
+  c.phi = 0.2;
+  c.particles = 400;
+  c.collisions = 20000;
+  c.blocks = 4;
+  c.diffusion_lag = 1.0;
+  c.diffusion_windows = 3;
+  std::vector<std::string> seen;
+  const EquilibriumResult with = run_equilibrium(c, [&](const char* stage, long long done, long long total) {
+    seen.push_back(std::string(stage) + " " + std::to_string(done) + "/" + std::to_string(total));
+  });
+  const std::vector<std::string> expected{"equilibration 0/1",
+                                          "equilibration 1/1",
+                                          "blocks 1/4",
+                                          "blocks 2/4",
+                                          "blocks 3/4",
+                                          "blocks 4/4",
+                                          "diffusion windows 1/3",
+                                          "diffusion windows 2/3",
+                                          "diffusion windows 3/3"};
+  CHECK(seen == expected);
+  const EquilibriumResult without = run_equilibrium(c);
+  CHECK(with.Z == without.Z);
+  CHECK(with.diffusion == without.diffusion);
+  CHECK(with.collisions_total == without.collisions_total);
 }
