@@ -1,5 +1,6 @@
 // coldblast compare: MD running exponents against theory, the paper's Table 1 or hydro, with a
 // verdict (exit 0 pass, 3 fail), a Markdown report and figures.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -79,13 +80,16 @@ void print_table(const compare::CompareResult& result) {
                 result.continuum->model.describe().c_str());
     std::printf("%-10s %-20s %-20s %9s %8s %7s  %s\n", "quantity", "MD", "NS", "MD/NS-1", "dev/sig", "bound",
                 "verdict");
+    // "value±error" to the error's second digit, padded to 20 columns (± is two bytes in UTF-8).
+    const auto cell = [](double value, double error) {
+      std::string text = common::format_measurement(value, error);
+      text.erase(std::remove(text.begin(), text.end(), ' '), text.end());
+      return text + std::string(text.size() < 21 ? 21 - text.size() : 0, ' ');  // 20 visible columns
+    };
     for (const auto& a : result.amplitudes) {
-      char measured[64], reference[64];
-      std::snprintf(measured, sizeof measured, "%.5g±%.2g", a.measured, a.error);
-      std::snprintf(reference, sizeof reference, "%.5g±%.2g", a.reference, a.reference_error);
-      std::printf("%-10s %-20s %-20s %+8.2f%% %+8.2f %6.2g%%  %s\n", a.name.c_str(), measured, reference,
-                  100 * a.relative_difference, a.deviation_sigma, 100 * a.continuum_bound,
-                  compare::to_string(a.outcome).c_str());
+      std::printf("%-10s %s %s %+8.2f%% %+8.2f %6.2g%%  %s\n", a.name.c_str(), cell(a.measured, a.error).c_str(),
+                  cell(a.reference, a.reference_error).c_str(), 100 * a.relative_difference, a.deviation_sigma,
+                  100 * a.continuum_bound, compare::to_string(a.outcome).c_str());
     }
     std::printf(
         "(sigma combines the MD error and the NS value's numerical error; a miss is beyond k sigma but within\n"
@@ -140,7 +144,21 @@ void run(CompareOptions& options) {
     throw std::invalid_argument("--observables = '" + options.observables + "' names no observable");
   if (options.allowance_option->count() > 0) options.config.allowance = options.allowance;
   options.config.hydro_model = hydro_model(options);
-  const compare::CompareResult result = compare::run_compare(options.config);
+  // The continuum's solves (--against hydro) take seconds, minutes with --hydro-cells in the
+  // thousands: a line when a solve starts, then per decade of R/λ or every 2 s.
+  ProgressPacer pacer;
+  std::string solving;
+  double decade = 0;
+  compare::CompareProgress progress;
+  progress.continuum = [&](const std::string& solve, double R_over_lambda) {
+    const double reached = std::floor(std::log10(R_over_lambda));
+    if (!pacer.due(solve != solving || reached > decade)) return;
+    solving = solve;
+    decade = reached;
+    std::cerr << "compare: Navier-Stokes " << solve << ": R/lambda = " << common::format_significant(R_over_lambda, 4)
+              << '\n';
+  };
+  const compare::CompareResult result = compare::run_compare(options.config, progress);
   if (!options.out.empty()) {
     const auto files = compare::write_report(result, {options.out, !options.no_figures});
     std::cerr << "compare: wrote " << files.size() << " files to " << options.out << '\n';

@@ -77,7 +77,8 @@ double run_packing_fraction(const RunData& run) {
 }
 
 hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
-                                            std::vector<double> profile_R_over_lambda) {
+                                            std::vector<double> profile_R_over_lambda,
+                                            const ContinuumProgress& progress) {
   hydro::NavierStokesConfig config;
   config.physics.d = d;
   config.physics.E = 1.0;
@@ -89,7 +90,9 @@ hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, doub
   config.numerics.cells = cells;
   config.numerics.profile_R_over_lambda = std::move(profile_R_over_lambda);
   config.until_R_over_lambda = until;
-  return hydro::run_navier_stokes(config);
+  if (!progress) return hydro::run_navier_stokes(config);
+  const std::string name = model.describe() + ", " + std::to_string(cells) + " cells";
+  return hydro::run_navier_stokes(config, [&](const hydro::NavierStokesSample& s) { progress(name, s.R_over_lambda); });
 }
 
 namespace {
@@ -348,7 +351,7 @@ CoreSize binned_core_size(const std::vector<double>& r_centre, const std::vector
 }
 
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
-                                                          double until) {
+                                                          double until, const ContinuumProgress& progress) {
   auto reference = std::make_shared<ContinuumReference>();
   reference->model = model;
   const double t_last = run.series.begin()->second.t.back();
@@ -359,7 +362,7 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   reference->R_over_lambda_last = x;
   const double end = std::max({20.0, 1.5 * x, until});
   const std::vector<double> targets = profile_targets(x);
-  reference->ns = solve_hydro_model(run.d, model, end, cells, targets);
+  reference->ns = solve_hydro_model(run.d, model, end, cells, targets, progress);
   const double ball = ball_radius_over_lambda(run);
   const std::vector<double> edges = md_bin_edges(run);
   // The NS at the MD's last time t, measured in the MD's units: R_NS(t) is Eq. (1) with the NS's own
@@ -371,7 +374,8 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   reference->amplitudes = interpolated_amplitudes(reference->ns, run.d, x / scale, ball, edges, scale, &reading);
   // The NS's own numerical error: the grid (2 × cells, to the MD's R/λ only) and the reading.
   const int other_cells = cells <= 50000 ? 2 * cells : cells / 2;  // within hydro's [16, 100000]
-  const hydro::NavierStokesResult fine = solve_hydro_model(run.d, model, std::max(20.0, 1.5 * x), other_cells, targets);
+  const hydro::NavierStokesResult fine =
+      solve_hydro_model(run.d, model, std::max(20.0, 1.5 * x), other_cells, targets, progress);
   const ContinuumAmplitudes grid = interpolated_amplitudes(fine, run.d, x / scale, ball, edges, scale);
   for (auto field : scalar_fields)
     reference->errors.*field = std::hypot(grid.*field - reference->amplitudes.*field, reading.*field);
@@ -389,7 +393,7 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   }
   if (!model.dilute()) {
     // only for the figure: no further than the MD's R/λ needs
-    reference->ns_dilute = solve_hydro_model(run.d, HydroModel{}, std::max(20.0, 1.5 * x), cells, targets);
+    reference->ns_dilute = solve_hydro_model(run.d, HydroModel{}, std::max(20.0, 1.5 * x), cells, targets, progress);
     curves.push_back(ns_curve(nearest_profile(*reference->ns_dilute, x), run.d, ProfileCurve::Kind::ns_dilute,
                               "NS, dilute ideal gas" + at));
   }

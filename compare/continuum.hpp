@@ -4,6 +4,7 @@
 // solver themselves: the Navier–Stokes blast of the chosen model at the MD's own R/λ (exponents,
 // core amplitudes, profile at the MD's last time), the dilute NS profile, and the exact TvNS
 // profiles for the ideal gas and for the hard-particle EOS at the run's packing fraction.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -93,13 +94,18 @@ struct ContinuumReference {
 /// the same at 2 `cells` to max(20, 1.5 R/λ_last) for the amplitudes' grid error, the dilute NS to
 /// max(20, 1.5 R/λ_last) when the model is not dilute, and the TvNS profiles. `cells` as
 /// CompareConfig::hydro_cells. Throws std::invalid_argument if the run has no λ or R/λ ≤ 2.
+/// Progress of those solves: (which solve, e.g. "dense NS (...), 256 cells"; the R/λ it reached),
+/// at each of its diagnostics' samples (20 per decade).
+using ContinuumProgress = std::function<void(const std::string& solve, double R_over_lambda)>;
+
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
-                                                          double until = 0.0);
+                                                          double until = 0.0, const ContinuumProgress& progress = {});
 
 /// The NS blast of `model` in scaled units (E = n∞ = λ = 1) from R/λ = 2 to `until`, with extra
-/// profiles at `profile_R_over_lambda`.
+/// profiles at `profile_R_over_lambda`; progress (may be empty) names it by model.describe() and cells.
 hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
-                                            std::vector<double> profile_R_over_lambda = {});
+                                            std::vector<double> profile_R_over_lambda = {},
+                                            const ContinuumProgress& progress = {});
 
 /// R_MD/R_NS at the MD's time t: the MD's shock radius over Eq. (1) with the NS blast's amplitude A.
 double md_over_ns_radius(const RunData& run, double A, double t);

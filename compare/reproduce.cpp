@@ -209,7 +209,11 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
       config.hydro_until > 0 ? config.hydro_until : (config.scale == ReproduceScale::quick ? 1e4 : 1e6);
   say(progress, "step 3/5: Navier–Stokes blast, " + model.describe() +
                     ", at the MD's R/lambda and up to R/lambda = " + common::format_number(until));
-  const auto continuum = solve_continuum(run, model, 256, until);
+  std::string solving;
+  const auto continuum = solve_continuum(run, model, 256, until, [&](const std::string& solve, double) {
+    if (solve != solving) say(progress, "  Navier–Stokes " + solve);
+    solving = solve;
+  });
   r.hydro = hydro_json(continuum->ns);
   r.hydro["model"] = model.describe();
   common::write_file_atomic(config.out / "hydro" / "core.json", r.hydro.dump(2) + "\n");

@@ -86,14 +86,14 @@ double CompareConfig::effective_allowance() const {
   throw std::logic_error("unknown Reference");
 }
 
-CompareResult run_compare(const CompareConfig& config) {
+CompareResult run_compare(const CompareConfig& config, const CompareProgress& progress) {
   if (config.against != Reference::hydro) return run_compare(config, ReferenceExponents{});
   // The Navier–Stokes prediction at the MD's own R/λ (no fitted parameter), solved once.
   config.validate();
   RunData run = read_run(config.run_dir);
   if (config.until > 0) truncate_run(run, config.until);
   const HydroModel model = resolve_hydro_model(config.hydro_model, run.d, run_packing_fraction(run));
-  return run_compare(config, solve_continuum(run, model, config.hydro_cells));
+  return run_compare(config, solve_continuum(run, model, config.hydro_cells, 0.0, progress.continuum));
 }
 
 CompareResult run_compare(const CompareConfig& config, std::shared_ptr<const ContinuumReference> continuum) {

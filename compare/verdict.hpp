@@ -108,8 +108,12 @@ std::string verdict_summary(const CompareResult& result);
 /// Reads the run and compares every requested observable; for Reference::hydro it first solves the
 /// continuum once (solve_continuum, the model of config.hydro_model) and adds the amplitude
 /// verdicts. Throws std::invalid_argument for a bad config or run directory (including --against
-/// paper for d != 2, and an inconsistent NS model naming its option).
-CompareResult run_compare(const CompareConfig& config);
+/// paper for d != 2, and an inconsistent NS model naming its option). `progress.continuum` follows
+/// the continuum's solves (may be empty).
+struct CompareProgress {
+  ContinuumProgress continuum;
+};
+CompareResult run_compare(const CompareConfig& config, const CompareProgress& progress = {});
 
 /// Reference::hydro against an already solved continuum (e.g. `reproduce`'s one solve): exponent
 /// verdicts from its NS running exponents at the MD's R/λ, amplitude verdicts from its amplitudes.
