@@ -148,13 +148,10 @@ void run(CompareOptions& options) {
   // thousands: a line when a solve starts, then per decade of R/λ or every 2 s.
   ProgressPacer pacer;
   std::string solving;
-  double decade = 0;
   compare::CompareProgress progress;
   progress.continuum = [&](const std::string& solve, double R_over_lambda) {
-    const double reached = std::floor(std::log10(R_over_lambda));
-    if (!pacer.due(solve != solving || reached > decade)) return;
+    if (!pacer.due_at(R_over_lambda, solve != solving)) return;
     solving = solve;
-    decade = reached;
     std::cerr << "compare: Navier-Stokes " << solve << ": R/lambda = " << common::format_significant(R_over_lambda, 4)
               << '\n';
   };

@@ -63,10 +63,9 @@ hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
 /// Progress on stderr: a line per decade of R/λ, and at the next sample once 2 s have passed
 /// without one (a fine grid takes minutes per decade: the cost grows as cells²).
 hydro::NavierStokesResult solve(const hydro::NavierStokesConfig& config, const char* mode) {
-  int count = 0;
   ProgressPacer pacer;
   return hydro::run_navier_stokes(config, [&](const hydro::NavierStokesSample& s) {
-    if (!pacer.due(++count % config.numerics.samples_per_decade == 0)) return;
+    if (!pacer.due_at(s.R_over_lambda)) return;
     std::cerr << "hydro " << mode << ": R/lambda = " << number(s.R_over_lambda, 4) << '\n';
   });
 }

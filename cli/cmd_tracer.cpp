@@ -44,11 +44,8 @@ void run(TracerOptions& o) {
   std::tie(config.shard_index, config.shard_count) = md::parse_shard(o.shard);
   kinetic::TracerProgress progress;
   ProgressPacer pacer;
-  double decade = -1e300;
-  progress.background = [&pacer, &decade](double R_over_lambda) {
-    const double reached = std::floor(std::log10(R_over_lambda));
-    if (!pacer.due(reached > decade)) return;
-    decade = reached;
+  progress.background = [&pacer](double R_over_lambda) {
+    if (!pacer.due_at(R_over_lambda)) return;
     std::fprintf(stderr, "tracer: Navier-Stokes background, R/lambda = %.4g\n", R_over_lambda);
   };
   progress.blocks = [](long long done, long long total) {

@@ -3,6 +3,7 @@
 // Each maps flags to its module's Config, calls run_<x>() and writes files and the summary.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "common/output.hpp"
@@ -38,8 +39,8 @@ struct ExitStatus {
   int code;
 };
 
-/// When a progress line on stderr is due: at a milestone (a decade of R/λ, the last block), or at
-/// the first call 2 s after the previous line, so that slow stretches still show progress.
+/// When a progress line on stderr is due: at a milestone (the last block, a new stage), or at the
+/// first call 2 s after the previous line, so that slow stretches still show progress.
 class ProgressPacer {
  public:
   bool due(bool milestone) {
@@ -48,9 +49,21 @@ class ProgressPacer {
     last_ = now;
     return true;
   }
+  /// For a blast solve reporting its R/λ: due at its first report (or `new_solve`), when R/λ enters
+  /// a new decade, or 2 s after the previous line.
+  bool due_at(double R_over_lambda, bool new_solve = false) {
+    const double decade = std::floor(std::log10(R_over_lambda));
+    const bool milestone = new_solve || !started_ || decade > decade_;
+    if (!due(milestone)) return false;
+    started_ = true;
+    decade_ = decade;
+    return true;
+  }
 
  private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+  bool started_ = false;
+  double decade_ = 0.0;
 };
 
 /// Prints a JSON document to stdout (2-space indentation, trailing newline).
