@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 
 #include "cli/commands.hpp"
@@ -52,21 +53,48 @@ struct MdEquilibriumOptions {
   Format format = Format::table;
 };
 
-/// Progress with ETA on stderr, at most twice a second.
+/// The status line of md run on stderr: realizations done with an ETA, at most every 0.5 s; while
+/// none finishes for 2 s (a 3D paper-scene realization runs for minutes), the simulated time a
+/// running realization has reached.
 class Progress {
  public:
+  explicit Progress(double t_max) : t_max_(t_max) {}
   void operator()(long long done, long long total) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_ = done;
+    total_ = total;
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     if (done < total && std::chrono::duration<double>(now - last_).count() < 0.5) return;
     last_ = now;
+    shown_ = true;
     const double eta = done > 0 ? elapsed * (total - done) / done : 0.0;
     std::fprintf(stderr, "\rmd run: %lld/%lld realizations, %.1f s elapsed, ETA %.1f s   ", done, total, elapsed, eta);
     if (done == total) std::fprintf(stderr, "\n");
     std::fflush(stderr);
   }
+  void at(long long realization, double t) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto now = std::chrono::steady_clock::now();
+    if (shown_ && std::chrono::duration<double>(now - last_).count() < 2.0) return;
+    last_ = now;
+    shown_ = true;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const std::string done = std::to_string(done_) + (total_ > 0 ? "/" + std::to_string(total_) : "");
+    if (t == 0.0)  // a realization starts: its initial state (random sequential addition) comes first
+      std::fprintf(stderr, "\rmd run: %s realizations done; realization %lld: placing the particles, %.1f s elapsed   ",
+                   done.c_str(), realization, elapsed);
+    else
+      std::fprintf(stderr, "\rmd run: %s realizations done; realization %lld at t = %.4g of %.4g, %.1f s elapsed   ",
+                   done.c_str(), realization, t, t_max_, elapsed);
+    std::fflush(stderr);
+  }
 
  private:
+  std::mutex mutex_;  // at() comes from the worker threads
+  double t_max_;
+  long long done_ = 0, total_ = 0;
+  bool shown_ = false;  // a line was printed
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
 };
 
@@ -133,8 +161,9 @@ void run_md(const MdRunOptions& o) {
   md::RunOptions& options = plan.options;
   options.shard_index = shard_index;
   options.shard_count = shard_count;
-  Progress progress;
+  Progress progress(config.t_max);
   options.progress = [&progress](long long done, long long total) { progress(done, total); };
+  options.realization_time = [&progress](long long realization, double t) { progress.at(realization, t); };
   // Every finished block is checkpointed in OUT/checkpoint (removed once the outputs are written);
   // --resume DIR continues there (DIR is the output directory).
   std::string out = o.out;
@@ -149,7 +178,10 @@ void run_md(const MdRunOptions& o) {
   options.checkpoint = std::filesystem::path(out) / "checkpoint";
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks; rank 0 alone reports progress and writes the outputs.
-  if (md::MpiSession::rank() != 0) options.progress = nullptr;
+  if (md::MpiSession::rank() != 0) {
+    options.progress = nullptr;
+    options.realization_time = nullptr;
+  }
   md::BlastResult result = run_ensemble(config, options, out);
   if (md::MpiSession::rank() != 0) return;
 #else

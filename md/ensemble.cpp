@@ -65,8 +65,10 @@ std::string trajectories_csv(const ResolvedScene& scene, const Engine<D, Queue>&
 }
 
 template <int D, class Queue>
-RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index) {
+RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
+                                  const std::function<void(long long, double)>& realization_time) {
   const BlastConfig& c = scene.config;
+  if (realization_time) realization_time(index, 0.0);
   const InitialState<D> state = blast_initial_state<D>(scene, index);
 
   const bool first = index == 0;
@@ -87,6 +89,7 @@ RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLa
   std::string extxyz;  // every snapshot as one frame of snapshots.extxyz (md/extxyz.hpp)
   for (const auto& [t, k] : stops) {
     engine.run_until(t);
+    if (realization_time) realization_time(index, t);
     if (k >= 0) {
       observer.measure(k, out.record);
     } else {
@@ -121,13 +124,14 @@ std::string guard_advice(const ResolvedScene& scene, double now) {
          format_number(scene.A_d) + ")";
 }
 
-RealizationOutput dispatch(const ResolvedScene& scene, const ObservableLayout& layout, long long index) {
+RealizationOutput dispatch(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
+                           const std::function<void(long long, double)>& time) {
   const bool heap = scene.config.queue == "heap";
   if (scene.config.d == 2)
-    return heap ? run_realization<2, HeapEventQueue>(scene, layout, index)
-                : run_realization<2, CalendarEventQueue>(scene, layout, index);
-  return heap ? run_realization<3, HeapEventQueue>(scene, layout, index)
-              : run_realization<3, CalendarEventQueue>(scene, layout, index);
+    return heap ? run_realization<2, HeapEventQueue>(scene, layout, index, time)
+                : run_realization<2, CalendarEventQueue>(scene, layout, index, time);
+  return heap ? run_realization<3, HeapEventQueue>(scene, layout, index, time)
+              : run_realization<3, CalendarEventQueue>(scene, layout, index, time);
 }
 
 }  // namespace
@@ -196,7 +200,8 @@ long long block_realizations(const BlastConfig& config, long long block) {
 }
 
 BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* realization0_files,
-                    const std::function<void()>& realization_done, const std::atomic<bool>* stop) {
+                    const std::function<void()>& realization_done, const std::atomic<bool>* stop,
+                    const std::function<void(long long, double)>& realization_time) {
   const ObservableLayout layout(scene);
   const long long B = scene.config.block_size;
   BlockSums s;
@@ -205,7 +210,7 @@ BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* rea
   for (long long r = block * B; r < block * B + block_realizations(scene.config, block); ++r) {
     if (stop && *stop) break;
     common::throw_if_stop_requested();  // SIGINT/SIGTERM or a host's Ctrl-C: finished blocks stay saved
-    RealizationOutput out = dispatch(scene, layout, r);
+    RealizationOutput out = dispatch(scene, layout, r, realization_time);
     add_realization(s, out.record, out.collisions, out.energy_error);
     if (r == 0 && realization0_files) *realization0_files = std::move(out.files);
     if (realization_done) realization_done();
@@ -289,7 +294,7 @@ BlastResult run_blast(const BlastConfig& config, const RunOptions& options) {
   };
   run_slots_in_parallel(owned.size(), options.threads, [&](std::size_t slot, const std::atomic<bool>& stop) {
     NamedFiles files;
-    sums[slot] = run_block(scene, owned[slot], &files, realization_done, &stop);
+    sums[slot] = run_block(scene, owned[slot], &files, realization_done, &stop, options.realization_time);
     if (stop) return;
     if (!options.checkpoint.empty())
       save_checkpoint_block(options.checkpoint, owned[slot], sums[slot], owned[slot] == 0 ? &files : nullptr);

@@ -31,6 +31,11 @@ struct RunOptions {
   AmplitudePolicy amplitude;
   /// Called after each realization with (done, total); may be empty. Called under a lock.
   std::function<void(long long, long long)> progress;
+  /// Called with (realization, t) when a realization starts (t = 0, before its initial state is
+  /// built: ~40 s for the 3D paper scene's region) and as it passes each recorded time t; may be
+  /// empty. Called from the worker threads, concurrently: a 3D paper-scene realization runs for
+  /// minutes, and this is its progress.
+  std::function<void(long long, double)> realization_time;
   /// Folder where every finished block is saved at once (md/checkpoint.hpp); empty = no checkpoint.
   /// A fresh run clears the folder's old blocks.
   std::filesystem::path checkpoint;
@@ -69,10 +74,12 @@ EnsemblePlan plan_ensemble(const BlastConfig& config, const RunOptions& options)
 long long block_realizations(const BlastConfig& config, long long block);
 /// Runs the realizations of one block in index order on the calling thread: the unit of work of
 /// threads, shards and MPI ranks. Fills `realization0_files` (if given) when the block holds
-/// realization 0; calls `realization_done` after each realization; stops early when `*stop` becomes
-/// true (the partial sums must then be discarded). Throws like run_blast.
+/// realization 0; calls `realization_done` after each realization (and `realization_time` at each
+/// recorded time within one); stops early when `*stop` becomes true (the partial sums must then be
+/// discarded). Throws like run_blast.
 BlockSums run_block(const ResolvedScene& scene, long long block, NamedFiles* realization0_files = nullptr,
-                    const std::function<void()>& realization_done = {}, const std::atomic<bool>* stop = nullptr);
+                    const std::function<void()>& realization_done = {}, const std::atomic<bool>* stop = nullptr,
+                    const std::function<void(long long, double)>& realization_time = {});
 /// The one worker pool of ensembles (md::run_blast, the tracer kinetic::run_tracer): runs
 /// work(slot, stop) once for every slot in [0, count) on `threads` threads, the calling thread among
 /// them, handing slots out in increasing order. A slot's work must write only its own results (and

@@ -323,7 +323,7 @@ BlastResult run_blast_mpi(const BlastConfig& config, const RunOptions& options) 
   work.pending = plan.pending;
   work.run = [&](long long b, const std::atomic<bool>& stop) {
     NamedFiles files;
-    const BlockSums s = run_block(scene, b, &files, realization_done, &stop);
+    const BlockSums s = run_block(scene, b, &files, realization_done, &stop, options.realization_time);
     ByteWriter w;
     put_block_sums(w, s, files);
     return std::move(w.bytes);

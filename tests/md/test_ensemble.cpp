@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -278,5 +280,29 @@ TEST_CASE("blasts that outrun Eq. (1) early run with the default box_margin", "[
     CHECK(resolved.region_radius > margin_region(resolved));  // the early reach sizes it
     const BlastResult result = run_blast(scene, RunOptions{});
     CHECK(result.energy_error_max() < 1e-12);
+  }
+}
+
+TEST_CASE("realization_time reports each realization's start and recorded times, and changes nothing", "[slow]") {
+  const BlastConfig scene = small_scene();
+  RunOptions quiet, watched;
+  watched.threads = 2;
+  std::mutex mutex;
+  std::map<long long, std::vector<double>> seen;
+  watched.realization_time = [&](long long realization, double t) {
+    std::lock_guard<std::mutex> lock(mutex);
+    seen[realization].push_back(t);
+  };
+  const BlastResult a = run_blast(scene, quiet), b = run_blast(scene, watched);
+  REQUIRE(seen.size() == 7);
+  for (const auto& [realization, times] : seen) {
+    INFO("realization " << realization);
+    REQUIRE(times.size() == b.scene.times.size() + 1);
+    CHECK(times.front() == 0.0);  // the start, before the initial state is built
+    CHECK(std::vector<double>(times.begin() + 1, times.end()) == b.scene.times);
+  }
+  for (const auto& [block, sums] : a.blocks) {
+    CHECK(b.blocks.at(block).sum == sums.sum);
+    CHECK(b.blocks.at(block).collisions == sums.collisions);
   }
 }
