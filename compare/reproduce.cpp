@@ -12,6 +12,7 @@
 #include "compare/report.hpp"
 #include "hydro/navier_stokes.hpp"
 #include "hydro/tvns.hpp"
+#include "kinetic/tracer.hpp"
 #include "md/ensemble.hpp"
 #include "md/scenes.hpp"
 #include "theory/exponents.hpp"
@@ -35,9 +36,14 @@ void ReproduceConfig::validate() const {
     throw std::invalid_argument("--realizations = 1: an error bar needs at least 2 (0 = the scale's default)");
   if (hydro_until != 0)
     common::require_in_range("--hydro-until", hydro_until, 20.0, 1e8, common::Bound::closed, common::Bound::closed);
+  common::require_integer_in_range("--tracer-trajectories", tracer_trajectories, 0, 100000000,
+                                   " (0 = the scale's default; at least 2, for error bars)");
+  if (tracer_trajectories == 1)
+    throw std::invalid_argument("--tracer-trajectories = 1: an error bar needs at least 2 (0 = the scale's default)");
   common::require_output_folder(out, "--out");
   if (fs::is_directory(out))  // the reports replace these folders whole: checked before the work
-    for (const char* report : {"report-theory", "report-paper", "report-hydro"}) report_folder(out / report);
+    for (const char* report : {"report-theory", "report-paper", "report-hydro", "report-tracer"})
+      report_folder(out / report);
 }
 
 namespace {
@@ -79,6 +85,40 @@ std::string amplitude_row(const std::string& name, double value, double error) {
   char row[200];
   std::snprintf(row, sizeof row, "| %s | %.15g | %.1e |\n", name.c_str(), value, error);
   return row;
+}
+
+/// REPORT.md's section on the tracer (step 4) against the MD: the amplitudes at the last common
+/// recording time and p_imp's shape (the full table and figures are in report-tracer/).
+std::string tracer_section(const ReproduceResult& r) {
+  std::ostringstream md;
+  md << "## The impurity from kinetic theory (Eq. (36)): tracer against MD\n\n"
+     << r.tracer["trajectories"] << " trajectories of the Lorentz–Boltzmann equation in the "
+     << r.tracer["background_description"].get<std::string>() << " ("
+     << common::format_significant(r.tracer["wall_seconds"].get<double>(), 3) << " s; null-collision rejection "
+     << common::format_significant(r.tracer["rejection_rate"].get<double>(), 2)
+     << "). Nothing is fitted. Output: `tracer/`.\n\n";
+  if (!r.tracer_vs_md.tracer_md) return md.str();
+  const TracerMdComparison& c = *r.tracer_vs_md.tracer_md;
+  md << "At t = " << common::format_significant(c.series.front().points.back().t, 6)
+     << " (errors: block jackknife; the runs are independent):\n\n"
+     << "| quantity | tracer ± error | MD ± error | tracer/MD − 1 |\n|---|---|---|---|\n";
+  for (const auto& s : c.series) {
+    const TracerMdPoint& p = s.points.back();
+    md << "| " << s.observable << " | " << common::format_measurement(p.tracer, p.tracer_error) << " | "
+       << common::format_measurement(p.md, p.md_error) << " | " << format_ratio_percent(p) << " |\n";
+  }
+  if (c.distribution) {
+    const TracerMdDistribution& h = *c.distribution;
+    md << "\np_imp at t = " << common::format_significant(h.t, 6)
+       << ": ⟨r⁴⟩/⟨r²⟩² = " << common::format_measurement(h.ratio_tracer, h.ratio_tracer_error) << " (tracer), "
+       << common::format_measurement(h.ratio_md, h.ratio_md_error) << " (MD), "
+       << common::format_significant(h.ratio_gaussian, 3)
+       << " (the Gaussian of Eq. (35)); χ²/dof of tracer − MD = " << common::format_significant(h.chi2_per_dof, 3)
+       << " over " << h.dof << " bins.\n";
+  }
+  md << "\nThe tracer's exponents against theory: " << verdict_word(r.tracer_vs_md)
+     << ". Full report: [report-tracer/report.md](report-tracer/report.md)\n";
+  return md.str();
 }
 
 std::string top_report(const ReproduceResult& r) {
@@ -135,7 +175,7 @@ std::string top_report(const ReproduceResult& r) {
     }
     md << "\nFull report: [report-" << name << "/report.md](report-" << name << "/report.md)\n\n";
   }
-  return md.str();
+  return md.str() + tracer_section(r);
 }
 
 /// Step 1: A_2, A_3 (Eq. (1), ideal gas) and A_2 at the MD's packing fraction, into r and tvns.json.
@@ -161,24 +201,28 @@ void tvns_step(const ReproduceConfig& config, const md::BlastConfig& scene, Repr
   common::write_file_atomic(config.out / "tvns.json", tvns.dump(2) + "\n");
 }
 
+/// --threads, 0 resolved to every hardware thread (the MD's and the tracer's workers).
+int worker_threads(const ReproduceConfig& config) {
+  return config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 /// Step 2: the paper scene's MD ensemble (as `coldblast md run`, bit for bit) into out/md, or the
 /// given --md-run; r.md is its summary. Returns the run's folder.
 fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const ReproduceProgress& progress,
                  ReproduceResult& r) {
   if (!config.md_run.empty()) {
-    say(progress, "step 2/5: MD ensemble taken from " + config.md_run.string());
+    say(progress, "step 2/6: MD ensemble taken from " + config.md_run.string());
     r.md = read_run(config.md_run).summary;
     return config.md_run;
   }
-  say(progress, "step 2/5: MD ensemble of the paper's 2D scene");
+  say(progress, "step 2/6: MD ensemble of the paper's 2D scene");
   scene.seed = config.seed;
   scene.realizations =
       config.realizations > 0 ? config.realizations : (config.scale == ReproduceScale::quick ? 384 : 30000);
   scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
   md::RunOptions options;
   options.amplitude = hydro::md_amplitude;
-  options.threads =
-      config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  options.threads = worker_threads(config);
   options.progress = [&progress, total = scene.realizations](long long done, long long) {
     if (progress && (done % std::max<long long>(1, total / 20) == 0 || done == total))
       progress("  md: " + std::to_string(done) + "/" + std::to_string(total) + " realizations");
@@ -189,6 +233,33 @@ fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const Rep
   r.md = md::blast_summary(blast);
   return md_dir;
 }
+
+/// Step 4: the impurity from kinetic theory, Eq. (36) [LB-full]: `coldblast tracer` of the paper
+/// scene in the dense Navier–Stokes background (Enskog χ at contact, the MD's φ; the model of
+/// step 3), the MD's kick, into out/tracer. r.tracer is its summary. Returns the run's folder.
+fs::path tracer_step(const ReproduceConfig& config, const ReproduceProgress& progress, ReproduceResult& r) {
+  kinetic::TracerConfig tracer;
+  tracer.scene = kinetic::parse_tracer_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
+  tracer.scene.seed = config.seed;
+  tracer.background = "ns";
+  tracer.transport = "enskog";
+  tracer.trajectories = config.tracer_trajectories > 0 ? config.tracer_trajectories
+                                                       : (config.scale == ReproduceScale::quick ? 100000 : 1000000);
+  tracer.threads = worker_threads(config);
+  say(progress, "step 4/6: the impurity from kinetic theory (paper Eq. (36)): " + std::to_string(tracer.trajectories) +
+                    " tracer trajectories in the dense Navier–Stokes background");
+  kinetic::TracerProgress tracer_progress;
+  tracer_progress.blocks = [&progress](long long done, long long total) {
+    if (progress && (done % std::max<long long>(1, total / 10) == 0 || done == total))
+      progress("  tracer: " + std::to_string(done) + "/" + std::to_string(total) + " blocks");
+  };
+  const kinetic::TracerResult result = kinetic::run_tracer(tracer, tracer_progress);
+  const fs::path tracer_dir = config.out / "tracer";
+  kinetic::write_tracer_outputs(result, tracer_dir);
+  r.tracer = kinetic::tracer_summary(result);
+  r.tracer.erase("scene_toml");
+  return tracer_dir;
+}
 }  // namespace
 
 ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProgress& progress) {
@@ -197,7 +268,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   r.out = config.out;
   fs::create_directories(config.out);
 
-  say(progress, "step 1/5: exact TvNS amplitudes A_2, A_3 and A_2 at the MD's packing fraction");
+  say(progress, "step 1/6: exact TvNS amplitudes A_2, A_3 and A_2 at the MD's packing fraction");
   const md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
   tvns_step(config, scene, r);
   const fs::path md_dir = md_step(config, scene, progress, r);
@@ -207,7 +278,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   const HydroModel model = resolve_hydro_model({}, run.d, run_packing_fraction(run));
   const double until =
       config.hydro_until > 0 ? config.hydro_until : (config.scale == ReproduceScale::quick ? 1e4 : 1e6);
-  say(progress, "step 3/5: Navier–Stokes blast, " + model.describe() +
+  say(progress, "step 3/6: Navier–Stokes blast, " + model.describe() +
                     ", at the MD's R/lambda and up to R/lambda = " + common::format_number(until));
   std::string solving;
   const auto continuum = solve_continuum(run, model, 256, until, [&](const std::string& solve, double) {
@@ -217,8 +288,11 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   r.hydro = hydro_json(continuum->ns);
   r.hydro["model"] = model.describe();
   common::write_file_atomic(config.out / "hydro" / "core.json", r.hydro.dump(2) + "\n");
+  const fs::path tracer_dir = tracer_step(config, progress, r);
 
-  say(progress, "step 4/5: comparisons against theory, the paper's Table 1 and the Navier–Stokes prediction");
+  say(progress,
+      "step 5/6: comparisons against theory, the paper's Table 1, the Navier–Stokes prediction and (the tracer) the "
+      "MD");
   CompareConfig compare_config;
   compare_config.run_dir = md_dir;
   compare_config.against = Reference::theory;
@@ -229,11 +303,17 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   r.against_paper.continuum = continuum;
   compare_config.against = Reference::hydro;
   r.against_hydro = run_compare(compare_config, continuum);
+  CompareConfig tracer_config;
+  tracer_config.run_dir = tracer_dir;
+  tracer_config.against = Reference::theory;
+  tracer_config.md_run = md_dir;
+  r.tracer_vs_md = run_compare(tracer_config);
 
-  say(progress, "step 5/5: reports");
+  say(progress, "step 6/6: reports");
   write_report(r.against_theory, {config.out / "report-theory", config.figures});
   write_report(r.against_paper, {config.out / "report-paper", config.figures});
   write_report(r.against_hydro, {config.out / "report-hydro", config.figures});
+  write_report(r.tracer_vs_md, {config.out / "report-tracer", config.figures});
   common::write_file_atomic(config.out / "REPORT.md", top_report(r));
   common::write_file_atomic(config.out / "table1.md", table1_markdown(r));
   common::write_file_atomic(config.out / "summary.json", reproduce_summary(r).dump(2) + "\n");
@@ -274,6 +354,8 @@ common::Json reproduce_summary(const ReproduceResult& r) {
           {"against_theory", verdict_json(r.against_theory)},
           {"against_paper", verdict_json(r.against_paper)},
           {"against_hydro", verdict_json(r.against_hydro)},
+          {"tracer", r.tracer},
+          {"tracer_against_md", verdict_json(r.tracer_vs_md)["tracer_vs_md"]},
           {"out", r.out.string()}};
 }
 

@@ -212,6 +212,10 @@ std::string distribution_figure(const TracerMdComparison& c, const fs::path& fol
 
 }  // namespace
 
+std::string format_ratio_percent(const TracerMdPoint& point) {
+  return (point.ratio >= 0 ? "+" : "") + common::format_measurement(100 * point.ratio, 100 * point.ratio_error) + " %";
+}
+
 TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& md) {
   if (tracer.d != md.d)
     throw std::invalid_argument("--md-run: d = " + std::to_string(md.d) + " there, " + std::to_string(tracer.d) +

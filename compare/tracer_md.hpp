@@ -21,6 +21,9 @@ struct TracerMdPoint {
   double ratio = 0, ratio_error = 0;  ///< tracer/md − 1 and its error (the two runs independent)
 };
 
+/// tracer/MD − 1 of a point in per cent, signed, as quoted: "+3.8 ± 1.1 %".
+std::string format_ratio_percent(const TracerMdPoint& point);
+
 /// One observable's series (times common to both runs, ascending).
 struct TracerMdSeries {
   std::string observable;

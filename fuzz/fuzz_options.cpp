@@ -139,7 +139,7 @@ void reproduce_flags(const std::vector<std::string>& v) {
   compare::ReproduceConfig c;
   std::string scale = "quick";
   if (!(flag(v, 0, scale) && flag(v, 1, c.threads) && flag(v, 2, c.seed) && flag(v, 3, c.realizations) &&
-        flag(v, 4, c.hydro_until)))
+        flag(v, 4, c.hydro_until) && flag(v, 5, c.tracer_trajectories)))
     return;
   fuzz::expect_clean([&] {
     c.scale = compare::parse_scale(scale);
@@ -203,7 +203,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       tracer_flags(lines_of(text, 10));
       break;
     case 12:
-      reproduce_flags(lines_of(text, 5));
+      reproduce_flags(lines_of(text, 6));
       break;
     default: {
       const std::vector<std::string> overrides = lines_of(text, 8);  // one per line, as repeated --set

@@ -69,13 +69,15 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
     throw std::runtime_error("the Navier–Stokes background ends at t = " + format_number(frames.back().t) +
                              " before t_max = " + format_number(scene.t_max));
   if (description)
-    *description = std::string("Navier-Stokes core (") +
-                   (contact.enskog ? "dense: " + hydro::to_string(ns.physics.eos) +
-                                         " EOS at phi = " + format_number(ns.physics.phi) + ", Enskog transport"
-                                   : std::string("dilute")) +
-                   ", heat conduction, " + std::to_string(cells) + " cells), " + std::to_string(frames.size()) +
-                   " frames from R/lambda = " + format_number(first) + " to " + format_number(until) + ", t in [" +
-                   format_number(frames.front().t) + ", " + format_number(frames.back().t) + "]";
+    *description =
+        std::string("Navier-Stokes core (") +
+        (contact.enskog ? "dense: " + hydro::to_string(ns.physics.eos) +
+                              " EOS at phi = " + common::format_significant(ns.physics.phi, 4) + ", Enskog transport"
+                        : std::string("dilute")) +
+        ", heat conduction, " + std::to_string(cells) + " cells), " + std::to_string(frames.size()) +
+        " frames from R/lambda = " + common::format_significant(first, 4) + " to " +
+        common::format_significant(until, 4) + ", t in [" + common::format_significant(frames.front().t, 4) + ", " +
+        common::format_significant(frames.back().t, 4) + "]";
   const double edge = x.back();
   return std::make_unique<GridBackground>(scene.d, std::move(x), edge, std::move(frames), scene.n, contact, false);
 }

@@ -232,7 +232,7 @@ std::unique_ptr<Background> make_background(const TracerConfig& config, std::str
     const double phi = config.phi ? *config.phi : scene_phi(c);
     const double n = theory::number_density(c.d, phi, c.a);
     if (description)
-      *description = "equilibrium: n = " + format_number(n) + " (phi = " + format_number(phi) +
+      *description = "equilibrium: n = " + format_number(n) + " (phi = " + common::format_significant(phi, 6) +
                      "), T = " + format_number(config.T) + ", u = 0, chi " + (contact.enskog ? "Enskog" : "= 1");
     return std::make_unique<EquilibriumBackground>(c.d, n, config.T, contact);
   }

@@ -27,7 +27,7 @@ namespace coldblast::kinetic {
 struct TracerConfig {
   md::BlastConfig scene;
   std::string background = "ns";         ///< "ns" (Navier–Stokes core), "tvns" (exact Euler) or "equilibrium"
-  std::string transport = "dilute";      ///< "dilute" (chi = 1) or "enskog" (chi(n) at contact; equilibrium only)
+  std::string transport = "dilute";      ///< "dilute" (chi = 1) or "enskog" (chi(n) at contact; ns: the dense NS)
   long long trajectories = 0;            ///< impurity trajectories, >= 1; 0 = scene realizations × impurities.count
   int threads = 1;                       ///< worker threads, [1, 1024]
   int shard_index = 0, shard_count = 1;  ///< this shard runs blocks shard_index, shard_index + shard_count, ...

@@ -1,5 +1,6 @@
 // End to end on a tiny scale: every step runs, the files exist, and the numbers that have an
-// exact reference (A_2, A_3, the NS exponents' approach, the MD's energy conservation) hold.
+// exact reference (A_2, A_3, the NS exponents' approach, the MD's energy conservation, the
+// tracer's Enskog factor) hold.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -8,6 +9,7 @@
 #include <regex>
 #include <string>
 
+#include "common/validate.hpp"
 #include "compare/reproduce.hpp"
 #include "tests/temp_path.hpp"
 
@@ -40,6 +42,35 @@ void check_amplitude_rows(const std::string& report, const std::vector<Amplitude
     CHECK(std::abs(std::stod(error) - a.error) <= 0.5 * unit * (1 + 1e-9));
   }
 }
+
+/// Step 4: the tracer of the paper scene in the dense NS background, against the MD at t = 4000.
+void check_tracer(const ReproduceResult& r, const std::string& report) {
+  CHECK(r.tracer["trajectories"].get<long long>() == 600);
+  CHECK(r.tracer["background"].get<std::string>() == "ns");
+  CHECK(r.tracer["transport"].get<std::string>() == "enskog");
+  // Henderson's contact value (1 − 7φ/16)/(1 − φ)² at the MD's φ: the Enskog factor of the collisions.
+  const double phi = r.phi_md;
+  CHECK(r.tracer["chi"].get<double>() == Approx((1 - 7 * phi / 16) / ((1 - phi) * (1 - phi))).epsilon(1e-12));
+  REQUIRE(r.tracer_vs_md.tracer_md);
+  const TracerMdComparison& c = *r.tracer_vs_md.tracer_md;
+  REQUIRE(c.series.size() == 3);
+  CHECK(c.distribution.has_value());
+  for (const auto& s : c.series) {
+    const TracerMdPoint& p = s.points.back();
+    INFO(s.observable << ": tracer " << p.tracer << " ± " << p.tracer_error << ", MD " << p.md << " ± " << p.md_error);
+    CHECK(p.t == 4000);
+    CHECK(p.tracer_error > 0);
+    // R_imp and V_imp agree with the MD within a few % at 1e5 trajectories and 384 realizations
+    // (docs/verification.md); with 600 and 4 they agree within the errors.
+    if (s.observable != "C_imp") CHECK(std::abs(p.ratio) < 4 * p.ratio_error);
+    const std::string row =
+        "| " + s.observable + " | " + coldblast::common::format_measurement(p.tracer, p.tracer_error) + " | " +
+        coldblast::common::format_measurement(p.md, p.md_error) + " | " + format_ratio_percent(p) + " |";
+    CHECK(report.find(row) != std::string::npos);
+  }
+  CHECK(report.find("600 trajectories of the Lorentz–Boltzmann equation in the Navier-Stokes core (dense: henderson "
+                    "EOS at phi = 0.1178, Enskog transport") != std::string::npos);
+}
 }  // namespace
 
 TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
@@ -48,6 +79,7 @@ TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   fs::remove_all(config.out);
   config.realizations = 4;
   config.hydro_until = 50;
+  config.tracer_trajectories = 600;
   config.threads = 2;
   config.figures = false;
   const ReproduceResult r = run_reproduce(config);
@@ -71,11 +103,13 @@ TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   CHECK(r.against_hydro.continuum->profiles.size() == 4);
   CHECK(r.against_hydro.amplitudes.size() >= 3);  // H/R too unless 4 realizations leave no core edge
   for (const char* file : {"REPORT.md", "summary.json", "tvns.json", "hydro/core.json", "md/blocks.csv",
-                           "report-theory/verdict.json", "report-paper/report.md", "report-hydro/exponents.csv"})
+                           "tracer/summary.json", "tracer/moments.csv", "report-theory/verdict.json",
+                           "report-paper/report.md", "report-hydro/exponents.csv", "report-tracer/tracer_vs_md.csv"})
     CHECK(fs::exists(config.out / file));
   std::ifstream in(config.out / "REPORT.md");
   const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   check_amplitude_rows(report, r.against_hydro.amplitudes);
+  check_tracer(r, report);
   // Prose numbers at their meaningful digits, not 17 (R/λ, the energy error, the wall time).
   CHECK(std::regex_search(report, std::regex("Running time exponents at R/λ = [0-9.]{1,7} \\(relative energy "
                                              "error [0-9.]+(e-[0-9]+)?\\)")));
@@ -89,4 +123,7 @@ TEST_CASE("reproduce rejects bad options before running anything", "[fast]") {
   config.hydro_until = 5;
   CHECK_THROWS_WITH(run_reproduce(config), Catch::Contains("--hydro-until"));
   CHECK_THROWS_WITH(parse_scale("huge"), Catch::Contains("--scale"));
+  config.hydro_until = 0;
+  config.tracer_trajectories = 1;
+  CHECK_THROWS_WITH(run_reproduce(config), Catch::Contains("--tracer-trajectories = 1"));
 }
