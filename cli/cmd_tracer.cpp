@@ -97,7 +97,8 @@ void add_tracer_command(CLI::App& app) {
       ->capture_default_str();
   c->add_option(
        "--transport", o->config.transport,
-       "dilute (chi = 1; ideal-gas Navier-Stokes) or enskog (chi(n) at contact; dense Navier-Stokes; not with tvns)")
+       "dilute (chi = 1; ideal-gas Navier-Stokes) or enskog (chi(n) at contact; dense Navier-Stokes at the scene's "
+       "packing fraction: the prediction for its MD, as reproduce runs it; not with tvns)")
       ->capture_default_str();
   c->add_option("--trajectories", o->config.trajectories,
                 "Impurity trajectories (0 = the scene's realizations x impurities.count)")
