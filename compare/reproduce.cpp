@@ -1,5 +1,6 @@
 #include "compare/reproduce.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "common/validate.hpp"
 #include "compare/hydro_reference.hpp"
 #include "compare/report.hpp"
+#include "compare/run_data.hpp"
 #include "hydro/navier_stokes.hpp"
 #include "hydro/tvns.hpp"
 #include "kinetic/tracer.hpp"
@@ -44,6 +46,54 @@ void ReproduceConfig::validate() const {
   if (fs::is_directory(out))  // the reports replace these folders whole: checked before the work
     for (const char* report : {"report-theory", "report-paper", "report-hydro", "report-tracer"})
       report_folder(out / report);
+  if (!md_run.empty()) check_paper_md_run(md_run);
+}
+
+namespace {
+/// The first key of the paper scene's physics and recording (whatever the ensemble's size, seed and
+/// blocks) that the run's summary.json "scene" object does not share, as "key is X, the paper
+/// scene's Y"; empty when it is the paper scene.
+std::string paper_scene_difference(const common::Json& scene) {
+  const md::BlastConfig paper = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
+  const std::pair<const char*, double> keys[] = {{"/d", paper.d},
+                                                 {"/n", paper.n},
+                                                 {"/a", paper.a},
+                                                 {"/E", paper.E},
+                                                 {"/t_min", paper.t_min},
+                                                 {"/t_max", paper.t_max},
+                                                 {"/p_imp_bins", paper.p_imp_bins},
+                                                 {"/impurities/count", paper.impurities.count},
+                                                 {"/impurities/mass", paper.impurities.mass},
+                                                 {"/impurities/radius", paper.impurities.radius}};
+  for (const auto& [pointer, value] : keys) {
+    const common::Json::json_pointer key(pointer);
+    const bool present = scene.is_object() && scene.contains(key);
+    if (present && scene.at(key).is_number() && scene.at(key).get<double>() == value) continue;
+    std::string name = std::string(pointer).substr(1);
+    std::replace(name.begin(), name.end(), '/', '.');
+    return name + " is " + (present ? scene.at(key).dump() : std::string("missing")) + ", the paper scene's " +
+           common::format_number(value);
+  }
+  return {};
+}
+}  // namespace
+
+void check_paper_md_run(const fs::path& directory) {
+  RunData run;
+  try {
+    run = read_run(directory);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--md-run: ") + e.what());
+  }
+  if (is_tracer_run(run))
+    throw std::invalid_argument("--md-run = " + directory.string() +
+                                " is a tracer run; it must be an MD run (coldblast md run)");
+  // Table 1 and the tracer step (which runs the embedded paper scene) compare the paper's 2D scene.
+  const std::string difference = paper_scene_difference(run.summary.value("scene", common::Json::object()));
+  if (!difference.empty())
+    throw std::invalid_argument("--md-run = " + directory.string() + " is not a run of the paper's 2D scene: its " +
+                                difference +
+                                " (reproduce compares scenes/paper-2d.toml; coldblast compare judges other runs)");
 }
 
 namespace {

@@ -44,6 +44,10 @@ struct ReproduceResult {
   std::filesystem::path out;
 };
 
+/// Throws std::invalid_argument naming --md-run unless `directory` is an MD run (not a tracer's) of
+/// the paper's 2D scene (the embedded scenes/paper-2d.toml: its d, n, a and E).
+void check_paper_md_run(const std::filesystem::path& directory);
+
 /// Progress lines ("step 2/6: ...") for stderr.
 using ReproduceProgress = std::function<void(const std::string&)>;
 

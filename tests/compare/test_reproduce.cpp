@@ -126,4 +126,21 @@ TEST_CASE("reproduce rejects bad options before running anything", "[fast]") {
   config.hydro_until = 0;
   config.tracer_trajectories = 1;
   CHECK_THROWS_WITH(run_reproduce(config), Catch::Contains("--tracer-trajectories = 1"));
+  config.tracer_trajectories = 0;
+  // --md-run must be an MD run of the paper's 2D scene: checked before any step runs.
+  const fs::path data = fs::path(COLDBLAST_SOURCE_DIR) / "data";
+  config.md_run = data / "campaign3-3d";
+  CHECK_THROWS_WITH(run_reproduce(config), Catch::Contains("--md-run = ") &&
+                                               Catch::Contains("is not a run of the paper's 2D scene: its d is 3, "
+                                                               "the paper scene's 2"));
+  // Campaigns 2 and 4 share d, n, a and E but not t_max or the impurity.
+  CHECK_THROWS_WITH(check_paper_md_run(data / "campaign2-2d-long"), Catch::Contains("its t_min is 0.6103515625"));
+  CHECK_THROWS_WITH(check_paper_md_run(data / "campaign4-heavy"),
+                    Catch::Contains("its impurities.mass is 10, the paper scene's 1"));
+  CHECK_THROWS_WITH(check_paper_md_run(data / "campaign4-large"),
+                    Catch::Contains("its impurities.radius is 2.5, the paper scene's 0"));
+  config.md_run = "/nonexistent";
+  CHECK_THROWS_WITH(run_reproduce(config), Catch::StartsWith("--md-run: "));
+  CHECK_NOTHROW(check_paper_md_run(data / "campaign1-paper-2d"));
+  CHECK_NOTHROW(check_paper_md_run(data / "paper-2d"));
 }
