@@ -139,7 +139,7 @@ std::string amplitude_row(const std::string& name, double value, double error) {
 
 /// REPORT.md's section on the tracer (step 4) against the MD: the amplitudes at the last common
 /// recording time and p_imp's shape (the full table and figures are in report-tracer/).
-std::string tracer_section(const ReproduceResult& r) {
+std::string tracer_section(const ReproduceResult& r, bool figures) {
   std::ostringstream md;
   md << "## The impurity from kinetic theory (Eq. (36)): tracer against MD\n\n"
      << r.tracer["trajectories"] << " trajectories of the Lorentz–Boltzmann equation in the "
@@ -166,12 +166,15 @@ std::string tracer_section(const ReproduceResult& r) {
        << " (the Gaussian of Eq. (35)); χ²/dof of tracer − MD = " << common::format_significant(h.chi2_per_dof, 3)
        << " over " << h.dof << " bins.\n";
   }
+  if (figures)
+    md << "\n![tracer against MD](report-tracer/figures/tracer_vs_md.png)\n\n"
+          "![p_imp: tracer, MD, Gaussian](report-tracer/figures/tracer_p_imp.png)\n";
   md << "\nThe tracer's exponents against theory: " << verdict_word(r.tracer_vs_md)
      << ". Full report: [report-tracer/report.md](report-tracer/report.md)\n";
   return md.str();
 }
 
-std::string top_report(const ReproduceResult& r) {
+std::string top_report(const ReproduceResult& r, bool figures) {
   std::ostringstream md;
   md << "# coldblast reproduce\n\n"
      << "## TvNS amplitudes (Eq. (1), exact solver, two independent methods)\n\n"
@@ -225,7 +228,7 @@ std::string top_report(const ReproduceResult& r) {
     }
     md << "\nFull report: [report-" << name << "/report.md](report-" << name << "/report.md)\n\n";
   }
-  return md.str() + tracer_section(r);
+  return md.str() + tracer_section(r, figures);
 }
 
 /// Step 1: A_2, A_3 (Eq. (1), ideal gas) and A_2 at the MD's packing fraction, into r and tvns.json.
@@ -364,7 +367,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   write_report(r.against_paper, {config.out / "report-paper", config.figures});
   write_report(r.against_hydro, {config.out / "report-hydro", config.figures});
   write_report(r.tracer_vs_md, {config.out / "report-tracer", config.figures});
-  common::write_file_atomic(config.out / "REPORT.md", top_report(r));
+  common::write_file_atomic(config.out / "REPORT.md", top_report(r, config.figures));
   common::write_file_atomic(config.out / "table1.md", table1_markdown(r));
   common::write_file_atomic(config.out / "summary.json", reproduce_summary(r).dump(2) + "\n");
   return r;

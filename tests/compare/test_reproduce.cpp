@@ -110,6 +110,7 @@ TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   check_amplitude_rows(report, r.against_hydro.amplitudes);
   check_tracer(r, report);
+  CHECK(report.find(".png") == std::string::npos);  // figures = false: no links to figures not drawn
   // Prose numbers at their meaningful digits, not 17 (R/λ, the energy error, the wall time).
   CHECK(std::regex_search(report, std::regex("Running time exponents at R/λ = [0-9.]{1,7} \\(relative energy "
                                              "error [0-9.]+(e-[0-9]+)?\\)")));
