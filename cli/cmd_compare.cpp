@@ -172,8 +172,11 @@ void run(CompareOptions& options) {
 void add_compare_command(CLI::App& app) {
   auto options = std::make_shared<CompareOptions>();
   CLI::App* command = app.add_subcommand(
-      "compare", "Check an MD run's exponents against theory, the paper's Table 1 or hydro; exit 0 pass, 3 fail");
-  command->add_option("RUN_DIR", options->run_dir, "Output directory of `coldblast md run` (blocks.csv, summary.json)")
+      "compare",
+      "Check an MD (or tracer) run's exponents against theory, the paper's Table 1 or hydro; exit 0 pass, 3 fail");
+  command
+      ->add_option("RUN_DIR", options->run_dir,
+                   "Output directory of `coldblast md run` or `coldblast tracer` (blocks.csv, summary.json)")
       ->required();
   command->add_option("--against", options->against, "Reference: theory (exact rationals), paper (Table 1) or hydro")
       ->capture_default_str();

@@ -86,7 +86,8 @@ void run(ReproduceOptions& options) {
 void add_reproduce_command(CLI::App& app) {
   auto options = std::make_shared<ReproduceOptions>();
   CLI::App* command = app.add_subcommand(
-      "reproduce", "Reproduce the paper: A_2, A_3, the Navier–Stokes core, an MD ensemble and the comparisons");
+      "reproduce",
+      "Reproduce the paper: A_2, A_3, the Navier–Stokes core, an MD ensemble, the kinetic tracer and the comparisons");
   command->add_option("--scale", options->scale, "quick (minutes on 2 cores) or paper (the paper's 3e4 realizations)")
       ->capture_default_str();
   command->add_option("--out", options->config.out, "Output directory")->capture_default_str();
