@@ -170,7 +170,9 @@ std::string tracer_section(const ReproduceResult& r, bool figures) {
     md << "\n![tracer against MD](report-tracer/figures/tracer_vs_md.png)\n\n"
           "![p_imp: tracer, MD, Gaussian](report-tracer/figures/tracer_p_imp.png)\n";
   md << "\nThe tracer's exponents against theory: " << verdict_word(r.tracer_vs_md)
-     << ". Full report: [report-tracer/report.md](report-tracer/report.md)\n";
+     << ". Full report (tracer/MD − 1 at every recorded time): [report-tracer/report.md](report-tracer/report.md). "
+        "Where and why the two differ (the start, before the background is hydrodynamic; the velocity correlations "
+        "Eq. (36) leaves out): docs/verification.md, \"The impurity's kinetic equation, Eq. (36), against the MD\".\n";
   return md.str();
 }
 
