@@ -71,6 +71,14 @@ std::string format_measurement(double value, double error, int error_digits) {
   return format_at_place(std::round(value / unit) * unit, place) + " ± " + format_at_place(rounded_error, place);
 }
 
+namespace {
+/// " context" after the range, one space whatever spaces the caller put first ("" for none).
+std::string context_suffix(const std::string& context) {
+  const std::size_t start = context.find_first_not_of(' ');
+  return start == std::string::npos ? "" : " " + context.substr(start);
+}
+}  // namespace
+
 void require_in_range(const std::string& name, double value, double lo, double hi, Bound lo_bound, Bound hi_bound,
                       const std::string& context) {
   const bool above = lo_bound == Bound::open ? value > lo : value >= lo;
@@ -78,8 +86,7 @@ void require_in_range(const std::string& name, double value, double lo, double h
   if (std::isfinite(value) && above && below) return;
   const std::string range = std::string(lo_bound == Bound::open ? "(" : "[") + format_number(lo) + ", " +
                             format_number(hi) + (hi_bound == Bound::open ? ")" : "]");
-  throw std::invalid_argument(name + " = " + format_number(value) + " is outside " + range +
-                              (context.empty() ? "" : " " + context));
+  throw std::invalid_argument(name + " = " + format_number(value) + " is outside " + range + context_suffix(context));
 }
 
 void require_integer_in_range(const std::string& name, long long value, long long lo, long long hi,
@@ -87,7 +94,7 @@ void require_integer_in_range(const std::string& name, long long value, long lon
   if (value >= lo && value <= hi) return;
   const std::string hi_text = hi == std::numeric_limits<long long>::max() ? "inf" : std::to_string(hi);
   throw std::invalid_argument(name + " = " + std::to_string(value) + " is outside [" + std::to_string(lo) + ", " +
-                              hi_text + "]" + (context.empty() ? "" : " " + context));
+                              hi_text + "]" + context_suffix(context));
 }
 
 std::string rename_fields(const std::string& message, const FieldNames& names) {

@@ -11,7 +11,8 @@ namespace coldblast::common {
 /// Kind of interval bound used in messages: "(" / "[" style.
 enum class Bound { open, closed };
 
-/// Throws std::invalid_argument("name = value is outside (lo, hi)<context>") unless value lies in the interval.
+/// Throws std::invalid_argument("name = value is outside (lo, hi) context") unless value lies in the interval
+/// (one space before a non-empty context, whatever spaces it starts with).
 /// Use ±infinity for a missing bound. Also rejects non-finite values.
 void require_in_range(const std::string& name, double value, double lo, double hi, Bound lo_bound = Bound::open,
                       Bound hi_bound = Bound::open, const std::string& context = "");

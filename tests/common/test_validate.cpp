@@ -36,6 +36,17 @@ TEST_CASE("require_in_range honours open and closed bounds and rejects NaN", "[f
   REQUIRE_THROWS_WITH(require_integer_in_range("d", 4, 1, 3), "d = 4 is outside [1, 3]");
 }
 
+TEST_CASE("the context follows the range after exactly one space", "[fast]") {
+  // Callers write it with or without a leading space; the message reads the same.
+  for (const std::string context : {"(0 = automatic)", " (0 = automatic)", "   (0 = automatic)"}) {
+    REQUIRE_THROWS_WITH(require_integer_in_range("cells", -1, 0, 9, context),
+                        "cells = -1 is outside [0, 9] (0 = automatic)");
+    REQUIRE_THROWS_WITH(require_in_range("x", -1.0, 0.0, 1.0, Bound::closed, Bound::open, context),
+                        "x = -1 is outside [0, 1) (0 = automatic)");
+  }
+  REQUIRE_THROWS_WITH(require_integer_in_range("cells", -1, 0, 9, " "), "cells = -1 is outside [0, 9]");
+}
+
 TEST_CASE("format_number round-trips doubles with the fewest digits", "[fast]") {
   REQUIRE(format_number(0.1) == "0.1");
   REQUIRE(format_number(2.0) == "2");
