@@ -93,7 +93,8 @@ void add_reproduce_command(CLI::App& app) {
   command->add_option("--out", options->config.out, "Output directory")->capture_default_str();
   command->add_option("--threads", options->config.threads, "MD worker threads; 0 = all hardware threads")
       ->capture_default_str();
-  command->add_option("--seed", options->config.seed, "MD master seed")->capture_default_str();
+  command->add_option("--seed", options->config.seed, "Master seed of the MD ensemble and the tracer (>= 0)")
+      ->capture_default_str();
   command
       ->add_option("--realizations", options->config.realizations,
                    "MD realizations; 0 = the scale's default (quick 384, paper 30000)")

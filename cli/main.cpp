@@ -50,10 +50,25 @@ std::string integer_text(const std::string& text) {
   return std::to_string(static_cast<long long>(value));
 }
 
-/// Every integer option of `app` and its subcommands accepts integer_text's forms.
+/// An unsigned option refuses a negative value, which CLI11 would wrap modulo 2^64 ("--seed -1"
+/// becoming 18446744073709551615) instead of naming it.
+CLI::Validator non_negative() {
+  return CLI::Validator(
+      [](std::string& text) {
+        const auto start = text.find_first_not_of(" \t");
+        return start != std::string::npos && text[start] == '-' ? text + " is outside [0, 18446744073709551615]"
+                                                                : std::string();
+      },
+      "", "non-negative");
+}
+
+/// Every integer option of `app` and its subcommands accepts integer_text's forms; unsigned ones
+/// refuse negative values.
 void accept_integer_notation(CLI::App& app) {
-  for (CLI::Option* option : app.get_options())
+  for (CLI::Option* option : app.get_options()) {
     if (option->get_type_name() == "INT" || option->get_type_name() == "UINT") option->transform(integer_text);
+    if (option->get_type_name() == "UINT") option->check(non_negative());
+  }
   for (CLI::App* command : app.get_subcommands({})) accept_integer_notation(*command);
 }
 

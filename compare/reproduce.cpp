@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -32,6 +33,8 @@ ReproduceScale parse_scale(const std::string& text) {
 
 void ReproduceConfig::validate() const {
   common::require_integer_in_range("--threads", threads, 0, 1024);
+  // The seed goes into the scene's TOML (a signed 64-bit integer), as md run's --seed.
+  common::require_integer_in_range("--seed", seed, 0, std::numeric_limits<long long>::max());
   common::require_integer_in_range("--realizations", realizations, 0, 100000000,
                                    " (0 = the scale's default; at least 2, for error bars)");
   if (realizations == 1)
@@ -271,7 +274,7 @@ fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const Rep
     return config.md_run;
   }
   say(progress, "step 2/6: MD ensemble of the paper's 2D scene");
-  scene.seed = config.seed;
+  scene.seed = static_cast<std::uint64_t>(config.seed);
   scene.realizations =
       config.realizations > 0 ? config.realizations : (config.scale == ReproduceScale::quick ? 384 : 30000);
   scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
@@ -295,7 +298,7 @@ fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const Rep
 fs::path tracer_step(const ReproduceConfig& config, const ReproduceProgress& progress, ReproduceResult& r) {
   kinetic::TracerConfig tracer;
   tracer.scene = kinetic::parse_tracer_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
-  tracer.scene.seed = config.seed;
+  tracer.scene.seed = static_cast<std::uint64_t>(config.seed);
   tracer.background = "ns";
   tracer.transport = "enskog";
   tracer.trajectories = config.tracer_trajectories > 0 ? config.tracer_trajectories

@@ -24,7 +24,7 @@ struct ReproduceConfig {
   ReproduceScale scale = ReproduceScale::quick;
   std::filesystem::path out = "coldblast-reproduce";  ///< output directory (sub-folders per step)
   int threads = 0;                                    ///< MD worker threads; 0 = all hardware threads
-  std::uint64_t seed = 1;                             ///< MD master seed
+  long long seed = 1;                                 ///< master seed of the MD ensemble and the tracer, [0, 2^63 - 1]
   long long realizations = 0;         ///< MD realizations; 0 = the scale's default (quick 384, paper 30000)
   double hydro_until = 0;             ///< NS run up to this R/λ; 0 = the scale's default (quick 1e4, paper 1e6)
   bool figures = true;                ///< gnuplot figures in the reports
