@@ -15,6 +15,7 @@
 #include <functional>
 #include <future>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@
 #include "common/validate.hpp"
 #include "compare/md_run.hpp"
 #include "compare/report.hpp"
+#include "compare/reproduce.hpp"
 #include "compare/run_data.hpp"
 #include "compare/verdict.hpp"
 #include "hydro/options.hpp"
@@ -64,11 +66,36 @@ class Progress {
   double reported_ = -1.0;
 };
 
+/// Text progress: lines from the worker, handed to callback(line) by the polling thread.
+class LineProgress {
+ public:
+  explicit LineProgress(py::object callback) : callback_(std::move(callback)) {}
+  void push(const std::string& line) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    pending_.push_back(line);
+  }
+  /// With the GIL: calls callback(line) for each line pushed since the last report.
+  void report() {
+    std::vector<std::string> lines;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      lines.swap(pending_);
+    }
+    if (callback_.is_none()) return;
+    for (const std::string& line : lines) callback_(line);
+  }
+
+ private:
+  py::object callback_;
+  std::mutex mutex_;
+  std::vector<std::string> pending_;
+};
+
 /// Runs `work` on a worker thread; the calling thread (holding the GIL between polls) checks for
 /// pending Python signals every 0.1 s. On KeyboardInterrupt (or an exception from the progress
 /// callback) it requests a stop, waits for the worker to leave at its next check, and re-raises.
-template <class Result>
-Result run_interruptible(const std::function<Result()>& work, Progress& progress) {
+template <class Result, class ProgressReport>
+Result run_interruptible(const std::function<Result()>& work, ProgressReport& progress) {
   common::clear_stop();
   std::future<Result> future = std::async(std::launch::async, work);
   const auto stop_and_wait = [&future] {
@@ -468,6 +495,29 @@ py::object compare_run(const std::string& run_dir, const std::string& against, d
   return json_to_python(compare::verdict_json(run_interruptible(work, progress)));
 }
 
+// ---- reproduce --------------------------------------------------------------------------------
+
+py::object reproduce(const std::string& scale, const std::string& out, int threads, long long seed,
+                     long long realizations, double hydro_until, const std::string& md_run,
+                     long long tracer_trajectories, bool figures, const py::object& progress_callback) {
+  compare::ReproduceConfig config;
+  config.scale = compare::parse_scale(scale);
+  config.out = out;
+  config.threads = threads;
+  config.seed = seed;
+  config.realizations = realizations;
+  config.hydro_until = hydro_until;
+  config.md_run = md_run;
+  config.tracer_trajectories = tracer_trajectories;
+  config.figures = figures;
+  config.validate();  // bad input raises before the worker starts
+  LineProgress progress(progress_callback);
+  const std::function<compare::ReproduceResult()> work = [&] {
+    return compare::run_reproduce(config, [&progress](const std::string& line) { progress.push(line); });
+  };
+  return json_to_python(compare::reproduce_summary(run_interruptible(work, progress)));
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_coldblast, m) {
@@ -520,6 +570,9 @@ PYBIND11_MODULE(_coldblast, m) {
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
         py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"),
         py::arg("hydro_eos"), py::arg("hydro_phi"), py::arg("hydro_transport"), py::arg("md_run"), py::arg("out"),
+        py::arg("figures"), py::arg("progress"));
+  m.def("reproduce", &reproduce, py::arg("scale"), py::arg("out"), py::arg("threads"), py::arg("seed"),
+        py::arg("realizations"), py::arg("hydro_until"), py::arg("md_run"), py::arg("tracer_trajectories"),
         py::arg("figures"), py::arg("progress"));
   m.def(
       "tracer_run",

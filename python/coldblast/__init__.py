@@ -14,6 +14,8 @@ particle radius (diameter 2a), T means k_B T.
   equation (Eq. 36) by Monte Carlo (``coldblast tracer``); estimates, moments and the summary.
 - ``coldblast.read_run(dir)``: a run directory (CLI- or Python-made) as pandas DataFrames.
 - ``coldblast.compare(run_dir, against="theory", md_run=None)``: the verdict of ``coldblast compare`` as a dict.
+- ``coldblast.reproduce(scale="quick", out="coldblast-reproduce")``: the paper end to end
+  (``coldblast reproduce``); its summary as a dict.
 
 Bad input raises ValueError with the CLI's exit-2 message; Ctrl-C raises KeyboardInterrupt within
 a fraction of a second and leaves no half-written file. Tour: docs/python.md.
@@ -23,5 +25,6 @@ from . import hydro, md, theory, tracer
 from ._run import Run, read_run
 from ._tvns import Tvns, tvns
 from ._compare import compare
+from ._reproduce import reproduce
 
-__all__ = ["theory", "tvns", "Tvns", "hydro", "md", "tracer", "read_run", "Run", "compare"]
+__all__ = ["theory", "tvns", "Tvns", "hydro", "md", "tracer", "read_run", "Run", "compare", "reproduce"]

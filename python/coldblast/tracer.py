@@ -30,7 +30,8 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
     out : str, os.PathLike or None
         Run directory as ``coldblast tracer --out`` (``coldblast compare`` reads it), or None.
     transport : str
-        "dilute" (chi = 1) or "enskog" (chi(n) at contact; equilibrium background only).
+        "dilute" (chi = 1; the ideal-gas Navier-Stokes) or "enskog" (chi(n) at contact; with "ns" the dense
+        Navier-Stokes at the scene's packing fraction, the prediction for its MD; not with "tvns").
     start : str
         "kick" (the MD's kick, E shared by the impurities) or "thermal" (local Maxwellian).
     start_time : float or None

@@ -78,3 +78,26 @@ def test_sigint_interrupts_hydro_core():
     assert "finished" not in lines
     assert latency is not None and latency < 1.0
     assert "usable 32" in lines and code == 7
+
+REPRODUCE_CHILD = textwrap.dedent(r"""
+    import sys, coldblast
+    def progress(line):  # one write: SIGINT cannot land between its words
+        sys.stdout.write(f"progress {line}\n")
+        sys.stdout.flush()
+    try:
+        coldblast.reproduce(scale="paper", out=sys.argv[1], threads=1, figures=False, progress=progress)
+    except KeyboardInterrupt:
+        print("\nKeyboardInterrupt", flush=True)  # on its own line even if a progress line was cut
+        raise SystemExit(7)
+    print("finished", flush=True)
+""")
+
+
+def test_sigint_interrupts_reproduce(tmp_path):
+    """reproduce --scale paper (1.5 h) stops within a second of SIGINT, in its MD step, and writes no report."""
+    out = tmp_path / "reproduce"
+    lines, code, latency = interrupt_child(REPRODUCE_CHILD, out)
+    assert "KeyboardInterrupt" in lines, lines
+    assert "finished" not in lines and code == 7
+    assert latency is not None and latency < 1.0
+    assert not (out / "REPORT.md").exists() and not (out / "md" / "summary.json").exists()
