@@ -81,9 +81,17 @@ void write_tracer_run(const kinetic::TracerResult& result, const std::string& ou
   std::printf("  collision rate %s per impurity per time (chi = %.6g), null-collision rejection %.3f\n",
               common::format_measurement(result.collision_rate(), result.collision_rate_error()).c_str(), result.chi,
               result.rejection_rate());
-  std::printf("  impurity temperature at t_max %s; output in %s\n",
+  if (summary.contains("collision_rate_exact")) {  // equilibrium: the exact n chi S <|g|> beside the measurement
+    const double exact = summary["collision_rate_exact"].get<double>();
+    std::printf("  exact equilibrium collision rate n chi S <|g|> = %s (measured %+.1f sigma from it)\n",
+                common::format_significant(exact, 6).c_str(),
+                (result.collision_rate() - exact) / result.collision_rate_error());
+  }
+  const std::string bath =
+      result.config.background == "equilibrium" ? " (bath T = " + common::format_number(result.config.T) + ")" : "";
+  std::printf("  impurity temperature at t_max %s%s; output in %s\n",
               common::format_measurement(result.temperature_final(), result.temperature_final_error()).c_str(),
-              out.c_str());
+              bath.c_str(), out.c_str());
   print_final_estimates(result.ensemble);
 }
 
