@@ -74,10 +74,12 @@ void print_table(const compare::CompareResult& result) {
                 measured, window, deviation, v.pass ? "pass" : "FAIL");
   }
   for (const auto& note : result.notes) std::printf("note: %s\n", note.c_str());
-  if (result.against == compare::Reference::hydro && result.continuum) {
-    std::printf("\namplitudes at t = %g (R/lambda = %.2f) against %s:\n",
-                result.amplitudes.empty() ? 0.0 : result.amplitudes[0].t, result.continuum->R_over_lambda_last,
-                result.continuum->model.describe().c_str());
+  if (result.against == compare::Reference::hydro && result.continuum && result.amplitudes.empty())
+    std::printf("\namplitudes: none (they need n0, T0 and R in blocks.csv, or profiles.csv; this %s run has none)\n",
+                compare::run_label(result.run).c_str());
+  if (result.against == compare::Reference::hydro && result.continuum && !result.amplitudes.empty()) {
+    std::printf("\namplitudes at t = %g (R/lambda = %.2f) against %s:\n", result.amplitudes[0].t,
+                result.continuum->R_over_lambda_last, result.continuum->model.describe().c_str());
     std::printf("%-10s %-20s %-20s %9s %8s %7s  %s\n", "quantity", "MD", "NS", "MD/NS-1", "dev/sig", "bound",
                 "verdict");
     // "value±error" to the error's second digit, padded to 20 columns (± is two bytes in UTF-8).
