@@ -179,10 +179,40 @@ std::string tracer_section(const ReproduceResult& r, bool figures) {
   return md.str();
 }
 
+/// The first thing REPORT.md says: the amplitudes, the three verdicts and the tracer's agreement with
+/// the MD at the last common time, one line each (the sections below hold the tables).
+std::string summary_section(const ReproduceResult& r) {
+  std::ostringstream md;
+  md << "## Summary\n\n"
+     << "- A_2 = " << common::format_measurement(r.A2, r.A2_error)
+     << ", A_3 = " << common::format_measurement(r.A3, r.A3_error)
+     << ", A_2(φ = " << common::format_significant(r.phi_md, 4)
+     << ") = " << common::format_measurement(r.A2_md, r.A2_md_error) << "\n"
+     << "- MD (" << r.md["realizations"] << " realizations) against theory: " << verdict_summary(r.against_theory)
+     << "\n- against the paper's Table 1: " << verdict_summary(r.against_paper)
+     << "\n- against the Navier–Stokes prediction: " << verdict_summary(r.against_hydro) << "\n";
+  if (r.tracer_vs_md.tracer_md) {
+    const TracerMdComparison& c = *r.tracer_vs_md.tracer_md;
+    md << "- kinetic tracer (Eq. (36), " << r.tracer["trajectories"]
+       << " trajectories, nothing fitted) against the MD at t = "
+       << common::format_significant(c.series.front().points.back().t, 6) << ":";
+    for (const auto& series : c.series)
+      md << (&series == &c.series.front() ? " " : ", ") << series.observable << " "
+         << format_ratio_percent(series.points.back());
+    if (c.distribution)
+      md << "; p_imp's ⟨r⁴⟩/⟨r²⟩² "
+         << common::format_measurement(c.distribution->ratio_tracer, c.distribution->ratio_tracer_error) << " against "
+         << common::format_measurement(c.distribution->ratio_md, c.distribution->ratio_md_error) << " (Gaussian "
+         << common::format_significant(c.distribution->ratio_gaussian, 3) << ")";
+    md << "\n";
+  }
+  return md.str() + "\n";
+}
+
 std::string top_report(const ReproduceResult& r, bool figures) {
   std::ostringstream md;
   md << "# coldblast reproduce\n\n"
-     << "## TvNS amplitudes (Eq. (1), exact solver, two independent methods)\n\n"
+     << summary_section(r) << "## TvNS amplitudes (Eq. (1), exact solver, two independent methods)\n\n"
      << "| quantity | value | error |\n|---|---|---|\n"
      << amplitude_row("A_2 (γ = 2)", r.A2, r.A2_error) << amplitude_row("A_3 (γ = 5/3)", r.A3, r.A3_error)
      << amplitude_row("A_2 at φ = " + common::format_significant(r.phi_md, 4) + " (Henderson EOS)", r.A2_md,

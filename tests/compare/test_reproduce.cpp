@@ -110,6 +110,15 @@ TEST_CASE("reproduce runs every step and writes the report", "[slow]") {
   const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   check_amplitude_rows(report, r.against_hydro.amplitudes);
   check_tracer(r, report);
+  // The summary comes first and repeats each verdict's one-line summary.
+  CHECK(report.find("# coldblast reproduce\n\n## Summary\n\n- A_2 = 0.351935906848599 ± 2.5e-14, A_3 = ") == 0);
+  CHECK(report.find("- MD (4 realizations) against theory: " + verdict_summary(r.against_theory) + "\n") !=
+        std::string::npos);
+  CHECK(report.find("- against the paper's Table 1: " + verdict_summary(r.against_paper) + "\n") != std::string::npos);
+  CHECK(report.find("- against the Navier–Stokes prediction: " + verdict_summary(r.against_hydro) + "\n") !=
+        std::string::npos);
+  CHECK(report.find("- kinetic tracer (Eq. (36), 600 trajectories, nothing fitted) against the MD at t = 4000: R_imp " +
+                    format_ratio_percent(r.tracer_vs_md.tracer_md->series[0].points.back())) != std::string::npos);
   CHECK(report.find(".png") == std::string::npos);  // figures = false: no links to figures not drawn
   // Prose numbers at their meaningful digits, not 17 (R/λ, the energy error, the wall time).
   CHECK(std::regex_search(report, std::regex("Running time exponents at R/λ = [0-9.]{1,7} \\(relative energy "
