@@ -105,6 +105,9 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       sigma2_[s][r] = sigma_[s][r] * sigma_[s][r];
     }
   same_radius_ = radius_[0] == radius_[1];
+  if (config.count_impurity_recollisions)
+    for (std::size_t k = 0; k < state.size(); ++k)
+      if (species_[k] == impurity_species) partner_memory_.push_back({static_cast<std::int32_t>(k), {}, 0});
   simd_crossing_ = D == 3 && config.simd && pair_kernel_available();
   use_kernel_ = simd_crossing_ && same_radius_;
   if (!config.periodic) {
@@ -444,6 +447,25 @@ Vec<D> Engine<D, Queue>::separation(std::int32_t i, std::int32_t j) const {
 }
 
 template <int D, class Queue>
+void Engine<D, Queue>::remember_partner(std::int32_t id, std::int32_t partner) {
+  for (PartnerMemory& memory : partner_memory_) {
+    if (memory.id != id) continue;
+    if (std::find(memory.partners.begin(), memory.partners.end(), partner) != memory.partners.end())
+      ++memory.recollisions;
+    else
+      memory.partners.push_back(partner);
+    return;
+  }
+}
+
+template <int D, class Queue>
+std::uint64_t Engine<D, Queue>::recollisions(std::int32_t id) const {
+  for (const PartnerMemory& memory : partner_memory_)
+    if (memory.id == id) return memory.recollisions;
+  return 0;
+}
+
+template <int D, class Queue>
 void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
   Particle<D>& p = particles_[i];
   Particle<D>& q = particles_[j];
@@ -460,6 +482,10 @@ void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
   if (config_.record_impurity_trajectories) {
     if (species_[i] == impurity_species) trajectories_.push_back({t, i, p.position});
     if (species_[j] == impurity_species) trajectories_.push_back({t, j, q.position});
+  }
+  if (!partner_memory_.empty()) {
+    remember_partner(i, j);
+    remember_partner(j, i);
   }
   if (config_.overlap_check) {
     check_overlaps_of(i);

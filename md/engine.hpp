@@ -43,6 +43,10 @@ struct EngineConfig {
   bool simd = true;
   bool overlap_check = false;                 ///< verify after every event that the touched particles overlap nobody
   bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
+  /// Count each impurity's recollisions: its collisions with a particle it had hit before
+  /// (Engine::recollisions; observable C_re). Eq. (36) of the paper, the kinetic tracer's
+  /// equation, draws every partner afresh and so has none.
+  bool count_impurity_recollisions = false;
 };
 
 /// One point of an impurity trajectory.
@@ -83,6 +87,9 @@ class Engine {
   double kinetic_energy() const;
   Vec<D> momentum() const;
   const std::vector<TrajectoryPoint<D>>& trajectories() const { return trajectories_; }
+  /// With config.count_impurity_recollisions: the collisions of impurity `id` with a particle it
+  /// had already hit; 0 otherwise (and for a host).
+  std::uint64_t recollisions(std::int32_t id) const;
   const CellList<D>& cells() const { return cells_; }
 
   /// Calls f(id, position) at time now() for each particle within `radius` of `centre` (open geometry).
@@ -190,6 +197,14 @@ class Engine {
   std::uint64_t collision_count_ = 0, event_count_ = 0, crossing_count_ = 0, stale_count_ = 0;
   double virial_sum_ = 0.0;
   std::vector<TrajectoryPoint<D>> trajectories_;
+  /// count_impurity_recollisions: per impurity, every particle it has hit and its recollisions.
+  struct PartnerMemory {
+    std::int32_t id;
+    std::vector<std::int32_t> partners;
+    std::uint64_t recollisions = 0;
+  };
+  std::vector<PartnerMemory> partner_memory_;  // a few impurities: searched linearly
+  void remember_partner(std::int32_t id, std::int32_t partner);
 };
 
 template <int D, class Queue>

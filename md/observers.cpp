@@ -108,13 +108,14 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
     if (entry >= 0) record[entry] = value;
   };
   // Eq. (38) [eq:Rimp_comp]: inner values |r|²/2 and |v|²/2 averaged over the impurities.
-  double r2 = 0.0, v2 = 0.0, collisions = 0.0, flow = 0.0, flow_squared = 0.0;
+  double r2 = 0.0, v2 = 0.0, collisions = 0.0, recollisions = 0.0, flow = 0.0, flow_squared = 0.0;
   for (std::size_t m = 0; m < impurities_.size(); ++m) {
     const std::int32_t id = impurities_[m];
     const Vec<D> x = engine_.position(id);
     r2 += 0.5 * (x - initial_position_[m]).squaredNorm();
     v2 += 0.5 * engine_.velocity(id).squaredNorm();
     collisions += engine_.particle(id).collisions;
+    recollisions += static_cast<double>(engine_.recollisions(id));  // 0 unless C_re is requested
     if (!local_radius_.empty()) {
       // u_imp: |mean velocity| of the particles within the impurity's fixed radius (0 if none).
       // u_flow: the same mean with its thermal noise removed, |ū|² − s²/N, s² the sample variance
@@ -136,6 +137,7 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
   put("R_imp", r2 / count);
   put("V_imp", v2 / count);
   put("C_imp", collisions / count);
+  put("C_re", recollisions / count);
   put("u_imp", flow / count);
   put("u_flow", flow_squared / count);
   if (core_radius_ > 0.0) {

@@ -75,6 +75,28 @@ TEST_CASE("a heavy impurity hits a resting host: 1D elastic formula", "[fast]") 
   CHECK(engine.particle(0).collisions == 1);
 }
 
+TEST_CASE("recollisions: an impurity and one host in a periodic box meet again and again", "[fast]") {
+  // Equal discs on one line in a periodic box of side 10: the impurity moves at v = 1 towards the
+  // resting host 4 away; equal masses exchange velocities, the host runs round the box (gap 8) and
+  // hits it from behind, and so on: collisions at t = 3, 11, 19, ...; every one after the first is
+  // a recollision. The count is kept only when asked for.
+  for (const bool count : {true, false}) {
+    InitialState<2> s = empty_state<2>();
+    add<2>(s, Vec<2>(2.0, 5.0), Vec<2>(1.0, 0.0), impurity_species);
+    add<2>(s, Vec<2>(6.0, 5.0), Vec<2>::Zero());
+    EngineConfig<2> config;
+    config.periodic = true;
+    config.box = Vec<2>::Constant(10.0);
+    config.count_impurity_recollisions = count;
+    Engine<2, CalendarEventQueue> engine(config, s);
+    engine.run_until(60.0);  // collisions at 3, 11, ..., 59
+    REQUIRE(engine.collision_count() == 8);
+    CHECK(engine.particle(0).collisions == 8);
+    CHECK(engine.recollisions(0) == (count ? 7u : 0u));
+    CHECK(engine.recollisions(1) == 0);  // a host: never counted
+  }
+}
+
 TEST_CASE("the guard stops a particle that approaches the region's edge", "[fast]") {
   InitialState<2> s = empty_state<2>();
   add<2>(s, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.3));

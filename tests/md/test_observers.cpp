@@ -125,6 +125,34 @@ TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[s
   fs::remove_all(dir);
 }
 
+TEST_CASE("C_re: recollisions are a part of the collisions, grow in time, and are counted only when asked", "[fast]") {
+  const std::vector<std::string> keys{"t_max=200", "realizations=8", "seed=3", "A_d=0.2238", "block_size=2"};
+  auto with = [&keys](const char* observables) {
+    std::vector<std::string> k = keys;
+    k.push_back(observables);
+    RunOptions options;
+    options.threads = 2;
+    return estimate_observables(run_blast(parse_scene(default_scene_toml(), k), options));
+  };
+  const auto both = with(R"(observables=["C_imp","C_re"])");
+  const auto alone = with(R"(observables=["C_imp"])");
+  std::map<double, double> c_imp, c_re;
+  for (const auto& e : both) (e.observable == "C_imp" ? c_imp : c_re)[e.t] = e.mean;
+  REQUIRE(c_re.size() == c_imp.size());
+  REQUIRE(c_re.size() >= 10);
+  double previous = 0.0;
+  for (const auto& [t, re] : c_re) {
+    INFO("t = " << t);
+    CHECK(re >= previous);     // a cumulative count
+    CHECK(re <= c_imp.at(t));  // a part of the impurity's collisions
+    previous = re;
+  }
+  CHECK(previous > 0.0);  // by t = 200 some hosts are hit twice (13 % of the collisions at t = 4000)
+  // Counting changes no trajectory: C_imp is the same to the last bit without C_re.
+  REQUIRE(alone.size() == c_imp.size());
+  for (const auto& e : alone) CHECK(e.mean == c_imp.at(e.t));
+}
+
 TEST_CASE("u_flow's estimator removes the thermal noise that biases |mean velocity|", "[fast]") {
   // N Maxwellian velocities (per-component variance T) around a flow u: the plain |ū|² averages
   // to |u|² + d T/N, the estimate to |u|² (unbiased). 20000 samples; tolerance 4 standard errors.
