@@ -107,7 +107,7 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
   same_radius_ = radius_[0] == radius_[1];
   if (config.count_impurity_recollisions)
     for (std::size_t k = 0; k < state.size(); ++k)
-      if (species_[k] == impurity_species) partner_memory_.push_back({static_cast<std::int32_t>(k), {}, 0});
+      if (species_[k] == impurity_species) partner_memory_.push_back({static_cast<std::int32_t>(k), {}, {}});
   simd_crossing_ = D == 3 && config.simd && pair_kernel_available();
   use_kernel_ = simd_crossing_ && same_radius_;
   if (!config.periodic) {
@@ -447,22 +447,25 @@ Vec<D> Engine<D, Queue>::separation(std::int32_t i, std::int32_t j) const {
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::remember_partner(std::int32_t id, std::int32_t partner) {
+void Engine<D, Queue>::remember_partner(std::int32_t id, std::int32_t partner, double loss) {
   for (PartnerMemory& memory : partner_memory_) {
     if (memory.id != id) continue;
-    if (std::find(memory.partners.begin(), memory.partners.end(), partner) != memory.partners.end())
-      ++memory.recollisions;
-    else
+    if (std::find(memory.partners.begin(), memory.partners.end(), partner) != memory.partners.end()) {
+      ++memory.stats.recollisions;
+      memory.stats.loss_re += loss;
+    } else {
       memory.partners.push_back(partner);
+      memory.stats.loss_first += loss;
+    }
     return;
   }
 }
 
 template <int D, class Queue>
-std::uint64_t Engine<D, Queue>::recollisions(std::int32_t id) const {
+typename Engine<D, Queue>::RecollisionStats Engine<D, Queue>::recollision_stats(std::int32_t id) const {
   for (const PartnerMemory& memory : partner_memory_)
-    if (memory.id == id) return memory.recollisions;
-  return 0;
+    if (memory.id == id) return memory.stats;
+  return {};
 }
 
 template <int D, class Queue>
@@ -472,6 +475,11 @@ void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
   p.advance(t);
   q.advance(t);
   const Vec<D> dr = separation(i, j);
+  double v2_i = 0.0, v2_j = 0.0;  // pre-collision |v|² for partner_memory_ (impurity energy losses)
+  if (!partner_memory_.empty()) {
+    v2_i = p.velocity.squaredNorm();
+    v2_j = q.velocity.squaredNorm();
+  }
   const CollisionOutcome<D> outcome =
       md::collide<D>(dr, p.velocity, q.velocity, mass_[species_[i]], mass_[species_[j]]);
   virial_sum_ += outcome.virial;
@@ -484,8 +492,8 @@ void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
     if (species_[j] == impurity_species) trajectories_.push_back({t, j, q.position});
   }
   if (!partner_memory_.empty()) {
-    remember_partner(i, j);
-    remember_partner(j, i);
+    remember_partner(i, j, 0.5 * mass_[species_[i]] * (v2_i - p.velocity.squaredNorm()));
+    remember_partner(j, i, 0.5 * mass_[species_[j]] * (v2_j - q.velocity.squaredNorm()));
   }
   if (config_.overlap_check) {
     check_overlaps_of(i);

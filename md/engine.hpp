@@ -43,8 +43,9 @@ struct EngineConfig {
   bool simd = true;
   bool overlap_check = false;                 ///< verify after every event that the touched particles overlap nobody
   bool record_impurity_trajectories = false;  ///< store the impurities' positions at each of their collisions
-  /// Count each impurity's recollisions: its collisions with a particle it had hit before
-  /// (Engine::recollisions; observable C_re). Eq. (36) of the paper, the kinetic tracer's
+  /// Count each impurity's recollisions: its collisions with a particle it had hit before, and the
+  /// energy it loses in them and in first collisions (Engine::recollision_stats; observables C_re,
+  /// dE_first, dE_re). Eq. (36) of the paper, the kinetic tracer's
   /// equation, draws every partner afresh and so has none.
   bool count_impurity_recollisions = false;
 };
@@ -87,9 +88,15 @@ class Engine {
   double kinetic_energy() const;
   Vec<D> momentum() const;
   const std::vector<TrajectoryPoint<D>>& trajectories() const { return trajectories_; }
-  /// With config.count_impurity_recollisions: the collisions of impurity `id` with a particle it
-  /// had already hit; 0 otherwise (and for a host).
-  std::uint64_t recollisions(std::int32_t id) const;
+  /// What config.count_impurity_recollisions records of one impurity: its collisions with a
+  /// particle it had already hit, and the kinetic energy it lost in its first collisions with a
+  /// partner and in its recollisions (a gain counts as a negative loss).
+  struct RecollisionStats {
+    std::uint64_t recollisions = 0;
+    double loss_first = 0.0, loss_re = 0.0;
+  };
+  /// The record of impurity `id`; zeros without count_impurity_recollisions (and for a host).
+  RecollisionStats recollision_stats(std::int32_t id) const;
   const CellList<D>& cells() const { return cells_; }
 
   /// Calls f(id, position) at time now() for each particle within `radius` of `centre` (open geometry).
@@ -197,14 +204,15 @@ class Engine {
   std::uint64_t collision_count_ = 0, event_count_ = 0, crossing_count_ = 0, stale_count_ = 0;
   double virial_sum_ = 0.0;
   std::vector<TrajectoryPoint<D>> trajectories_;
-  /// count_impurity_recollisions: per impurity, every particle it has hit and its recollisions.
+  /// count_impurity_recollisions: per impurity, every particle it has hit and its record.
   struct PartnerMemory {
     std::int32_t id;
     std::vector<std::int32_t> partners;
-    std::uint64_t recollisions = 0;
+    RecollisionStats stats;
   };
   std::vector<PartnerMemory> partner_memory_;  // a few impurities: searched linearly
-  void remember_partner(std::int32_t id, std::int32_t partner);
+  /// Records a collision of `id` with `partner` in which `id` lost kinetic energy `loss`.
+  void remember_partner(std::int32_t id, std::int32_t partner, double loss);
 };
 
 template <int D, class Queue>

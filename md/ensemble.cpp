@@ -74,7 +74,7 @@ RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLa
   const bool first = index == 0;
   EngineConfig<D> config = blast_engine_config<D>(scene);
   config.record_impurity_trajectories = first && scene.wants("trajectories");
-  config.count_impurity_recollisions = scene.wants("C_re");
+  config.count_impurity_recollisions = scene.wants("C_re") || scene.wants("dE_first") || scene.wants("dE_re");
   Engine<D, Queue> engine(config, state);
   BlastObserver<D, Queue> observer(scene, layout, engine);
 

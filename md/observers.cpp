@@ -108,14 +108,18 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
     if (entry >= 0) record[entry] = value;
   };
   // Eq. (38) [eq:Rimp_comp]: inner values |r|²/2 and |v|²/2 averaged over the impurities.
-  double r2 = 0.0, v2 = 0.0, collisions = 0.0, recollisions = 0.0, flow = 0.0, flow_squared = 0.0;
+  double r2 = 0.0, v2 = 0.0, collisions = 0.0, recollisions = 0.0, loss_first = 0.0, loss_re = 0.0, flow = 0.0,
+         flow_squared = 0.0;
   for (std::size_t m = 0; m < impurities_.size(); ++m) {
     const std::int32_t id = impurities_[m];
     const Vec<D> x = engine_.position(id);
     r2 += 0.5 * (x - initial_position_[m]).squaredNorm();
     v2 += 0.5 * engine_.velocity(id).squaredNorm();
     collisions += engine_.particle(id).collisions;
-    recollisions += static_cast<double>(engine_.recollisions(id));  // 0 unless C_re is requested
+    const auto partners = engine_.recollision_stats(id);  // zeros unless C_re, dE_first or dE_re is requested
+    recollisions += static_cast<double>(partners.recollisions);
+    loss_first += partners.loss_first;
+    loss_re += partners.loss_re;
     if (!local_radius_.empty()) {
       // u_imp: |mean velocity| of the particles within the impurity's fixed radius (0 if none).
       // u_flow: the same mean with its thermal noise removed, |ū|² − s²/N, s² the sample variance
@@ -138,6 +142,8 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
   put("V_imp", v2 / count);
   put("C_imp", collisions / count);
   put("C_re", recollisions / count);
+  put("dE_first", loss_first / count);
+  put("dE_re", loss_re / count);
   put("u_imp", flow / count);
   put("u_flow", flow_squared / count);
   if (core_radius_ > 0.0) {

@@ -92,8 +92,14 @@ TEST_CASE("recollisions: an impurity and one host in a periodic box meet again a
     engine.run_until(60.0);  // collisions at 3, 11, ..., 59
     REQUIRE(engine.collision_count() == 8);
     CHECK(engine.particle(0).collisions == 8);
-    CHECK(engine.recollisions(0) == (count ? 7u : 0u));
-    CHECK(engine.recollisions(1) == 0);  // a host: never counted
+    const auto stats = engine.recollision_stats(0);
+    CHECK(stats.recollisions == (count ? 7u : 0u));
+    // The impurity gives its energy 1/2 away in the first collision, then gets it back and gives it
+    // away in turn: +1/2 -1/2 +1/2 -1/2 +1/2 -1/2 +1/2 after it, and it moves at 1 again at t = 60.
+    CHECK(stats.loss_first == (count ? 0.5 : 0.0));
+    CHECK_THAT(stats.loss_re, WithinAbs(count ? -0.5 : 0.0, 1e-15));
+    CHECK_THAT(engine.velocity(0)[0], WithinAbs(1.0, 1e-15));
+    CHECK(engine.recollision_stats(1).recollisions == 0);  // a host: never counted
   }
 }
 

@@ -16,6 +16,7 @@
 #include "theory/prefactors.hpp"
 
 using namespace coldblast::md;
+using Catch::Matchers::WithinAbs;
 namespace fs = std::filesystem;
 
 namespace {
@@ -125,7 +126,10 @@ TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[s
   fs::remove_all(dir);
 }
 
-TEST_CASE("C_re: recollisions are a part of the collisions, grow in time, and are counted only when asked", "[fast]") {
+TEST_CASE(
+    "C_re, dE_first, dE_re: recollisions are a part of the collisions, the energy losses add up to what the impurities "
+    "lost, and nothing is counted unless asked",
+    "[fast]") {
   const std::vector<std::string> keys{"t_max=200", "realizations=8", "seed=3", "A_d=0.2238", "block_size=2"};
   auto with = [&keys](const char* observables) {
     std::vector<std::string> k = keys;
@@ -134,10 +138,11 @@ TEST_CASE("C_re: recollisions are a part of the collisions, grow in time, and ar
     options.threads = 2;
     return estimate_observables(run_blast(parse_scene(default_scene_toml(), k), options));
   };
-  const auto both = with(R"(observables=["C_imp","C_re"])");
+  const auto both = with(R"(observables=["V_imp","C_imp","C_re","dE_first","dE_re"])");
   const auto alone = with(R"(observables=["C_imp"])");
-  std::map<double, double> c_imp, c_re;
-  for (const auto& e : both) (e.observable == "C_imp" ? c_imp : c_re)[e.t] = e.mean;
+  std::map<std::string, std::map<double, double>> mean;
+  for (const auto& e : both) mean[e.observable][e.t] = e.mean;
+  const auto &c_imp = mean["C_imp"], &c_re = mean["C_re"];
   REQUIRE(c_re.size() == c_imp.size());
   REQUIRE(c_re.size() >= 10);
   double previous = 0.0;
@@ -148,6 +153,15 @@ TEST_CASE("C_re: recollisions are a part of the collisions, grow in time, and ar
     previous = re;
   }
   CHECK(previous > 0.0);  // by t = 200 some hosts are hit twice (13 % of the collisions at t = 4000)
+  // Energy: the impurities start with all of E (E/k each on average) and change it only in
+  // collisions, so E/k − M V_imp² (V_imp² = <|v|²/2>) is what they lost, first plus re-collisions.
+  const BlastConfig scene = parse_scene(default_scene_toml(), keys);
+  const double start = scene.E / scene.impurities.count;
+  for (const auto& [t, v] : mean["V_imp"]) {
+    INFO("t = " << t);
+    const double lost = start - scene.impurities.mass * v * v;
+    CHECK_THAT(mean["dE_first"].at(t) + mean["dE_re"].at(t), WithinAbs(lost, 1e-12 * start));
+  }
   // Counting changes no trajectory: C_imp is the same to the last bit without C_re.
   REQUIRE(alone.size() == c_imp.size());
   for (const auto& e : alone) CHECK(e.mean == c_imp.at(e.t));
