@@ -1,0 +1,38 @@
+"""scripts/recollision_energy.py: its per-collision energy losses (from blocks.csv, with jackknife
+errors) equal the same ratios computed from observables.csv's means, an independent path."""
+import csv
+import io
+import os
+import re
+import subprocess
+import sys
+
+from conftest import REPO
+
+HEAVY = os.path.join(REPO, "data", "recollisions", "heavy")
+
+
+def means(directory):
+    rows = [r for r in open(os.path.join(directory, "observables.csv")) if not r.startswith("#")]
+    return {(float(r["t"]), r["observable"]): float(r["mean"]) for r in csv.DictReader(io.StringIO("".join(rows)))}
+
+
+def test_energy_per_collision_equals_the_means_ratio():
+    out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "recollision_energy.py"), HEAVY],
+                         capture_output=True, text=True, check=True).stdout
+    m = means(HEAVY)
+    windows = re.findall(r"t in \(([0-9.e+]+), ([0-9.e+]+)\]: energy lost per first collision ([-0-9.e]+) ± [0-9.e-]+, "
+                         r"per recollision ([-0-9.e]+) ± [0-9.e-]+, ratio ([-0-9.e]+) ± ([0-9.e-]+)", out)
+    assert len(windows) == 3, out
+    for t1, t2, first, re_, ratio, ratio_error in windows:
+        t1, t2 = float(t1), float(t2)
+        def change(name):
+            return m[(t2, name)] - (0.0 if t1 == 0 else m[(t1, name)])
+        expected_first = change("dE_first") / (change("C_imp") - change("C_re"))
+        expected_re = change("dE_re") / change("C_re")
+        assert abs(float(first) / expected_first - 1) < 1e-3  # printed to 4 digits
+        assert abs(float(re_) / expected_re - 1) < 1e-3
+        assert abs(float(ratio) - expected_re / expected_first) < 1e-3
+        assert 0 < float(ratio_error) < 0.1
+    # the heavy projectile's recollisions take about two thirds of a first collision's share early on
+    assert 0.6 < float(windows[0][4]) < 0.7
