@@ -1,9 +1,12 @@
 #!/usr/bin/python3
 """The impurity's energy loss per first collision and per recollision in time windows, with
 block-jackknife errors, from MD run directories that recorded C_imp, C_re, dE_first and dE_re
-(docs/verification.md, "Recollisions in the MD"). Usage:
+(docs/verification.md, "Recollisions in the MD"). With --figure FILE it also draws, against t, the
+share of the collisions that are recollisions and the share of the impurity's energy loss they
+carry (matplotlib, Debian's python3-matplotlib). Usage:
 
     scripts/recollision_energy.py data/recollisions/unit data/recollisions/heavy data/recollisions/large
+    scripts/recollision_energy.py --figure recollisions.png data/recollisions/*
 """
 import csv
 import io
@@ -37,6 +40,47 @@ def per_collision(x):
     return np.array([first, re, re / first])
 
 
+def shares(directory):
+    """t, C_re/C_imp and dE_re/(dE_first + dE_re) at every recorded time, each with its block-jackknife error."""
+    sums = block_sums(directory)
+    times = sorted({t for block in sums.values() for (t, _) in block})
+    names = ["C_re", "C_imp", "dE_re", "dE_first"]
+    # per block: array [time, name]
+    parts = [np.array([[block[(t, name)] for name in names] for t in times]) for block in sums.values()]
+    total = sum(parts)
+
+    def ratios(x):
+        return np.stack([x[:, 0] / x[:, 1], x[:, 2] / (x[:, 2] + x[:, 3])])
+
+    value = ratios(total)
+    jackknife = np.array([ratios(total - part) for part in parts])
+    n = len(parts)
+    error = np.sqrt((n - 1) / n * ((jackknife - jackknife.mean(axis=0)) ** 2).sum(axis=0))
+    return np.array(times), value, error
+
+
+def draw(directories, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4), constrained_layout=True)
+    for directory in directories:
+        t, value, error = shares(directory)
+        label = directory.rstrip("/").split("/")[-1]
+        for axis, row in ((left, 0), (right, 1)):
+            line, = axis.plot(t, value[row], "o-", ms=3, label=label)
+            axis.fill_between(t, value[row] - error[row], value[row] + error[row], color=line.get_color(), alpha=0.3)
+    left.set(xscale="log", xlabel="t", ylabel="C_re / C_imp", title="recollisions among the impurity's collisions")
+    right.set(xscale="log", xlabel="t", ylabel="dE_re / (dE_first + dE_re)",
+              title="share of the energy loss in recollisions")
+    for axis in (left, right):
+        axis.axhline(0, color="k", lw=0.5)
+        axis.grid(alpha=0.3)
+        axis.legend(title="impurity")
+    fig.suptitle("MD of the paper's 2D scene (bands: 1 sigma, block jackknife); Eq. (36) has no recollisions: 0 in both")
+    fig.savefig(path, dpi=120)
+
+
 def main(directories):
     for directory in directories:
         sums = block_sums(directory)
@@ -56,6 +100,14 @@ def main(directories):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 2:
+    arguments = sys.argv[1:]
+    figure = None
+    if arguments[:1] == ["--figure"]:
+        if len(arguments) < 2:
+            sys.exit("--figure needs a file name\n" + __doc__)
+        figure, arguments = arguments[1], arguments[2:]
+    if not arguments:
         sys.exit(__doc__)
-    main(sys.argv[1:])
+    main(arguments)
+    if figure:
+        draw(arguments, figure)

@@ -36,3 +36,19 @@ def test_energy_per_collision_equals_the_means_ratio():
         assert 0 < float(ratio_error) < 0.1
     # the heavy projectile's recollisions take about two thirds of a first collision's share early on
     assert 0.6 < float(windows[0][4]) < 0.7
+
+
+def test_figure_and_shares(tmp_path):
+    figure = tmp_path / "recollisions.png"
+    subprocess.run([sys.executable, os.path.join(REPO, "scripts", "recollision_energy.py"), "--figure", str(figure),
+                    HEAVY], capture_output=True, text=True, check=True)
+    assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import recollision_energy
+    t, value, error = recollision_energy.shares(HEAVY)
+    m = means(HEAVY)
+    assert t[-1] == 4000.0
+    assert abs(value[0][-1] - m[(4000.0, "C_re")] / m[(4000.0, "C_imp")]) < 1e-12
+    lost = m[(4000.0, "dE_first")] + m[(4000.0, "dE_re")]
+    assert abs(value[1][-1] - m[(4000.0, "dE_re")] / lost) < 1e-12
+    assert 0 < error[0][-1] < 0.01 and 0 < error[1][-1] < 0.01  # 256 realizations: errors of a few 1e-3
