@@ -66,8 +66,10 @@ void CompareConfig::validate() const {
   for (auto name = observables.begin(); name != observables.end(); ++name) {
     const theory::ObservableInfo* info = theory::find_observable(*name);
     if (!info || !info->verdict)
-      throw std::invalid_argument("--observables: " + *name + " is unknown; allowed: " +
-                                  theory::join_names(theory::observable_names(theory::is_verdict)));
+      throw std::invalid_argument("--observables: " + *name +
+                                  (info ? " is not an observable compare judges (" + std::string(info->equation) + ")"
+                                        : std::string(" is unknown")) +
+                                  "; allowed: " + theory::join_names(theory::observable_names(theory::is_verdict)));
     if (std::find(observables.begin(), name, *name) != name)
       throw std::invalid_argument("--observables: " + *name + " is given twice");
   }
