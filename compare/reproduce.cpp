@@ -289,6 +289,16 @@ void tvns_step(const ReproduceConfig& config, const md::BlastConfig& scene, Repr
   common::write_file_atomic(config.out / "tvns.json", tvns.dump(2) + "\n");
 }
 
+/// A (done, total) callback of a step's workers that says "  LABEL: done/total UNIT" about `lines`
+/// times in all and at the end.
+std::function<void(long long, long long)> count_lines(const ReproduceProgress& progress, const std::string& label,
+                                                      const std::string& unit, long long lines) {
+  return [&progress, label, unit, lines](long long done, long long total) {
+    if (progress && (done % std::max<long long>(1, total / lines) == 0 || done == total))
+      progress("  " + label + ": " + std::to_string(done) + "/" + std::to_string(total) + " " + unit);
+  };
+}
+
 /// --threads, 0 resolved to every hardware thread (the MD's and the tracer's workers).
 int worker_threads(const ReproduceConfig& config) {
   return config.threads > 0 ? config.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -311,10 +321,7 @@ fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const Rep
   md::RunOptions options;
   options.amplitude = hydro::md_amplitude;
   options.threads = worker_threads(config);
-  options.progress = [&progress, total = scene.realizations](long long done, long long) {
-    if (progress && (done % std::max<long long>(1, total / 20) == 0 || done == total))
-      progress("  md: " + std::to_string(done) + "/" + std::to_string(total) + " realizations");
-  };
+  options.progress = count_lines(progress, "md", "realizations", 20);
   const md::BlastResult blast = md::run_blast(scene, options);
   const fs::path md_dir = config.out / "md";
   md::write_blast_outputs(blast, md_dir);
@@ -337,10 +344,7 @@ fs::path tracer_step(const ReproduceConfig& config, const ReproduceProgress& pro
   say(progress, "step 4/6: the impurity from kinetic theory (paper Eq. (36)): " + std::to_string(tracer.trajectories) +
                     " tracer trajectories in the dense Navier–Stokes background");
   kinetic::TracerProgress tracer_progress;
-  tracer_progress.blocks = [&progress](long long done, long long total) {
-    if (progress && (done % std::max<long long>(1, total / 10) == 0 || done == total))
-      progress("  tracer: " + std::to_string(done) + "/" + std::to_string(total) + " blocks");
-  };
+  tracer_progress.blocks = count_lines(progress, "tracer", "blocks", 10);
   const kinetic::TracerResult result = kinetic::run_tracer(tracer, tracer_progress);
   const fs::path tracer_dir = config.out / "tracer";
   kinetic::write_tracer_outputs(result, tracer_dir);
