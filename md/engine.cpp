@@ -108,6 +108,20 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
   if (config.count_impurity_recollisions)
     for (std::size_t k = 0; k < state.size(); ++k)
       if (species_[k] == impurity_species) partner_memory_.push_back({static_cast<std::int32_t>(k), {}, {}});
+  if (!config.impurity_recollisions) {
+    ghosts_ = true;
+    ghost_mask_.assign(state.size(), 0);
+    own_bit_.assign(state.size(), 0);
+    int bit = 0;
+    for (std::size_t k = 0; k < state.size(); ++k) {
+      if (species_[k] != impurity_species) continue;
+      if (bit == 64)
+        throw std::invalid_argument(
+            "impurity recollisions switched off (impurities.recollide = false) with more than 64 impurities: "
+            "allowed 1 to 64");
+      own_bit_[k] = std::uint64_t{1} << bit++;
+    }
+  }
   simd_crossing_ = D == 3 && config.simd && pair_kernel_available();
   use_kernel_ = simd_crossing_ && same_radius_;
   if (!config.periodic) {
@@ -382,7 +396,29 @@ template <int D, class Queue>
 }
 
 template <int D, class Queue>
+void Engine<D, Queue>::ghost_scan(std::int32_t id) {
+  Scan s = start_scan(id, false);
+  s.best = Prediction{};
+  const auto test = [&](std::int32_t j, const Vec<D>& shift) {
+    if (j != id && !ghost_pair(id, j)) test_pair<true, false>(s, j, shift);
+  };
+  const auto test_cell = [&](std::int32_t cell, const Vec<D>& shift) {
+    for (std::int32_t j = cells_.first(cell); j >= 0; j = cells_.next(j)) test(j, shift);
+  };
+  const std::int32_t cell = particles_[id].cell;
+  if (is_big(id))  // open grid: the stencil never wraps
+    for (const std::int32_t delta : big_stencil_) test_cell(cell + delta, Vec<D>::Zero());
+  else
+    cells_.for_each_neighbour_cell(cell, test_cell);
+  if (is_big(id) || (big_reach_ != 0 && covered_[cell] != 0))
+    for (const std::int32_t j : big_) test(j, Vec<D>::Zero());
+  predictions_[id] = s.best;
+}
+
+template <int D, class Queue>
 void Engine<D, Queue>::full_scan(std::int32_t id) {
+  if (ghosts_ && ghost_involved(id)) [[unlikely]]
+    return ghost_scan(id);
   Prediction& p = predictions_[id];
   p.time = never;
   p.partner = -1;
@@ -487,6 +523,10 @@ void Engine<D, Queue>::collide(std::int32_t i, std::int32_t j, double t) {
   ++q.collisions;
   ++collision_count_;
   start_moving(j);
+  if (ghosts_) [[unlikely]] {  // a pair with an impurity: from now on a ghost pair
+    ghost_mask_[i] |= own_bit_[j];
+    ghost_mask_[j] |= own_bit_[i];
+  }
   if (config_.record_impurity_trajectories) {
     if (species_[i] == impurity_species) trajectories_.push_back({t, i, p.position});
     if (species_[j] == impurity_species) trajectories_.push_back({t, j, q.position});
@@ -541,6 +581,8 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
     cross_big(id, axis, direction, stale);
   } else if (stale) {
     full_scan(id);
+  } else if (ghosts_ && ghost_involved(id)) [[unlikely]] {
+    ghost_scan(id);
   } else if (!cells_.wraps(p.cell)) {
     const auto& deltas = cells_.slab_deltas(axis, direction);
     // A slab (3^(D-1) cells) holds too few candidates for the gathered kernel to pay: 8 % slower
@@ -563,7 +605,7 @@ template <int D, class Queue>
   const auto& incoming = big_slab_[axis][direction > 0 ? 1 : 0];
   cover(cell, incoming, 1);
   cover(cell - direction * cells_.stride(axis), big_slab_[axis][direction > 0 ? 0 : 1], -1);
-  if (stale)
+  if (stale || ghost_involved(id))
     full_scan(id);
   else
     scan_cells(id, cell, incoming.data(), incoming.data() + incoming.size(), use_kernel_);
@@ -610,6 +652,7 @@ Vec<D> Engine<D, Queue>::momentum() const {
 template <int D, class Queue>
 void Engine<D, Queue>::check_pair(std::int32_t i, const Vec<D>& x_i, std::int32_t j, const Vec<D>& shift,
                                   double tolerance) const {
+  if (!ghost_mask_.empty() && ghost_pair(i, j)) return;  // ghost pairs pass through each other
   const double sigma = sigma_[species_[i]][species_[j]];
   const double distance = (particles_[j].position_at(now_) + shift - x_i).norm();
   if (distance < sigma * (1.0 - tolerance)) {
@@ -655,7 +698,8 @@ template <int D, class Queue>
 std::size_t Engine<D, Queue>::bytes() const {
   return particles_.capacity() * sizeof(Particle<D>) + predictions_.capacity() * sizeof(Prediction) +
          species_.capacity() + moving_flag_.capacity() + crossing_.capacity() + moving_.capacity() * 4 +
-         cells_.bytes() + queue_.bytes() + covered_.capacity() + big_.capacity() * 4;
+         cells_.bytes() + queue_.bytes() + covered_.capacity() + big_.capacity() * 4 +
+         (ghost_mask_.capacity() + own_bit_.capacity()) * sizeof(std::uint64_t);
 }
 
 template class Engine<2, HeapEventQueue>;

@@ -48,6 +48,11 @@ struct EngineConfig {
   /// dE_first, dE_re). Eq. (36) of the paper, the kinetic tracer's
   /// equation, draws every partner afresh and so has none.
   bool count_impurity_recollisions = false;
+  /// false: a numerical experiment, not hard-sphere dynamics. A pair with an impurity in it collides
+  /// at most once: afterwards its two particles pass through each other. So no impurity has a
+  /// recollision (Eq. (36) of the paper has none); host-host collisions are unchanged, and energy
+  /// and momentum stay conserved. At most 64 impurities.
+  bool impurity_recollisions = true;
 };
 
 /// One point of an impurity trajectory.
@@ -164,6 +169,16 @@ class Engine {
   template <bool Shifted>
   void gather_scan(Scan& s, std::int32_t base, const std::int32_t* deltas, const Vec<D>* shifts, int count) const;
   void full_scan(std::int32_t id);
+  // impurity_recollisions = false (else both empty): per particle, the bit of the impurity it is
+  // (none for a host), and the bits of the impurities it has collided with. A pair with an impurity
+  // that has collided is a "ghost" pair: never predicted again, never checked for overlap.
+  bool ghost_involved(std::int32_t id) const { return ghosts_ && (ghost_mask_[id] != 0 || own_bit_[id] != 0); }
+  bool ghost_pair(std::int32_t i, std::int32_t j) const {
+    return ((ghost_mask_[i] & own_bit_[j]) | (ghost_mask_[j] & own_bit_[i])) != 0;
+  }
+  // The full scan of a particle in a ghost pair or an impurity: the plain pair evaluator over the
+  // neighbour cells (or a big particle's stencil) and the big particles, skipping ghost pairs.
+  [[gnu::noinline]] void ghost_scan(std::int32_t id);
   // Big particles (open geometry, impurities larger than the host: see engine.cpp).
   bool is_big(std::int32_t id) const { return big_reach_ != 0 && species_[id] != host_species; }
   void scan_bigs(std::int32_t id);                                       // pair tests against every big particle
@@ -213,6 +228,8 @@ class Engine {
   std::vector<PartnerMemory> partner_memory_;  // a few impurities: searched linearly
   /// Records a collision of `id` with `partner` in which `id` lost kinetic energy `loss`.
   void remember_partner(std::int32_t id, std::int32_t partner, double loss);
+  bool ghosts_ = false;                              // config.impurity_recollisions = false
+  std::vector<std::uint64_t> own_bit_, ghost_mask_;  // ghosts_: see ghost_pair
 };
 
 template <int D, class Queue>

@@ -173,6 +173,7 @@ EngineConfig<D> blast_engine_config(const ResolvedScene& scene) {
   config.guard_advice_at = [scene](double now) { return guard_advice(scene, now); };
   config.cell_width = c.cell_width;
   config.overlap_check = c.overlap_check;
+  config.impurity_recollisions = c.impurities.recollide;
   return config;
 }
 template EngineConfig<2> blast_engine_config<2>(const ResolvedScene&);

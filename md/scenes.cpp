@@ -61,7 +61,8 @@ std::string text(const toml::node& node, const std::string& key) {
   throw std::invalid_argument("scene key " + key + " must be a string");
 }
 bool boolean(const toml::node& node, const std::string& key) {
-  if (auto v = node.value<bool>()) return *v;
+  // is_boolean first: toml++'s value<bool>() converts an integer (2 would read as true).
+  if (node.is_boolean()) return *node.value<bool>();
   throw std::invalid_argument("scene key " + key + " must be true or false");
 }
 
@@ -95,8 +96,10 @@ void apply_impurities(const toml::table& table, ImpurityConfig& impurities) {
       impurities.mass = number(node, "impurities.mass");
     else if (key == "radius")
       impurities.radius = number(node, "impurities.radius");
+    else if (key == "recollide")
+      impurities.recollide = boolean(node, "impurities.recollide");
     else
-      throw std::invalid_argument("unknown scene key impurities." + key + " (allowed: count, mass, radius)");
+      throw std::invalid_argument("unknown scene key impurities." + key + " (allowed: count, mass, radius, recollide)");
   }
 }
 
@@ -160,7 +163,8 @@ BlastConfig config_from_table(const toml::table& table) {
     } else {
       throw std::invalid_argument(
           "unknown scene key " + key +
-          " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius}, t_min, t_max, realizations, seed, "
+          " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius,recollide}, t_min, t_max, realizations, "
+          "seed, "
           "block_size, observables, box_margin, cell_width, queue, snapshot_times, profile_bins, p_imp_bins, "
           "overlap_check, [hydro])");
     }
@@ -293,6 +297,9 @@ std::string BlastConfig::to_toml() const {
   out << "]\nprofile_bins = " << profile_bins << "\np_imp_bins = " << p_imp_bins
       << "\noverlap_check = " << (overlap_check ? "true" : "false") << "\n\n[impurities]\ncount = " << impurities.count
       << "\nmass = " << format_number(impurities.mass) << "\nradius = " << format_number(impurities.radius) << "\n";
+  // Written only when switched off, so the text of every ordinary scene (compared by merges and
+  // resumes) is what it was before the key existed.
+  if (!impurities.recollide) out << "recollide = false\n";
   return out.str();
 }
 

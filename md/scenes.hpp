@@ -18,6 +18,9 @@ struct ImpurityConfig {
   int count = 4;        ///< number of impurities, in [1, N] (one: nonzero momentum)
   double mass = 1.0;    ///< impurity mass (host mass = 1), > 0
   double radius = 0.0;  ///< impurity radius (length); 0 means the host radius a
+  /// false: each impurity passes through the hosts it has already hit (no recollisions, as in the
+  /// paper's Eq. (36)): a numerical experiment, not hard-sphere dynamics (EngineConfig).
+  bool recollide = true;
 };
 
 /// One blast scene: physics, recording and ensemble keys (units: m = 1, k_B = 1, length = a units as given).

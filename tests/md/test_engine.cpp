@@ -103,6 +103,63 @@ TEST_CASE("recollisions: an impurity and one host in a periodic box meet again a
   }
 }
 
+TEST_CASE("recollisions off: a pair with an impurity collides once, then passes through", "[fast]") {
+  // Equal discs on the line y = 5 of a periodic box of side 10: impurity A at x = 1 moving at +1,
+  // a resting host at 4 and a resting impurity B at 8. A hits the host (t = 2), the host hits B
+  // (t = 5), B runs round the box and hits A (t = 9). Then A runs on at +1 through the host (t = 12)
+  // and through B (t = 17), and so on, both at rest. With recollisions on, A hits the host again at
+  // t = 12.
+  for (const bool recollide : {false, true}) {
+    for (const bool simd : {true, false}) {
+      InitialState<2> s = empty_state<2>();
+      add<2>(s, Vec<2>(1.0, 5.0), Vec<2>(1.0, 0.0), impurity_species);
+      add<2>(s, Vec<2>(4.0, 5.0), Vec<2>::Zero());
+      add<2>(s, Vec<2>(8.0, 5.0), Vec<2>::Zero(), impurity_species);
+      EngineConfig<2> config;
+      config.periodic = true;
+      config.box = Vec<2>::Constant(10.0);
+      config.simd = simd;
+      config.overlap_check = true;  // the passes overlap, and must not be reported
+      config.count_impurity_recollisions = true;
+      config.impurity_recollisions = recollide;
+      Engine<2, CalendarEventQueue> engine(config, s);
+      engine.run_until(11.0);
+      CHECK(engine.collision_count() == 3);
+      engine.run_until(60.0);
+      INFO("recollide " << recollide << ", simd " << simd);
+      if (recollide) {
+        CHECK(engine.collision_count() > 3);
+        CHECK(engine.recollision_stats(0).recollisions > 0);
+        continue;
+      }
+      CHECK(engine.collision_count() == 3);
+      for (std::int32_t id = 0; id < 3; ++id) CHECK(engine.particle(id).collisions == 2);
+      CHECK_THAT(engine.position(0)[0], WithinAbs(4.0, 1e-12));  // 3 + 51 on the ring of 10
+      CHECK_THAT(engine.position(1)[0], WithinAbs(7.0, 1e-12));
+      CHECK_THAT(engine.position(2)[0], WithinAbs(2.0, 1e-12));
+      CHECK(engine.velocity(0) == Vec<2>(1.0, 0.0));
+      CHECK(engine.recollision_stats(0).recollisions == 0);
+      CHECK(engine.recollision_stats(2).recollisions == 0);
+      CHECK_THAT(engine.kinetic_energy(), WithinRel(0.5, 1e-14));
+      CHECK_NOTHROW(engine.check_all_overlaps());
+    }
+  }
+}
+
+TEST_CASE("recollisions off: at most 64 impurities", "[fast]") {
+  InitialState<2> s = empty_state<2>();
+  for (int k = 0; k < 65; ++k)
+    add<2>(s, Vec<2>(0.5 + 1.2 * (k % 8), 0.5 + 1.2 * (k / 8)), Vec<2>::Zero(), impurity_species);
+  EngineConfig<2> config;
+  config.periodic = true;
+  config.box = Vec<2>::Constant(12.0);
+  config.impurity_recollisions = false;
+  using E = Engine<2, CalendarEventQueue>;
+  CHECK_THROWS_WITH(E(config, s), Catch::Matchers::Contains("more than 64 impurities"));
+  s.position.pop_back(), s.velocity.pop_back(), s.species.pop_back();
+  CHECK_NOTHROW(E(config, s));
+}
+
 TEST_CASE("the guard stops a particle that approaches the region's edge", "[fast]") {
   InitialState<2> s = empty_state<2>();
   add<2>(s, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.3));

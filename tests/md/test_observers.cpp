@@ -167,6 +167,45 @@ TEST_CASE(
   for (const auto& e : alone) CHECK(e.mean == c_imp.at(e.t));
 }
 
+TEST_CASE(
+    "impurities.recollide = false: no recollision in 2D, 3D and with large impurities, energy kept, no overlap but "
+    "the passes",
+    "[fast]") {
+  const std::vector<std::vector<std::string>> variants{
+      {}, {"impurities.radius=1.25"}, {"impurities.mass=10"}, {"d=3", "n=0.225", "t_max=100", "A_d=0.2243"}};
+  for (const auto& variant : variants) {
+    std::vector<std::string> keys{"t_max=200",
+                                  "realizations=4",
+                                  "seed=5",
+                                  "A_d=0.2238",
+                                  "block_size=2",
+                                  "overlap_check=true",
+                                  R"(observables=["C_imp","C_re","dE_first","dE_re"])"};
+    keys.insert(keys.end(), variant.begin(), variant.end());
+    INFO("variant " << (variant.empty() ? std::string("paper") : variant.front()));
+    RunOptions options;
+    options.threads = 2;
+    auto off = keys;
+    off.push_back("impurities.recollide=false");
+    const BlastResult on_run = run_blast(parse_scene(default_scene_toml(), keys), options);
+    const BlastResult off_run = run_blast(parse_scene(default_scene_toml(), off), options);
+    CHECK(off_run.energy_error_max() < 1e-12);
+    std::map<std::string, std::map<double, double>> on, without;
+    for (const auto& e : estimate_observables(on_run)) on[e.observable][e.t] = e.mean;
+    for (const auto& e : estimate_observables(off_run)) without[e.observable][e.t] = e.mean;
+    for (const auto& [t, re] : without["C_re"]) CHECK(re == 0.0);
+    CHECK(on["C_re"].rbegin()->second > 0.0);        // the same scene recollides with the switch on
+    CHECK(without["C_imp"].rbegin()->second > 1.0);  // and still collides without it
+  }
+  // The switch is written to the scene's text only when off (ordinary scenes keep their old text).
+  CHECK(parse_scene(default_scene_toml(), {}).to_toml().find("recollide") == std::string::npos);
+  CHECK(parse_scene(default_scene_toml(), {"impurities.recollide=false"}).to_toml().find("recollide = false") !=
+        std::string::npos);
+  // A boolean key takes true or false only (toml++ would read the integer 2 as true).
+  for (const char* bad : {"impurities.recollide=2", "overlap_check=1"})
+    CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {bad}), Catch::Matchers::Contains("must be true or false"));
+}
+
 TEST_CASE("u_flow's estimator removes the thermal noise that biases |mean velocity|", "[fast]") {
   // N Maxwellian velocities (per-component variance T) around a flow u: the plain |ū|² averages
   // to |u|² + d T/N, the estimate to |u|² (unbiased). 20000 samples; tolerance 4 standard errors.
