@@ -77,6 +77,10 @@ std::string paper_scene_difference(const common::Json& scene) {
     return name + " is " + (present ? scene.at(key).dump() : std::string("missing")) + ", the paper scene's " +
            common::format_number(value);
   }
+  // The no-recollision experiment is not hard-sphere dynamics (md/scenes.hpp): not the paper's MD.
+  const common::Json::json_pointer recollide("/impurities/recollide");
+  if (scene.is_object() && scene.contains(recollide) && scene.at(recollide) != true)
+    return "impurities.recollide is " + scene.at(recollide).dump() + ", the paper scene's true";
   return {};
 }
 }  // namespace

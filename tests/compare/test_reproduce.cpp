@@ -153,4 +153,8 @@ TEST_CASE("reproduce rejects bad options before running anything", "[fast]") {
   CHECK_THROWS_WITH(run_reproduce(config), Catch::StartsWith("--md-run: "));
   CHECK_NOTHROW(check_paper_md_run(data / "campaign1-paper-2d"));
   CHECK_NOTHROW(check_paper_md_run(data / "paper-2d"));
+  // The paper scene with recollisions switched off is a numerical experiment, not the paper's MD.
+  CHECK_NOTHROW(check_paper_md_run(data / "recollisions" / "unit"));
+  CHECK_THROWS_WITH(check_paper_md_run(data / "recollisions" / "unit-no-recollisions"),
+                    Catch::Contains("its impurities.recollide is false, the paper scene's true"));
 }
