@@ -99,8 +99,8 @@ void print_table(const compare::CompareResult& result) {
   }
   if (result.tracer_md) {
     const compare::TracerMdComparison& c = *result.tracer_md;
-    std::printf("\ntracer against the MD run %s (tracer/MD - 1, combined jackknife error):\n",
-                c.md_directory.string().c_str());
+    std::printf("\ntracer against the MD run %s%s (tracer/MD - 1, combined jackknife error):\n",
+                c.md_directory.string().c_str(), c.md_recollisions_off ? ", recollisions switched off" : "");
     for (const auto& s : c.series) {
       const compare::TracerMdPoint& p = s.points.back();
       std::printf("  %-6s t = %-9g tracer %s, MD %s: %s%s\n", s.observable.c_str(), p.t,

@@ -276,8 +276,11 @@ std::string amplitude_markdown(const CompareResult& result) {
 // The tracer run against its MD run: tracer/MD − 1 at every common time, p_imp's shape, figures.
 std::string tracer_md_markdown(const TracerMdComparison& c, bool figures) {
   std::ostringstream md;
-  md << "\n## The kinetic tracer (Eq. (36)) against the MD\n\nMD run: `" << c.md_directory.string()
-     << "`. tracer/MD − 1 with the combined block-jackknife error (the runs are independent); nothing is "
+  md << "\n## The kinetic tracer (Eq. (36)) against the MD\n\nMD run: `" << c.md_directory.string() << "`"
+     << (c.md_recollisions_off ? " (with recollisions switched off, impurities.recollide = false: a numerical "
+                                 "experiment, not hard-sphere dynamics)"
+                               : "")
+     << ". tracer/MD − 1 with the combined block-jackknife error (the runs are independent); nothing is "
         "fitted.\n\n| t |";
   for (const auto& s : c.series) md << ' ' << s.observable << " |";
   md << "\n|---|";

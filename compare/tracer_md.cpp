@@ -1,5 +1,6 @@
 #include "compare/tracer_md.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -20,6 +21,22 @@ namespace fs = std::filesystem;
 using common::format_number;
 
 namespace {
+
+/// The first key of the blast's physics (d, n, a, E and the impurities) in which the scenes of the
+/// two runs' summary.json differ, as "its KEY is X, Y in the tracer run"; empty when they agree (a
+/// key missing from either scene is not compared).
+std::string scene_physics_difference(const common::Json& tracer, const common::Json& md) {
+  const common::Json tracer_scene = tracer.value("scene", common::Json::object());
+  const common::Json md_scene = md.value("scene", common::Json::object());
+  for (const char* pointer : {"/d", "/n", "/a", "/E", "/impurities/count", "/impurities/mass", "/impurities/radius"}) {
+    const common::Json::json_pointer key(pointer);
+    if (!tracer_scene.contains(key) || !md_scene.contains(key) || tracer_scene.at(key) == md_scene.at(key)) continue;
+    std::string name = std::string(pointer).substr(1);
+    std::replace(name.begin(), name.end(), '/', '.');
+    return "its " + name + " is " + md_scene.at(key).dump() + ", " + tracer_scene.at(key).dump() + " in the tracer run";
+  }
+  return {};
+}
 
 bool same_time(double a, double b) {
   return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
@@ -220,8 +237,14 @@ TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& 
   if (tracer.d != md.d)
     throw std::invalid_argument("--md-run: d = " + std::to_string(md.d) + " there, " + std::to_string(tracer.d) +
                                 " in the tracer run " + tracer.directory.string());
+  if (const std::string difference = scene_physics_difference(tracer.summary, md.summary); !difference.empty())
+    throw std::invalid_argument("--md-run: " + md.directory.string() +
+                                " is a run of another scene than the tracer run " + tracer.directory.string() + ": " +
+                                difference);
   TracerMdComparison c;
   c.d = tracer.d;
+  const common::Json::json_pointer recollide("/scene/impurities/recollide");
+  c.md_recollisions_off = md.summary.contains(recollide) && md.summary.at(recollide) == false;
   c.tracer_directory = tracer.directory;
   c.md_directory = md.directory;
   for (const char* name : {"R_imp", "V_imp", "C_imp"})

@@ -50,12 +50,15 @@ struct TracerMdDistribution {
 struct TracerMdComparison {
   int d = 0;
   std::filesystem::path tracer_directory, md_directory;
+  /// The MD run switched recollisions off (impurities.recollide = false): a numerical experiment.
+  bool md_recollisions_off = false;
   std::vector<TracerMdSeries> series;                ///< R_imp, V_imp, C_imp (those both runs record)
   std::optional<TracerMdDistribution> distribution;  ///< when both runs have p_imp.csv at a common time
 };
 
 /// Compares a tracer run with an MD run. Throws std::invalid_argument naming --md-run when the runs
-/// differ in d, share no recording time or no impurity observable, or their p_imp bins differ.
+/// differ in d or in their scenes' physics (n, a, E, the impurities' count, mass and radius), share
+/// no recording time or no impurity observable, or their p_imp bins differ.
 TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& md);
 
 /// tracer_vs_md.csv: t, observable, tracer, tracer_stderr, md, md_stderr, ratio_minus_1, its stderr.

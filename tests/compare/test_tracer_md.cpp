@@ -167,6 +167,20 @@ TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_im
   CHECK(csv.find("t,observable,tracer,tracer_stderr,md,md_stderr,ratio_minus_1,ratio_minus_1_stderr\n") !=
         std::string::npos);
 
+  CHECK_FALSE(c.md_recollisions_off);
+  // A run of another scene (here the impurity's mass) is refused; an MD run with recollisions
+  // switched off (impurities.recollide = false) is compared and marked.
+  using coldblast::common::write_file_atomic;
+  write_file_atomic(root / "tracer" / "summary.json", R"({"scene": {"d": 2, "impurities": {"mass": 10}}})");
+  write_file_atomic(root / "md" / "summary.json",
+                    R"({"scene": {"d": 2, "impurities": {"mass": 1, "recollide": false}}})");
+  CHECK_THROWS_WITH(compare_tracer_with_md(read_run(root / "tracer"), read_run(root / "md")),
+                    Catch::Contains("--md-run: ") && Catch::Contains("is a run of another scene") &&
+                        Catch::Contains("its impurities.mass is 1, 10 in the tracer run"));
+  write_file_atomic(root / "md" / "summary.json",
+                    R"({"scene": {"d": 2, "impurities": {"mass": 10, "recollide": false}}})");
+  CHECK(compare_tracer_with_md(read_run(root / "tracer"), read_run(root / "md")).md_recollisions_off);
+
   // Runs that cannot be compared: bad input naming --md-run.
   write_p_imp(root / "tracer", {t_last}, 100, 0.1, gaussian, 1e-3);
   CHECK_THROWS_WITH(compare_tracer_with_md(read_run(root / "tracer"), md), Catch::Contains("--md-run: p_imp.csv"));
