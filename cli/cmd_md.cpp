@@ -19,6 +19,7 @@
 #include "md/ensemble.hpp"
 #include "md/equilibrium.hpp"
 #include "md/scenes.hpp"
+#include "md/states.hpp"
 #if COLDBLAST_HAVE_MPI
 #include "md/mpi_ensemble.hpp"
 #endif
@@ -42,6 +43,12 @@ struct MdRunOptions {
   Format format = Format::table;
 };
 
+struct MdStatesOptions {
+  MdRunOptions run;  // scene, --set, --realizations, --seed, --threads (no shards or checkpoints)
+  double time = 0.0;
+  std::string out = "md-states";
+};
+
 struct MdMergeOptions {
   std::vector<std::string> inputs;
   std::string out;
@@ -58,7 +65,7 @@ struct MdEquilibriumOptions {
 /// running realization has reached.
 class Progress {
  public:
-  explicit Progress(double t_max) : t_max_(t_max) {}
+  explicit Progress(double t_max, const char* label = "md run") : t_max_(t_max), label_(label) {}
   void operator()(long long done, long long total) {
     std::lock_guard<std::mutex> lock(mutex_);
     done_ = done;
@@ -69,7 +76,8 @@ class Progress {
     last_ = now;
     shown_ = true;
     const double eta = done > 0 ? elapsed * (total - done) / done : 0.0;
-    std::fprintf(stderr, "\rmd run: %lld/%lld realizations, %.1f s elapsed, ETA %.1f s   ", done, total, elapsed, eta);
+    std::fprintf(stderr, "\r%s: %lld/%lld realizations, %.1f s elapsed, ETA %.1f s   ", label_, done, total, elapsed,
+                 eta);
     if (done == total) std::fprintf(stderr, "\n");
     std::fflush(stderr);
   }
@@ -82,17 +90,18 @@ class Progress {
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     const std::string done = std::to_string(done_) + (total_ > 0 ? "/" + std::to_string(total_) : "");
     if (t == 0.0)  // a realization starts: its initial state (random sequential addition) comes first
-      std::fprintf(stderr, "\rmd run: %s realizations done; realization %lld: placing the particles, %.1f s elapsed   ",
-                   done.c_str(), realization, elapsed);
+      std::fprintf(stderr, "\r%s: %s realizations done; realization %lld: placing the particles, %.1f s elapsed   ",
+                   label_, done.c_str(), realization, elapsed);
     else
-      std::fprintf(stderr, "\rmd run: %s realizations done; realization %lld at t = %.4g of %.4g, %.1f s elapsed   ",
-                   done.c_str(), realization, t, t_max_, elapsed);
+      std::fprintf(stderr, "\r%s: %s realizations done; realization %lld at t = %.4g of %.4g, %.1f s elapsed   ",
+                   label_, done.c_str(), realization, t, t_max_, elapsed);
     std::fflush(stderr);
   }
 
  private:
   std::mutex mutex_;  // at() comes from the worker threads
   double t_max_;
+  const char* label_;
   long long done_ = 0, total_ = 0;
   bool shown_ = false;  // a line was printed
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
@@ -191,6 +200,27 @@ void run_md(const MdRunOptions& o) {
   std::error_code ignored;
   std::filesystem::remove_all(options.checkpoint, ignored);
   print_summary(result, out, o.format);
+}
+
+/// md states: the impurities' state at one time in every realization (md/states.hpp).
+void states_md(const MdStatesOptions& o) {
+  compare::MdRunRequest request;
+  request.scene_file = o.run.scene_file;
+  request.overrides = o.run.set;
+  if (o.run.realizations_option->count() > 0) request.realizations = o.run.realizations;
+  if (o.run.seed_option->count() > 0) request.seed = o.run.seed;
+  request.threads = o.run.threads;
+  const compare::MdRunPlan plan = compare::plan_md_run(request);
+  common::require_output_folder(o.out, "--out");
+  const md::ResolvedScene scene = md::resolve_scene(plan.config, plan.options.amplitude);
+  Progress progress(o.time, "md states");
+  const auto states = md::impurity_states(scene, o.time, plan.config.realizations, o.run.threads,
+                                          [&progress](long long done, long long total) { progress(done, total); });
+  const std::filesystem::path file = std::filesystem::path(o.out) / "impurity_states.csv";
+  common::write_file_atomic(file, md::impurity_states_csv(states, plan.config, o.time));
+  std::printf("md states: %zu impurities of %lld realizations of scene %s at t = %s; written to %s\n", states.size(),
+              plan.config.realizations, plan.config.name.c_str(), common::format_number(o.time).c_str(),
+              file.string().c_str());
 }
 
 void merge_md(const MdMergeOptions& o) {
@@ -306,6 +336,25 @@ void add_md_command(CLI::App& app) {
     run->out_given = out_option->count() > 0;
     common::install_stop_handlers();  // SIGINT/SIGTERM end the run between realizations, blocks saved
     run_md(*run);
+  });
+
+  auto states = std::make_shared<MdStatesOptions>();
+  CLI::App* states_command = md->add_subcommand(
+      "states",
+      "Write the impurities' positions, velocities and collision counts at one time in every realization "
+      "(the realizations of md run; to start coldblast tracer --start states from)");
+  states_command->add_option("SCENE", states->run.scene_file, "Scene file (TOML); keys in docs/md-output.md");
+  states_command->add_option("--set", states->run.set, "Override a scene key: key=value (repeatable)");
+  states->run.realizations_option =
+      states_command->add_option("--realizations", states->run.realizations, "Realizations (overrides the scene)");
+  states->run.seed_option = states_command->add_option("--seed", states->run.seed, "Master seed (overrides the scene)");
+  states_command->add_option("--threads", states->run.threads, "Worker threads (results are identical for any count)")
+      ->capture_default_str();
+  states_command->add_option("--time", states->time, "Time of the states, in (0, t_max] of the scene")->required();
+  states_command->add_option("--out", states->out, "Output directory (impurity_states.csv)")->capture_default_str();
+  states_command->callback([states] {
+    common::install_stop_handlers();
+    states_md(*states);
   });
 
   auto merge = std::make_shared<MdMergeOptions>();

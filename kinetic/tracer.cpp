@@ -103,7 +103,35 @@ struct RunContext {
   const Background& background;
   ImpurityModel impurity;
   double start_time;
+  const std::vector<md::ImpurityState>* states;  ///< start = "states": trajectory i starts from states[i]
 };
+
+/// start = "states": the file's states, checked against the scene (its physics keys, a time in
+/// (0, t_max) and at least `trajectories` states); `start_time` is set to the file's time.
+std::vector<md::ImpurityState> load_start_states(const TracerConfig& c, long long trajectories, double& start_time) {
+  md::ImpurityStatesFile file = md::read_impurity_states(c.start_states, c.scene.d, "--start-states");
+  const std::string named = "--start-states = " + c.start_states;
+  for (const auto& [key, value] : md::states_scene_keys(c.scene)) {
+    if (key == "impurities.recollide") continue;  // the tracer has none either way
+    const auto found =
+        std::find_if(file.header.begin(), file.header.end(), [&](const auto& f) { return f.first == key; });
+    if (found == file.header.end() ||
+        std::strtod(found->second.c_str(), nullptr) != std::strtod(value.c_str(), nullptr))
+      throw std::invalid_argument(named + " is of another scene: its " + key + " is " +
+                                  (found == file.header.end() ? std::string("missing") : found->second) + ", " + value +
+                                  " here");
+  }
+  common::require_in_range("the time of --start-states", file.t, 0.0, c.scene.t_max, Bound::open, Bound::open,
+                           " (within the scene's (0, t_max))");
+  if (trajectories > static_cast<long long>(file.states.size()))
+    throw std::invalid_argument("--trajectories = " + std::to_string(trajectories) + " exceeds the " +
+                                std::to_string(file.states.size()) + " states of " + named +
+                                " (each trajectory starts from its own state, so that the errors include the states' "
+                                "scatter; allowed: 1 to " +
+                                std::to_string(file.states.size()) + ")");
+  start_time = file.t;
+  return std::move(file.states);
+}
 
 template <int D>
 void run_trajectory(const RunContext& ctx, long long index, std::vector<double>& record, TracerBlock& block) {
@@ -111,7 +139,19 @@ void run_trajectory(const RunContext& ctx, long long index, std::vector<double>&
   Random rng(c.seed, static_cast<std::uint64_t>(index));
   TracerState<D> s;
   s.t = ctx.start_time;
-  s.v = initial_velocity<D>(ctx.config, ctx.background, s.t, rng);
+  md::Vec<D> r0 = md::Vec<D>::Zero();  // where the impurity started (r is from the blast centre)
+  if (ctx.states != nullptr) {
+    const md::ImpurityState& state = (*ctx.states)[static_cast<std::size_t>(index)];
+    for (int k = 0; k < D; ++k) {
+      s.r[k] = state.r[k];
+      s.v[k] = state.v[k];
+      r0[k] = state.r0[k];
+    }
+    s.collisions = state.collisions;  // C_imp counts from the MD's start, as the MD's does
+  } else {
+    s.v = initial_velocity<D>(ctx.config, ctx.background, s.t, rng);
+  }
+  const std::uint64_t collisions_before = s.collisions;
   TracerCounters counters;
   const theory::BlastParameters p{D, c.n, c.a, c.E, ctx.scene.A_d};
   const int bins = c.p_imp_bins;
@@ -119,14 +159,14 @@ void run_trajectory(const RunContext& ctx, long long index, std::vector<double>&
   for (std::size_t k = 0; k < ctx.scene.times.size(); ++k) {
     const double t = ctx.scene.times[k];
     if (t > s.t) advance<D>(ctx.background, ctx.impurity, s, t, rng, counters);
-    const double r2 = s.r.squaredNorm(), v2 = s.v.squaredNorm();
+    const double r2 = (s.r - r0).squaredNorm(), v2 = s.v.squaredNorm();
     const int kk = static_cast<int>(k);
     record[ctx.layout.scalar("R_imp", kk)] = 0.5 * r2;
     record[ctx.layout.scalar("V_imp", kk)] = 0.5 * v2;
     record[ctx.layout.scalar("C_imp", kk)] = static_cast<double>(s.collisions);
     const double time = std::max(t, s.t);
     record[ctx.layout.scalar("u_imp", kk)] =
-        std::abs(ctx.background.at(std::sqrt(r2), time, ctx.background.bound(time)).u);
+        std::abs(ctx.background.at(s.r.norm(), time, ctx.background.bound(time)).u);
     // Eq. (39) [eq:pr]: |Δr| in bins of width R(t)/bins, R(t) from Eq. (1), as md/observers.cpp.
     const double width = theory::shock_radius(p, t) / bins;
     const int b = static_cast<int>(std::sqrt(r2) / width);
@@ -143,7 +183,8 @@ void run_trajectory(const RunContext& ctx, long long index, std::vector<double>&
   block.v2_final_squares += v2 * v2;
   block.collisions += counters.collisions;
   block.candidates += counters.candidates;
-  block.collisions_squares += static_cast<double>(s.collisions) * static_cast<double>(s.collisions);
+  const auto made = static_cast<double>(s.collisions - collisions_before);  // in [start, t_max]
+  block.collisions_squares += made * made;
   ++block.count;
   for (const double x : record)
     if (!std::isfinite(x)) throw std::runtime_error("non-finite observable in trajectory " + std::to_string(index));
@@ -195,8 +236,15 @@ void TracerConfig::validate() const {
     throw std::invalid_argument(
         "--transport = enskog is not available with --background tvns (the ideal-gas "
         "Euler solution); allowed: dilute");
-  if (start != "kick" && start != "thermal")
-    throw std::invalid_argument("--start = " + start + " is not one of: kick, thermal");
+  if (start != "kick" && start != "thermal" && start != "states")
+    throw std::invalid_argument("--start = " + start + " is not one of: kick, thermal, states");
+  if ((start == "states") != !start_states.empty())
+    throw std::invalid_argument(start == "states" ? "--start = states needs --start-states FILE (md states' output)"
+                                                  : "--start-states is only for --start states");
+  if (start == "states" && (background == "equilibrium" || start_time != 0.0))
+    throw std::invalid_argument(background == "equilibrium"
+                                    ? "--start = states is for the blast backgrounds ns and tvns, not equilibrium"
+                                    : "--start-time is the states file's time with --start = states; leave it out");
   common::require_integer_in_range("--trajectories", trajectories, 0, 1000000000000LL, "(0 = scene default)");
   common::require_integer_in_range("--threads", threads, 1, 1024);
   common::require_integer_in_range("shard_count", shard_count, 1, 1000000);
@@ -293,6 +341,7 @@ struct TracerRun::Context {
   std::unique_ptr<Background> background;
   std::unique_ptr<md::ObservableLayout> layout;
   std::unique_ptr<RunContext> run;
+  std::vector<md::ImpurityState> states;  ///< start = "states"
   std::chrono::steady_clock::time_point started;
 };
 
@@ -304,8 +353,11 @@ TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progr
   TracerResult& result = x.result;
   result.config = config;
   md::BlastConfig scene_config = config.scene;
-  const long long trajectories =
-      config.trajectories > 0 ? config.trajectories : scene_config.realizations * scene_config.impurities.count;
+  double states_time = 0.0;
+  if (config.start == "states") x.states = load_start_states(config, config.trajectories, states_time);
+  const long long trajectories = config.trajectories > 0 ? config.trajectories
+                                 : x.states.empty()      ? scene_config.realizations * scene_config.impurities.count
+                                                         : static_cast<long long>(x.states.size());
   std::string A_d_source;
   const double A_d = resolved_A_d(scene_config, A_d_source);
   md::BlastResult& ensemble = result.ensemble;
@@ -315,7 +367,7 @@ TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progr
   ensemble.shard_count = config.shard_count;
   const md::ResolvedScene& scene = ensemble.scene;
   result.config.scene = scene.config;
-  result.start_time = config.resolved_start_time();
+  result.start_time = config.start == "states" ? states_time : config.resolved_start_time();
 
   x.background = make_background(config, &result.background_description, progress);
   if (const auto* grid = dynamic_cast<const GridBackground*>(x.background.get()))
@@ -328,8 +380,8 @@ TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progr
     result.chi = ambient.chi;
   }
   x.layout = std::make_unique<md::ObservableLayout>(scene);
-  x.run = std::make_unique<RunContext>(
-      RunContext{result.config, scene, *x.layout, *x.background, impurity, result.start_time});
+  x.run = std::make_unique<RunContext>(RunContext{result.config, scene, *x.layout, *x.background, impurity,
+                                                  result.start_time, config.start == "states" ? &x.states : nullptr});
   const long long block_count = (trajectories + scene.config.block_size - 1) / scene.config.block_size;
   for (long long b = config.shard_index; b < block_count; b += config.shard_count) blocks_.push_back(b);
 }
@@ -415,6 +467,7 @@ common::Json tracer_summary(const TracerResult& result) {
   j["background_frames"] = result.background_frames;
   j["transport"] = c.transport;
   j["start"] = c.start;
+  if (c.start == "states") j["start_states"] = c.start_states;
   j["start_time"] = result.start_time;
   j["trajectories"] = result.trajectories();
   j["impurity_mass"] = c.scene.impurities.mass;
@@ -593,6 +646,7 @@ TracerResult merge_tracer_outputs(const std::vector<std::filesystem::path>& dire
   c.background = first.at("background").get<std::string>();
   c.transport = first.at("transport").get<std::string>();
   c.start = first.at("start").get<std::string>();
+  if (first.contains("start_states")) c.start_states = first.at("start_states").get<std::string>();
   if (first.contains("T")) c.T = first.at("T").get<double>();
   c.trajectories = scene.config.realizations;
   c.threads = merged.ensemble.threads;

@@ -19,6 +19,7 @@
 #include "kinetic/background.hpp"
 #include "md/ensemble.hpp"
 #include "md/scenes.hpp"
+#include "md/states.hpp"
 
 namespace coldblast::kinetic {
 
@@ -32,9 +33,12 @@ struct TracerConfig {
   int threads = 1;                       ///< worker threads, [1, 1024]
   int shard_index = 0, shard_count = 1;  ///< this shard runs blocks shard_index, shard_index + shard_count, ...
   double T = 1.0;                        ///< equilibrium: bath temperature, > 0
-  std::optional<double> phi;   ///< equilibrium: packing fraction (default: the scene's), (0, 0.7) 2D, (0, 0.5) 3D
-  std::string start = "kick";  ///< "kick" (the MD's kick: E shared by k impurities) or "thermal"
-  double start_time = 0.0;     ///< start time, >= 0 (> 0 for ns/tvns); 0 = scene t_min (ns, tvns)
+  std::optional<double> phi;  ///< equilibrium: packing fraction (default: the scene's), (0, 0.7) 2D, (0, 0.5) 3D
+  /// "kick" (the MD's kick: E shared by k impurities), "thermal", or "states": trajectory i starts
+  /// from state i of start_states (the MD's own impurities, `md states`) at the file's time.
+  std::string start = "kick";
+  double start_time = 0.0;     ///< start time, >= 0 (> 0 for ns/tvns); 0 = scene t_min (ns, tvns); 0 for states
+  std::string start_states;    ///< start = "states": an impurity_states.csv of the same scene (md/states.hpp)
   int frames_per_decade = 40;  ///< ns: stored background frames per decade of R/λ, [4, 400]
   int cells = 256;             ///< ns: finite-volume cells, [64, 4096]; tvns: x samples = 8 × cells
   /// Throws std::invalid_argument naming the option, its value and the allowed range.

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "hydro/tvns.hpp"
 #include "md/ensemble.hpp"
@@ -68,21 +70,27 @@ TEST_CASE("a fresh small ensemble of the paper scene is consistent with data/pap
   CHECK(agreeing_points(reference_dir / "observables.csv", fresh, seed) >= 40);
 }
 
+namespace {
+/// 24 fresh realizations of the paper scene with the heavy impurity (mass 10), seed `seed`, the
+/// extra scene keys and `md run`'s box and p_imp bins (A_d(phi)).
+md::BlastResult fresh_heavy_ensemble(unsigned seed, std::vector<std::string> keys) {
+  std::ifstream scene_file(fs::path(COLDBLAST_SOURCE_DIR) / "scenes" / "paper-2d.toml");
+  std::stringstream scene_text;
+  scene_text << scene_file.rdbuf();
+  keys.insert(keys.end(), {"realizations=24", "block_size=2", "seed=" + std::to_string(seed), "impurities.mass=10"});
+  md::RunOptions options;
+  options.threads = 2;
+  options.amplitude = hydro::md_amplitude;
+  return md::run_blast(md::parse_scene(scene_text.str(), keys), options);
+}
+}  // namespace
+
 TEST_CASE("a fresh heavy-impurity ensemble has data/recollisions' C_imp, C_re, dE_first and dE_re", "[slow]") {
   // The recollisions (C_re) and the energy lost in them and in first collisions are definitions: a
   // change of them (or of the engine's partner bookkeeping) moves them by many sigma. 24 realizations against the 256
   // of the reference.
-  std::ifstream scene_file(fs::path(COLDBLAST_SOURCE_DIR) / "scenes" / "paper-2d.toml");
-  std::stringstream scene_text;
-  scene_text << scene_file.rdbuf();
   const unsigned seed = 20261124;
-  const md::BlastConfig scene = md::parse_scene(
-      scene_text.str(), {"realizations=24", "block_size=2", "seed=" + std::to_string(seed), "impurities.mass=10",
-                         "observables=[\"C_imp\",\"C_re\",\"dE_first\",\"dE_re\"]"});
-  md::RunOptions options;
-  options.threads = 2;
-  options.amplitude = hydro::md_amplitude;  // `md run`'s box and p_imp bins (A_d(phi))
-  const md::BlastResult fresh = md::run_blast(scene, options);
+  const md::BlastResult fresh = fresh_heavy_ensemble(seed, {"observables=[\"C_imp\",\"C_re\",\"dE_first\",\"dE_re\"]"});
   CHECK(agreeing_points(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "recollisions" / "heavy" / "observables.csv", fresh,
                         seed) >= 4 * 10);
 }
@@ -92,17 +100,9 @@ TEST_CASE("a fresh heavy-impurity ensemble without recollisions has data/recolli
   // impurities.recollide = false (a pair with an impurity collides once): R_imp, V_imp and C_imp of
   // 24 fresh realizations against the 256 of the reference. A change of the switch's rule (say,
   // letting impurity pairs recollide, or ghosting host pairs) moves C_imp by many sigma.
-  std::ifstream scene_file(fs::path(COLDBLAST_SOURCE_DIR) / "scenes" / "paper-2d.toml");
-  std::stringstream scene_text;
-  scene_text << scene_file.rdbuf();
   const unsigned seed = 20261125;
-  const md::BlastConfig scene = md::parse_scene(
-      scene_text.str(), {"realizations=24", "block_size=2", "seed=" + std::to_string(seed), "impurities.mass=10",
-                         "impurities.recollide=false", "observables=[\"R_imp\",\"V_imp\",\"C_imp\"]"});
-  md::RunOptions options;
-  options.threads = 2;
-  options.amplitude = hydro::md_amplitude;
-  const md::BlastResult fresh = md::run_blast(scene, options);
+  const md::BlastResult fresh =
+      fresh_heavy_ensemble(seed, {"impurities.recollide=false", "observables=[\"R_imp\",\"V_imp\",\"C_imp\"]"});
   const fs::path reference = fs::path(COLDBLAST_SOURCE_DIR) / "data" / "recollisions" / "heavy-no-recollisions";
   CHECK(agreeing_points(reference / "observables.csv", fresh, seed) >= 4 * 10);
 }

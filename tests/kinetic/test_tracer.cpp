@@ -4,11 +4,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
+#include "common/output.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/tracer.hpp"
+#include "md/states.hpp"
 #include "tests/temp_path.hpp"
 
 using namespace coldblast::kinetic;
@@ -116,6 +119,67 @@ TEST_CASE("tracer: bad input names the option") {
   c.scene.t_max = 2.0;  // before the Navier–Stokes start at R/λ = 2: no background solution
   c.scene.t_min = 1.0;
   CHECK_THROWS_WITH(run_tracer(c), Catch::Contains("t_max"));
+}
+
+TEST_CASE("tracer: --start states starts trajectory i from the MD's impurity state i at the file's time") {
+  TracerConfig c = small_config("tvns");
+  c.scene.A_d = 0.3;  // sizes the MD's region; not a key the states file checks
+  c.scene.realizations = 5;
+  const double t0 = 16.0;  // a recording time: t_min 2^(k/4), k = 16
+  const auto states = coldblast::md::impurity_states(coldblast::md::resolve_scene(c.scene), t0, 5, 2);
+  REQUIRE(states.size() == 20);
+  const auto dir = coldblast::test::unique_temp_path("coldblast_test_tracer_states");
+  const auto file = dir / "impurity_states.csv";
+  coldblast::common::write_file_atomic(file, coldblast::md::impurity_states_csv(states, c.scene, t0));
+  c.start = "states";
+  c.start_states = file.string();
+  c.trajectories = 0;  // one per state
+  const TracerResult r = run_tracer(c);
+  CHECK(r.trajectories() == 20);
+  CHECK(r.start_time == t0);
+  CHECK(tracer_summary(r).at("start") == "states");
+  // At the start time every observable is the states' own: R_imp from the MD's start positions,
+  // C_imp the MD's collisions so far.
+  double r2 = 0.0, v2 = 0.0, collisions = 0.0;
+  for (const auto& s : states) {
+    for (int k = 0; k < 2; ++k) {
+      r2 += 0.5 * (s.r[k] - s.r0[k]) * (s.r[k] - s.r0[k]);
+      v2 += 0.5 * s.v[k] * s.v[k];
+    }
+    collisions += static_cast<double>(s.collisions);
+  }
+  std::map<std::string, std::map<double, double>> mean;
+  for (const auto& e : coldblast::md::estimate_observables(r.ensemble)) mean[e.observable][e.t] = e.mean;
+  CHECK(mean["R_imp"].at(t0) == Approx(std::sqrt(r2 / 20)).epsilon(1e-12));
+  CHECK(mean["V_imp"].at(t0) == Approx(std::sqrt(v2 / 20)).epsilon(1e-12));
+  CHECK(mean["C_imp"].at(t0) == Approx(collisions / 20).epsilon(1e-12));
+  CHECK(mean["C_imp"].at(mean["C_imp"].rbegin()->first) > collisions / 20);  // and it collides on from there
+  CHECK(r.collisions() > 0);
+
+  // Bad input: named options, nothing run.
+  TracerConfig bad = c;
+  bad.trajectories = 21;
+  CHECK_THROWS_WITH(run_tracer(bad), Catch::Contains("--trajectories = 21 exceeds the 20 states"));
+  bad = c;
+  bad.scene.impurities.mass = 10.0;
+  CHECK_THROWS_WITH(run_tracer(bad), Catch::Contains("is of another scene: its impurities.mass is 1, 10 here"));
+  bad = c;
+  bad.scene.t_max = 10.0;
+  bad.scene.t_min = 1.0;
+  CHECK_THROWS_WITH(run_tracer(bad), Catch::Contains("the time of --start-states"));
+  bad = c;
+  bad.start_states.clear();
+  CHECK_THROWS_WITH(bad.validate(), Catch::Contains("--start = states needs --start-states"));
+  bad = c;
+  bad.start = "kick";
+  CHECK_THROWS_WITH(bad.validate(), Catch::Contains("--start-states is only for --start states"));
+  bad = c;
+  bad.start_time = 20.0;
+  CHECK_THROWS_WITH(bad.validate(), Catch::Contains("--start-time is the states file's time"));
+  bad = c;
+  bad.background = "equilibrium";
+  CHECK_THROWS_WITH(bad.validate(), Catch::Contains("not equilibrium"));
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("tracer: md merge of shard directories equals one run, summary keys and moments included") {
