@@ -99,7 +99,10 @@ void print_table(const compare::CompareResult& result) {
   }
   if (result.tracer_md) {
     const compare::TracerMdComparison& c = *result.tracer_md;
-    std::printf("\ntracer against the MD run %s%s (tracer/MD - 1, combined jackknife error):\n",
+    std::printf("\ntracer%s against the MD run %s%s (tracer/MD - 1, combined jackknife error):\n",
+                c.tracer_from_md_states
+                    ? (" (started from its impurities at t = " + common::format_number(c.start_time) + ")").c_str()
+                    : "",
                 c.md_directory.string().c_str(), c.md_recollisions_off ? ", recollisions switched off" : "");
     for (const auto& s : c.series) {
       const compare::TracerMdPoint& p = s.points.back();

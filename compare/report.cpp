@@ -280,8 +280,14 @@ std::string tracer_md_markdown(const TracerMdComparison& c, bool figures) {
      << (c.md_recollisions_off ? " (with recollisions switched off, impurities.recollide = false: a numerical "
                                  "experiment, not hard-sphere dynamics)"
                                : "")
-     << ". tracer/MD − 1 with the combined block-jackknife error (the runs are independent); nothing is "
-        "fitted.\n\n| t |";
+     << (c.tracer_from_md_states ? "; the tracer started from the MD's impurities at t = " +
+                                       common::format_number(c.start_time) + " (`--start states`)"
+                                 : std::string())
+     << ". tracer/MD − 1 with the combined block-jackknife error "
+     << (c.tracer_from_md_states ? "(as if the runs were independent; the tracer continues the MD's impurities, so "
+                                   "the two are correlated and the error is an upper bound)"
+                                 : "(the runs are independent)")
+     << "; nothing is fitted.\n\n| t |";
   for (const auto& s : c.series) md << ' ' << s.observable << " |";
   md << "\n|---|";
   for (std::size_t i = 0; i < c.series.size(); ++i) md << "---|";

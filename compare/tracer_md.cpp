@@ -61,6 +61,13 @@ const theory::Exponent& paper_exponent(const theory::ScalingExponents& e, const 
   return e.C_imp;
 }
 
+/// The tracer's start time (summary.json's start_time; 0 when absent): its recording times before it
+/// hold the start state, not a solution, and are not compared.
+double tracer_start_time(const RunData& tracer) {
+  const auto found = tracer.summary.find("start_time");
+  return found != tracer.summary.end() && found->is_number() ? found->get<double>() : 0.0;
+}
+
 TracerMdSeries compare_series(const RunData& tracer, const RunData& md, const std::string& name) {
   const BlockSeries &a = tracer.series.at(name), &b = md.series.at(name);
   const auto [va, ea] = values_with_errors(a);
@@ -72,8 +79,10 @@ TracerMdSeries compare_series(const RunData& tracer, const RunData& md, const st
   const theory::Exponent& alpha = paper_exponent(exponents, name);
   out.alpha = theory::to_double(alpha.in_time);
   out.alpha_rational = theory::to_string(alpha.in_time);
+  const double start = tracer_start_time(tracer);
   std::size_t j = 0;
   for (std::size_t k = 0; k < a.time_count(); ++k) {
+    if (a.t[k] < start && !same_time(a.t[k], start)) continue;
     while (j < b.time_count() && b.t[j] < a.t[k] && !same_time(b.t[j], a.t[k])) ++j;
     if (j == b.time_count()) break;
     if (!same_time(a.t[k], b.t[j]) || !(va[k] > 0) || !(vb[j] > 0)) continue;
@@ -158,9 +167,12 @@ std::string observables_figure(const TracerMdComparison& c, const fs::path& fold
   const std::size_t n = c.series.size();
   std::ostringstream script;
   script << "set terminal pngcairo size " << 620 * n << ",900 font 'Sans,13'\nset output 'tracer_vs_md.png'\n"
-         << "set multiplot title 'Impurity in " << c.d
-         << "D: kinetic tracer (Lorentz-Boltzmann, Eq. 36) against MD; 1{/Symbol s} error bars (block jackknife), "
-            "mostly smaller than the symbols'\n";
+         << "set multiplot title 'Impurity in " << c.d << "D: kinetic tracer (Lorentz-Boltzmann, Eq. 36) against MD"
+         << (c.tracer_from_md_states
+                 ? ", tracer started at t = " + common::format_significant(c.start_time, 4) + " from the MD impurities"
+                 : std::string())
+         << (c.md_recollisions_off ? " (MD without recollisions)" : "")
+         << "; 1{/Symbol s} error bars (block jackknife), mostly smaller than the symbols'\n";
   for (std::size_t i = 0; i < n; ++i) {
     const TracerMdSeries& s = c.series[i];
     const std::string file = "tracer_md_" + s.observable + ".dat";
@@ -245,6 +257,8 @@ TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& 
   c.d = tracer.d;
   const common::Json::json_pointer recollide("/scene/impurities/recollide");
   c.md_recollisions_off = md.summary.contains(recollide) && md.summary.at(recollide) == false;
+  c.tracer_from_md_states = tracer.summary.value("start", std::string()) == "states";
+  c.start_time = tracer_start_time(tracer);
   c.tracer_directory = tracer.directory;
   c.md_directory = md.directory;
   for (const char* name : {"R_imp", "V_imp", "C_imp"})

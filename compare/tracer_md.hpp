@@ -52,13 +52,18 @@ struct TracerMdComparison {
   std::filesystem::path tracer_directory, md_directory;
   /// The MD run switched recollisions off (impurities.recollide = false): a numerical experiment.
   bool md_recollisions_off = false;
+  /// The tracer started from the MD's impurities (--start states) at start_time; points before its
+  /// start time (summary.json's start_time, 0 if absent) are left out.
+  bool tracer_from_md_states = false;
+  double start_time = 0.0;
   std::vector<TracerMdSeries> series;                ///< R_imp, V_imp, C_imp (those both runs record)
   std::optional<TracerMdDistribution> distribution;  ///< when both runs have p_imp.csv at a common time
 };
 
-/// Compares a tracer run with an MD run. Throws std::invalid_argument naming --md-run when the runs
-/// differ in d or in their scenes' physics (n, a, E, the impurities' count, mass and radius), share
-/// no recording time or no impurity observable, or their p_imp bins differ.
+/// Compares a tracer run with an MD run at their common recording times from the tracer's start time
+/// on (summary.json's start_time: a --start states or thermal run holds its start state before it). Throws
+/// std::invalid_argument naming --md-run when the runs differ in d or in their scenes' physics (n, a, E, the
+/// impurities' count, mass and radius), share no recording time or no impurity observable, or their p_imp bins differ.
 TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& md);
 
 /// tracer_vs_md.csv: t, observable, tracer, tracer_stderr, md, md_stderr, ratio_minus_1, its stderr.

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "common/output.hpp"
+#include "common/validate.hpp"
 #include "compare/tracer_md.hpp"
 #include "tests/compare/synthetic.hpp"
 #include "tests/temp_path.hpp"
@@ -180,6 +181,25 @@ TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_im
   write_file_atomic(root / "md" / "summary.json",
                     R"({"scene": {"d": 2, "impurities": {"mass": 10, "recollide": false}}})");
   CHECK(compare_tracer_with_md(read_run(root / "tracer"), read_run(root / "md")).md_recollisions_off);
+  // A tracer that started at a later time (--start states or thermal) is compared from then on.
+  write_file_atomic(root / "tracer" / "summary.json",
+                    R"({"scene": {"d": 2, "impurities": {"mass": 10}}, "start": "states", "start_time": )" +
+                        coldblast::common::format_number(R.t[3]) + "}");
+  const TracerMdComparison later = compare_tracer_with_md(read_run(root / "tracer"), read_run(root / "md"));
+  CHECK(later.tracer_from_md_states);
+  CHECK(later.start_time == Approx(R.t[3]).epsilon(1e-12));
+  CHECK_FALSE(c.tracer_from_md_states);
+  // Its figure says so, and gnuplot draws it (a quote in the title once broke the script).
+  const TracerMdFigures later_figures = write_tracer_md_figures(later, root / "later");
+  CHECK(fs::file_size(root / "later" / later_figures.observables) > 10000);
+  std::ifstream script(root / "later" / "tracer_vs_md.gp");
+  std::stringstream script_text;
+  script_text << script.rdbuf();
+  CHECK(script_text.str().find("tracer started at t = ") != std::string::npos);
+  for (const auto& s : later.series) {
+    REQUIRE(s.points.size() == static_cast<std::size_t>(tracer_times - 3));
+    CHECK(s.points.front().t == R.t[3]);
+  }
 
   // Runs that cannot be compared: bad input naming --md-run.
   write_p_imp(root / "tracer", {t_last}, 100, 0.1, gaussian, 1e-3);
