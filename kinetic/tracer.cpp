@@ -111,7 +111,9 @@ struct RunContext {
 std::vector<md::ImpurityState> load_start_states(const TracerConfig& c, long long trajectories, double& start_time) {
   md::ImpurityStatesFile file = md::read_impurity_states(c.start_states, c.scene.d, "--start-states");
   const std::string named = "--start-states = " + c.start_states;
-  for (const auto& [key, value] : md::states_scene_keys(c.scene)) {
+  for (const auto& entry : md::states_scene_keys(c.scene)) {
+    // Not a structured binding: clang does not let a lambda capture one (C++17).
+    const std::string &key = entry.first, &value = entry.second;
     if (key == "impurities.recollide") continue;  // the tracer has none either way
     const auto found =
         std::find_if(file.header.begin(), file.header.end(), [&](const auto& f) { return f.first == key; });
