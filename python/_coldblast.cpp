@@ -33,6 +33,7 @@
 #include "kinetic/tracer.hpp"
 #include "md/ensemble.hpp"
 #include "md/scenes.hpp"
+#include "md/states.hpp"
 #include "theory/computed_prefactors.hpp"
 #include "theory/exponents.hpp"
 
@@ -397,6 +398,46 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
   return output;
 }
 
+/// md states: the impurities at time t of every realization (md/states.hpp), as numpy arrays; with
+/// `out`, also out/impurity_states.csv (for tracer --start states).
+py::dict md_states(const std::string& scene_file, const std::string& scene_text,
+                   const std::vector<std::string>& overrides, std::optional<long long> realizations,
+                   std::optional<long long> seed, int threads, double time, const std::string& out,
+                   const py::object& progress_callback) {
+  if (!out.empty()) common::require_output_folder(out, "--out");
+  const compare::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
+  const compare::MdRunPlan plan = compare::plan_md_run(request);
+  const md::ResolvedScene scene = md::resolve_scene(plan.config, plan.options.amplitude);
+  Progress progress(progress_callback);
+  const std::function<std::vector<md::ImpurityState>()> work = [&] {
+    return md::impurity_states(
+        scene, time, plan.config.realizations, threads,
+        [&progress](long long done, long long n) { progress.set(static_cast<double>(done), static_cast<double>(n)); });
+  };
+  const std::vector<md::ImpurityState> states = run_interruptible(work, progress);
+  if (!out.empty())
+    common::write_file_atomic(std::filesystem::path(out) / "impurity_states.csv",
+                              md::impurity_states_csv(states, plan.config, time));
+  const int d = plan.config.d;
+  const auto matrix = [&](auto member) {
+    py::array_t<double> a({static_cast<py::ssize_t>(states.size()), static_cast<py::ssize_t>(d)});
+    auto view = a.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < states.size(); ++i)
+      for (int k = 0; k < d; ++k)
+        view(static_cast<py::ssize_t>(i), k) = (states[i].*member)[static_cast<std::size_t>(k)];
+    return a;
+  };
+  py::dict output;
+  output["t"] = time;
+  output["realization"] = column(states, [](const md::ImpurityState& s) { return static_cast<double>(s.realization); });
+  output["impurity"] = column(states, [](const md::ImpurityState& s) { return static_cast<double>(s.impurity); });
+  output["collisions"] = column(states, [](const md::ImpurityState& s) { return static_cast<double>(s.collisions); });
+  output["r"] = matrix(&md::ImpurityState::r);
+  output["v"] = matrix(&md::ImpurityState::v);
+  output["r0"] = matrix(&md::ImpurityState::r0);
+  return output;
+}
+
 // ---- kinetic tracer ---------------------------------------------------------------------------
 
 /// The tracer's options beyond the scene (as `coldblast tracer`'s flags).
@@ -408,6 +449,7 @@ struct TracerOptions {
   std::optional<double> phi;
   double start_time = 0.0;
   int frames_per_decade = 40, cells = 256;
+  std::string start_states;
 };
 
 py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
@@ -427,6 +469,7 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   config.T = o.T;
   config.phi = o.phi;
   config.start_time = o.start_time;
+  config.start_states = o.start_states;
   config.frames_per_decade = o.frames_per_decade;
   config.cells = o.cells;
   Progress progress(progress_callback);
@@ -565,6 +608,9 @@ PYBIND11_MODULE(_coldblast, m) {
         py::arg("progress"));
   m.def("md_run", &md_run, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("realizations"),
         py::arg("seed"), py::arg("threads"), py::arg("out"), py::arg("progress"));
+  m.def("md_states", &md_states, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"),
+        py::arg("realizations"), py::arg("seed"), py::arg("threads"), py::arg("time"), py::arg("out"),
+        py::arg("progress"));
   m.def("default_scene_toml", [] { return md::default_scene_toml(); });
   m.def("read_run_summary", &read_run_summary, py::arg("directory"));
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
@@ -579,12 +625,14 @@ PYBIND11_MODULE(_coldblast, m) {
       [](const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
          std::optional<long long> seed, const std::string& background, const std::string& transport,
          const std::string& start, long long trajectories, int threads, double T, std::optional<double> phi,
-         double start_time, int frames_per_decade, int cells, const std::string& out, const py::object& progress) {
-        const TracerOptions options{background, transport, start,      trajectories,      threads,
-                                    T,          phi,       start_time, frames_per_decade, cells};
+         double start_time, int frames_per_decade, int cells, const std::string& start_states, const std::string& out,
+         const py::object& progress) {
+        const TracerOptions options{background, transport,         start, trajectories, threads, T, phi,
+                                    start_time, frames_per_decade, cells, start_states};
         return tracer_run(scene_file, scene_text, overrides, seed, options, out, progress);
       },
       py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("seed"), py::arg("background"),
       py::arg("transport"), py::arg("start"), py::arg("trajectories"), py::arg("threads"), py::arg("T"), py::arg("phi"),
-      py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("out"), py::arg("progress"));
+      py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("out"),
+      py::arg("progress"));
 }

@@ -8,6 +8,7 @@ import numpy as np
 from . import _coldblast
 from . import _progress
 from ._arguments import integer as _integer
+from ._arguments import number as _number
 
 
 def _toml_value(value, key):
@@ -119,3 +120,30 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
     return SimpleNamespace(estimates=raw["estimates"], summary=raw["summary"],
                            realization0_files=raw["realization0_files"],
                            out=None if out is None else os.fspath(out))
+
+
+def states(time, scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, **overrides):
+    """The impurities' positions, velocities and collision counts at ``time`` in every realization of
+    an MD ensemble (the same call as ``coldblast md states``; realization i is ``run``'s realization
+    i of the same scene and seed, so these reproduce its R_imp, V_imp, C_imp at a recorded time).
+
+    Parameters as ``run``; ``time`` in (0, t_max] of the scene. With ``out``, also writes
+    out/impurity_states.csv, which ``coldblast.tracer.run(start="states", start_states=...)``
+    starts the kinetic tracer from.
+
+    Returns
+    -------
+    types.SimpleNamespace with ``t``; ``realization``, ``impurity``, ``collisions`` (arrays, one entry
+    per impurity); ``r``, ``v``, ``r0`` (arrays of shape (impurities, d): position from the blast
+    centre, velocity, start position); ``out``.
+
+    Raises ValueError naming the argument for bad input (``--time = ... is outside (0, t_max]``),
+    KeyboardInterrupt on Ctrl-C (nothing is written).
+    """
+    scene_file, scene_text, sets = scene_arguments(scene, overrides)
+    raw = _coldblast.md_states(scene_file, scene_text, sets,
+                               None if realizations is None else _integer(realizations, "--realizations"),
+                               None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
+                               _number(time, "--time"), "" if out is None else os.fspath(out),
+                               _progress.callback(progress, "md states", "realizations"))
+    return SimpleNamespace(out=None if out is None else os.fspath(out), **raw)

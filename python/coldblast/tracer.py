@@ -11,7 +11,7 @@ from .md import scene_arguments
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
         start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=256, progress=True,
-        **overrides):
+        start_states=None, **overrides):
     """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
 
     Parameters
@@ -33,7 +33,11 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         "dilute" (chi = 1; the ideal-gas Navier-Stokes) or "enskog" (chi(n) at contact; with "ns" the dense
         Navier-Stokes at the scene's packing fraction, the prediction for its MD; not with "tvns").
     start : str
-        "kick" (the MD's kick, E shared by the impurities) or "thermal" (local Maxwellian).
+        "kick" (the MD's kick, E shared by the impurities), "thermal" (local Maxwellian) or "states"
+        (the MD's own impurities: ``start_states``).
+    start_states : str, os.PathLike or None
+        start="states": an impurity_states.csv of ``coldblast md states`` (or ``coldblast.md.states``
+        with ``out``) of the same scene; trajectory i starts from state i at the file's time.
     start_time : float or None
         Start time >= 0; None: the scene's t_min (ns, tvns), 0 for equilibrium.
     T, phi : float, float or None
@@ -68,6 +72,7 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
                                 None if phi is None else number(phi, "--phi"),
                                 0.0 if start_time is None else number(start_time, "--start-time"),
                                 integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
+                                "" if start_states is None else os.fspath(start_states),
                                 "" if out is None else os.fspath(out),
                                 _progress.callback(progress, "tracer", "blocks"))
     return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],

@@ -129,3 +129,35 @@ def test_help_is_readable():
     doc = coldblast.md.run.__doc__
     for word in ("realizations", "threads", "seed", "out", "Units", "ValueError", "KeyboardInterrupt"):
         assert word in doc
+
+
+def test_states_equal_the_cli_and_the_ensemble(tmp_path, runs):
+    """coldblast.md.states: the CLI's impurity_states.csv row for row, and at a recorded time the
+    ensemble's R_imp, V_imp and C_imp (the same realizations)."""
+    _, _, _, result = runs
+    t = float(result.estimates["V_imp"]["t"][-5])
+    states = coldblast.md.states(t, realizations=4, seed=3, threads=2, out=tmp_path / "py", progress=False, t_max=50)
+    from conftest import run_cli
+    run_cli("md", "states", "--set", "t_max=50", "--realizations", 4, "--seed", 3, "--time", repr(t),
+            "--out", tmp_path / "cli")
+    assert data_lines(tmp_path / "py" / "impurity_states.csv") == data_lines(tmp_path / "cli" / "impurity_states.csv")
+    assert states.t == t and states.r.shape == (16, 2) and states.v.shape == (16, 2)
+    assert list(states.realization) == [k // 4 for k in range(16)]
+    k = list(result.estimates["V_imp"]["t"]).index(t)
+    v_imp = math.sqrt(np.mean(0.5 * (states.v ** 2).sum(axis=1)))
+    r_imp = math.sqrt(np.mean(0.5 * ((states.r - states.r0) ** 2).sum(axis=1)))
+    assert v_imp == pytest.approx(result.estimates["V_imp"]["mean"][k], rel=1e-12)
+    assert r_imp == pytest.approx(result.estimates["R_imp"]["mean"][k], rel=1e-12)
+    assert np.mean(states.collisions) == pytest.approx(result.estimates["C_imp"]["mean"][k], rel=1e-12)
+    # the tracer continues them: trajectory i from state i, so at t its V_imp is theirs
+    tracer = coldblast.tracer.run(background="tvns", start="states", start_states=tmp_path / "py" / "impurity_states.csv",
+                                  progress=False, t_max=50)
+    assert tracer.summary["trajectories"] == 16 and tracer.summary["start"] == "states"
+    j = list(tracer.estimates["V_imp"]["t"]).index(t)
+    assert tracer.estimates["V_imp"]["mean"][j] == pytest.approx(v_imp, rel=1e-12)
+
+
+def test_states_bad_time_is_the_cli_error():
+    with pytest.raises(ValueError) as error:
+        coldblast.md.states(60, progress=False, t_max=50)
+    assert str(error.value) == cli_error("md", "states", "--set", "t_max=50", "--time", 60)
