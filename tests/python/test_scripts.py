@@ -53,3 +53,31 @@ def test_figure_and_shares(tmp_path):
     assert abs(value[1][-1] - m[(4000.0, "dE_re")] / lost) < 1e-12
     assert 0 < error[0][-1] < 0.01 and 0 < error[1][-1] < 0.01  # 256 realizations: errors of a few 1e-3
 
+
+
+def test_energy_budget_two_paths_agree():
+    """scripts/energy_budget.py: first collisions are C_imp − C_re of observables.csv's means, and the
+    energy lost from dE_first + dE_re (MD runs) equals the one from V_imp (how tracer runs are read):
+    the impurities change their energy only in collisions."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import energy_budget
+    rows = energy_budget.budget(HEAVY, [250.0, 1000.0, 4000.0])
+    assert [(t1, t2) for t1, t2, _, _ in rows] == [(250.0, 1000.0), (1000.0, 4000.0)]
+    m = means(HEAVY)
+    sums, counts = energy_budget.block_sums(HEAVY)
+    count = sum(counts.values())
+    for t1, t2, value, error in rows:
+        def change(name):
+            return m[(t2, name)] - m[(t1, name)]
+        assert abs(value[0] - (change("C_imp") - change("C_re"))) < 1e-10
+        assert abs(value[1] - change("C_re")) < 1e-10
+        assert abs(value[2] - (change("dE_first") + change("dE_re"))) < 1e-12
+        assert abs(value[3] - change("dE_first") / (change("C_imp") - change("C_re"))) < 1e-12
+        assert all(0 < e < 0.2 * abs(v) for v, e in zip(value, error))
+        # the V_imp path, as for a tracer run (no dE_first): the same energy to round-off
+        stripped = {b: {k: x for k, x in block.items() if k[1] in ("C_imp", "V_imp")} for b, block in sums.items()}
+        lost = sum(energy_budget.window_sums(block, t1, t2, 10.0)[2] for block in stripped.values()) / count
+        assert abs(lost - value[2]) < 1e-9 * value[2]
+    out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "energy_budget.py"), "--windows", "250,4000",
+                          HEAVY], capture_output=True, text=True, check=True).stdout
+    assert "t in (250, 4000]: first collisions" in out, out
