@@ -101,6 +101,25 @@ double flow_speed_squared_estimate(double sum_norm_squared, double sum_squares, 
 }
 
 template <int D, class Queue>
+ContactShell contact_shell(const Engine<D, Queue>& engine, std::int32_t id, double sigma_c, double width) {
+  const Vec<D> x = engine.position(id), v = engine.velocity(id);
+  const double speed = v.norm();
+  ContactShell shell;
+  engine.for_each_in_ball(x, sigma_c + width, [&](std::int32_t j, const Vec<D>& y) {
+    if (j == id || engine.species(j) != host_species) return;
+    const Vec<D> dr = y - x;
+    if (dr.norm() < sigma_c) return;  // a host passing through (impurities.recollide = false)
+    if (dr.dot(v) >= 0.0) {
+      ++shell.front;
+      if (speed > 0.0) shell.front_velocity += engine.velocity(j).dot(v) / speed;
+    } else {
+      ++shell.back;
+    }
+  });
+  return shell;
+}
+
+template <int D, class Queue>
 void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const {
   const double count = static_cast<double>(impurities_.size());
   auto put = [&](const char* name, double value) {
@@ -146,6 +165,8 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
   put("dE_re", loss_re / count);
   put("u_imp", flow / count);
   put("u_flow", flow_squared / count);
+  if (layout_.scalar("g_front", k) >= 0 || layout_.scalar("g_back", k) >= 0 || layout_.scalar("u_front", k) >= 0)
+    measure_contact_shells(k, record);
   if (core_radius_ > 0.0) {
     int inside = 0;
     double kinetic = 0.0;
@@ -192,6 +213,37 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
     }
   }
 }
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::measure_contact_shells(int k, std::vector<double>& record) const {
+  // The shell [sigma_c, sigma_c + a): half its volume on each side, in units of n (so an
+  // undisturbed gas gives about the contact value chi of the pair correlation, Enskog).
+  const double sigma_c = scene_.config.a + scene_.impurity_radius, width = scene_.config.a;
+  const double half = 0.5 * theory::unit_ball_volume(D) * (std::pow(sigma_c + width, D) - std::pow(sigma_c, D));
+  double front = 0.0, back = 0.0, along = 0.0;
+  int moving_with_hosts_ahead = 0;  // u_front averages over these impurities
+  for (const std::int32_t id : impurities_) {
+    const ContactShell shell = contact_shell(engine_, id, sigma_c, width);
+    front += shell.front / (half * scene_.config.n);
+    back += shell.back / (half * scene_.config.n);
+    if (shell.front > 0 && engine_.velocity(id).squaredNorm() > 0.0) {
+      along += shell.front_velocity / shell.front;
+      ++moving_with_hosts_ahead;
+    }
+  }
+  const double count = static_cast<double>(impurities_.size());
+  const auto put = [&](const char* name, double value) {
+    if (const int entry = layout_.scalar(name, k); entry >= 0) record[entry] = value;
+  };
+  put("g_front", front / count);
+  put("g_back", back / count);
+  put("u_front", moving_with_hosts_ahead > 0 ? along / moving_with_hosts_ahead : 0.0);
+}
+
+template ContactShell contact_shell(const Engine<2, HeapEventQueue>&, std::int32_t, double, double);
+template ContactShell contact_shell(const Engine<3, HeapEventQueue>&, std::int32_t, double, double);
+template ContactShell contact_shell(const Engine<2, CalendarEventQueue>&, std::int32_t, double, double);
+template ContactShell contact_shell(const Engine<3, CalendarEventQueue>&, std::int32_t, double, double);
 
 template class BlastObserver<2, HeapEventQueue>;
 template class BlastObserver<3, HeapEventQueue>;

@@ -17,6 +17,16 @@ namespace coldblast::md {
 /// Arguments: |Σ v_j|², Σ |v_j|², N.
 double flow_speed_squared_estimate(double sum_norm_squared, double sum_squares, int count);
 
+/// The hosts in an impurity's contact shell, the centre distances [sigma_c, sigma_c + width) from
+/// it, split by the sign of (x_host − x)·v (ahead: >= 0): their numbers, and the sum over those
+/// ahead of their velocity component along v/|v| (0 at rest). Observables g_front, g_back, u_front.
+struct ContactShell {
+  int front = 0, back = 0;
+  double front_velocity = 0.0;
+};
+template <int D, class Queue>
+ContactShell contact_shell(const Engine<D, Queue>& engine, std::int32_t id, double sigma_c, double width);
+
 /// Index map of a realization record: which observable, time and bin each entry holds.
 class ObservableLayout {
  public:
@@ -55,6 +65,8 @@ class BlastObserver {
 
  private:
   double radius_holding(const Vec<D>& centre, int others, std::int32_t exclude) const;
+  /// g_front, g_back, u_front at time index k (contact_shell of each impurity, averaged).
+  void measure_contact_shells(int k, std::vector<double>& record) const;
   const ResolvedScene& scene_;
   const ObservableLayout& layout_;
   const Engine<D, Queue>& engine_;

@@ -206,6 +206,68 @@ TEST_CASE(
     CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {bad}), Catch::Matchers::Contains("must be true or false"));
 }
 
+TEST_CASE("contact_shell: the hosts ahead of and behind an impurity in [sigma_c, sigma_c + width)", "[fast]") {
+  // An impurity at the origin moving along +x; hosts at distances 1.2 (ahead, moving at 0.5 along
+  // x), 1.3 (beside it: (x − x_imp)·v = 0 counts as ahead), 1.24 and 1.49 (behind) and 2.6 (outside
+  // the shell [1, 1.5)).
+  InitialState<2> s;
+  s.host = {0.5, 1.0};
+  s.impurity = s.host;
+  const auto add = [&](double x, double y, double vx, std::uint8_t species) {
+    s.position.push_back(Vec<2>(x, y));
+    s.velocity.push_back(Vec<2>(vx, 0.0));
+    s.species.push_back(species);
+  };
+  add(0.0, 0.0, 1.0, impurity_species);
+  add(1.2, 0.0, 0.5, host_species);
+  add(0.0, 1.3, 0.0, host_species);
+  add(-1.2, 0.3, 0.0, host_species);
+  add(-0.5, -1.4, 0.0, host_species);
+  add(2.6, 0.0, 0.0, host_species);
+  EngineConfig<2> config;
+  config.periodic = false;
+  config.region_radius = 20.0;
+  config.guard_radius = 18.0;
+  const Engine<2, CalendarEventQueue> engine(config, s);
+  const ContactShell shell = contact_shell(engine, 0, 1.0, 0.5);
+  CHECK(shell.front == 2);
+  CHECK(shell.back == 2);
+  CHECK(shell.front_velocity == 0.5);
+  const ContactShell wide = contact_shell(engine, 0, 1.0, 2.0);  // [1, 3): the host at 2.6 too
+  CHECK(wide.front == 3);
+}
+
+TEST_CASE("g_front, g_back, u_front in a blast: the contact shells' densities and the hosts' drift ahead", "[fast]") {
+  const auto run = [](const std::vector<std::string>& extra) {
+    std::vector<std::string> keys{"t_max=200",    "realizations=8",
+                                  "seed=4",       "A_d=0.2238",
+                                  "block_size=2", R"(observables=["V_imp","g_front","g_back","u_front"])"};
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    RunOptions options;
+    options.threads = 2;
+    std::map<std::string, std::map<double, double>> mean;
+    for (const auto& e : estimate_observables(run_blast(parse_scene(default_scene_toml(), keys), options)))
+      mean[e.observable][e.t] = e.mean;
+    return mean;
+  };
+  for (const auto& extra : {std::vector<std::string>{}, std::vector<std::string>{"impurities.mass=10"}}) {
+    auto mean = run(extra);
+    REQUIRE(mean["g_front"].size() >= 10);
+    for (const auto& [t, g] : mean["g_front"]) {
+      INFO("t = " << t);
+      // densities of a gas at most ~4 times compressed (the shock), in units of n
+      CHECK(g >= 0.0);
+      CHECK(g < 10.0);
+      CHECK(mean["g_back"].at(t) >= 0.0);
+      CHECK(mean["g_back"].at(t) < 10.0);
+      CHECK(std::abs(mean["u_front"].at(t)) < 5.0);  // no host is faster than the fastest kick, sqrt(2E) = 4.5
+    }
+    // Late, the impurity moves in a hot, expanded core: both shells hold hosts.
+    CHECK(mean["g_front"].rbegin()->second > 0.0);
+    CHECK(mean["g_back"].rbegin()->second > 0.0);
+  }
+}
+
 TEST_CASE("u_flow's estimator removes the thermal noise that biases |mean velocity|", "[fast]") {
   // N Maxwellian velocities (per-component variance T) around a flow u: the plain |ū|² averages
   // to |u|² + d T/N, the estimate to |u|² (unbiased). 20000 samples; tolerance 4 standard errors.
