@@ -206,7 +206,8 @@ TEST_CASE(
     CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {bad}), Catch::Matchers::Contains("must be true or false"));
 }
 
-TEST_CASE("contact_shell: the hosts ahead of and behind an impurity in [sigma_c, sigma_c + width)", "[fast]") {
+TEST_CASE("contact_shell: the hosts ahead of and behind an impurity at centre distances sigma_c to sigma_c + width",
+          "[fast]") {
   // An impurity at the origin moving along +x; hosts at distances 1.2 (ahead, moving at 0.5 along
   // x), 1.3 (beside it: (x − x_imp)·v = 0 counts as ahead), 1.24 and 1.49 (behind) and 2.6 (outside
   // the shell [1, 1.5)).

@@ -35,12 +35,12 @@ TEST_CASE("Eq. (38): the square root of the mean for R_imp, V_imp and u_flow onl
 
 TEST_CASE("the catalogue's kinds and the paper's table orders", "[fast]") {
   CHECK(join_names(observable_names(is_md_scalar)) ==
-        "R_imp, V_imp, C_imp, C_re, dE_first, dE_re, u_imp, u_flow, n0, T0, R");
-  CHECK(
-      join_names(observable_names(is_md_requestable)) ==
-      "R_imp, V_imp, C_imp, C_re, dE_first, dE_re, u_imp, u_flow, n0, T0, R, profiles, p_imp, snapshots, trajectories");
+        "R_imp, V_imp, C_imp, C_re, dE_first, dE_re, g_front, g_back, u_front, u_imp, u_flow, n0, T0, R");
+  CHECK(join_names(observable_names(is_md_requestable)) ==
+        "R_imp, V_imp, C_imp, C_re, dE_first, dE_re, g_front, g_back, u_front, u_imp, u_flow, n0, T0, R, profiles, "
+        "p_imp, snapshots, trajectories");
   CHECK(join_names(observable_names(is_block_scalar)) ==
-        "R_imp, V_imp, C_imp, C_re, dE_first, dE_re, u_imp, u_flow, n0, T0, R, H");
+        "R_imp, V_imp, C_imp, C_re, dE_first, dE_re, g_front, g_back, u_front, u_imp, u_flow, n0, T0, R, H");
   CHECK(table1_names() == std::vector<std::string>{"R_imp", "C_imp", "V_imp", "u_imp", "T0", "n0"});
   CHECK(table2_names() == std::vector<std::string>{"C_imp", "R_imp", "V_imp", "u_imp", "n0", "T0", "R", "H", "D0"});
   // u_flow estimates the flow speed of u_imp: the same law; 2D values of Table 2.
