@@ -1,4 +1,5 @@
-// Regression against the reference ensembles in data/paper-2d/ and data/recollisions/: a small
+// Regression against the reference ensembles in data/paper-2d/ and data/recollisions/ (with and
+// without recollisions, and the contact shells): a small
 // fresh MD ensemble of the paper's scene (different seed) must agree with the reference means
 // within the combined statistical error at every recorded time from t = 256 on. The bound is 4.5 sigma per point; with
 // ~70 points the chance of a false alarm is ~5e-4. A change of physics, seeding or observable
@@ -105,4 +106,14 @@ TEST_CASE("a fresh heavy-impurity ensemble without recollisions has data/recolli
       fresh_heavy_ensemble(seed, {"impurities.recollide=false", "observables=[\"R_imp\",\"V_imp\",\"C_imp\"]"});
   const fs::path reference = fs::path(COLDBLAST_SOURCE_DIR) / "data" / "recollisions" / "heavy-no-recollisions";
   CHECK(agreeing_points(reference / "observables.csv", fresh, seed) >= 4 * 10);
+}
+
+TEST_CASE("a fresh heavy-impurity ensemble has data/recollisions/heavy-shells' contact-shell densities and drift",
+          "[slow]") {
+  // g_front, g_back, u_front are definitions (the shell, its sides, the units): a change of them
+  // moves the bow's numbers of docs/verification.md by many sigma.
+  const unsigned seed = 20261126;
+  const md::BlastResult fresh = fresh_heavy_ensemble(seed, {"observables=[\"g_front\",\"g_back\",\"u_front\"]"});
+  const fs::path reference = fs::path(COLDBLAST_SOURCE_DIR) / "data" / "recollisions" / "heavy-shells";
+  CHECK(agreeing_points(reference / "observables.csv", fresh, seed) >= 3 * 10);
 }
