@@ -81,3 +81,22 @@ def test_energy_budget_two_paths_agree():
     out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "energy_budget.py"), "--windows", "250,4000",
                           HEAVY], capture_output=True, text=True, check=True).stdout
     assert "t in (250, 4000]: first collisions" in out, out
+
+
+def test_bow_figure_equals_the_means(tmp_path):
+    """scripts/bow_figure.py: g_front/g_back and u_front/(sqrt(2) V_imp) from blocks.csv equal the
+    same ratios of observables.csv's means; the figure is drawn."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import bow_figure
+    shells = os.path.join(REPO, "data", "recollisions", "heavy-shells")
+    t, value, error = bow_figure.bow(shells)
+    m = means(shells)
+    for k in (20, 32, len(t) - 1):
+        assert abs(value[0][k] - m[(t[k], "g_front")] / m[(t[k], "g_back")]) < 1e-12
+        assert abs(value[1][k] - m[(t[k], "u_front")] / (2 ** 0.5 * m[(t[k], "V_imp")])) < 1e-12
+        assert 0 < error[0][k] < 0.5 and 0 < error[1][k] < 0.1
+    assert value[0][t.tolist().index(250.0)] > 1.5  # the heavy impurity's bow (docs/verification.md)
+    figure = tmp_path / "bow.png"
+    subprocess.run([sys.executable, os.path.join(REPO, "scripts", "bow_figure.py"), str(figure), shells],
+                   capture_output=True, text=True, check=True)
+    assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
