@@ -124,7 +124,8 @@ void add_tracer_command(CLI::App& app) {
                 "time: --start-states)")
       ->capture_default_str();
   c->add_option("--start-states", o->config.start_states,
-                "--start states: impurity_states.csv of `coldblast md states` for the same scene; trajectory i "
+                "--start states: impurity_states.csv of `coldblast md states` (or its --out directory) for the same "
+                "scene; trajectory i "
                 "starts from state i at the file's time (at most as many trajectories as states)");
   c->add_option("--start-time", o->config.start_time, "Start time (0 = the scene's t_min; 0 for equilibrium)")
       ->capture_default_str();

@@ -105,8 +105,11 @@ std::string impurity_states_csv(const std::vector<ImpurityState>& states, const 
   return out.str();
 }
 
-ImpurityStatesFile read_impurity_states(const std::filesystem::path& file, int d, const std::string& option) {
-  const std::string named = option + " = " + file.string();
+ImpurityStatesFile read_impurity_states(const std::filesystem::path& path, int d, const std::string& option) {
+  const std::string named = option + " = " + path.string();
+  std::error_code error;
+  // md states' output directory stands for the file in it.
+  const std::filesystem::path file = std::filesystem::is_directory(path, error) ? path / "impurity_states.csv" : path;
   std::ifstream in(file);
   if (!in)
     throw std::invalid_argument(named + ": cannot read the file (an impurity_states.csv of `coldblast md states`)");

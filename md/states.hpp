@@ -44,8 +44,9 @@ struct ImpurityStatesFile {
   std::vector<std::pair<std::string, std::string>> header;  ///< every "# key: value" line
   std::vector<ImpurityState> states;
 };
-/// Reads an impurity_states.csv written for a scene of dimension `d`. Throws std::invalid_argument
+/// Reads an impurity_states.csv written for a scene of dimension `d` (`path` may be the directory
+/// holding it, md states' --out). Throws std::invalid_argument
 /// naming `option` = file for a missing or malformed file, another dimension, or no state.
-ImpurityStatesFile read_impurity_states(const std::filesystem::path& file, int d, const std::string& option);
+ImpurityStatesFile read_impurity_states(const std::filesystem::path& path, int d, const std::string& option);
 
 }  // namespace coldblast::md

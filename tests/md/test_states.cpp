@@ -72,6 +72,8 @@ TEST_CASE("md states: impurity_states.csv reads back bit for bit, and bad input 
   const fs::path file = dir / "impurity_states.csv";
   coldblast::common::write_file_atomic(file, impurity_states_csv(states, config, 30.0));
   const ImpurityStatesFile read = read_impurity_states(file, 2, "--start-states");
+  // md states' output directory stands for the file in it
+  CHECK(read_impurity_states(dir, 2, "--start-states").states.size() == states.size());
   CHECK(read.t == 30.0);
   REQUIRE(read.states.size() == states.size());
   for (std::size_t i = 0; i < states.size(); ++i) {
@@ -86,8 +88,7 @@ TEST_CASE("md states: impurity_states.csv reads back bit for bit, and bad input 
   for (const auto& key : keys) CHECK(std::find(read.header.begin(), read.header.end(), key) != read.header.end());
   CHECK_THROWS_WITH(read_impurity_states(file, 3, "--start-states"),
                     Catch::Contains("--start-states = ") && Catch::Contains("a d = 3 state has 12"));
-  CHECK_THROWS_WITH(read_impurity_states(dir / "missing.csv", 2, "--start-states"),
-                    Catch::Contains("cannot read the file"));
+  CHECK_THROWS_WITH(read_impurity_states(dir / "missing.csv", 2, "--start-states"), Catch::Contains("cannot read"));
   coldblast::common::write_file_atomic(dir / "bad.csv",
                                        "# t: 5\nrealization,impurity,collisions,x,y,vx,vy,x0,y0\n"
                                        "0,0,1,2,3,4,x,6,7\n");
