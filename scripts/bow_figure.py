@@ -7,24 +7,13 @@ bands, for MD runs that recorded V_imp, g_front, g_back and u_front (docs/verifi
 
     scripts/bow_figure.py bow.png data/recollisions/heavy-shells data/recollisions/unit-shells data/recollisions/large-shells
 """
-import csv
-import io
 import sys
 
 import numpy as np
 
+from block_jackknife import time_series
+
 NAMES = ["g_front", "g_back", "u_front", "V_imp"]
-
-
-def block_sums(directory):
-    """({block: {(t, observable): sum}}, {block: count}) of NAMES from blocks.csv."""
-    rows = [r for r in open(f"{directory}/blocks.csv") if not r.startswith("#")]
-    sums, counts = {}, {}
-    for r in csv.DictReader(io.StringIO("".join(rows))):
-        if r["observable"] in NAMES:
-            sums.setdefault(int(r["block"]), {})[(float(r["t"]), r["observable"])] = float(r["sum"])
-            counts[int(r["block"])] = float(r["count"])
-    return sums, counts
 
 
 def values(x, count):
@@ -36,16 +25,7 @@ def values(x, count):
 
 def bow(directory):
     """t, values (2 x times) and their block-jackknife errors."""
-    sums, counts = block_sums(directory)
-    times = sorted({t for block in sums.values() for (t, _) in block})
-    keys = list(sums)
-    parts = [np.array([[sums[b][(t, name)] for name in NAMES] for t in times]) for b in keys]
-    total, count = sum(parts), sum(counts.values())
-    value = values(total, count)
-    jackknife = np.array([values(total - part, count - counts[b]) for part, b in zip(parts, keys)])
-    n = len(parts)
-    error = np.sqrt((n - 1) / n * ((jackknife - jackknife.mean(axis=0)) ** 2).sum(axis=0))
-    return np.array(times), value, error
+    return time_series(directory, NAMES, values)
 
 
 def draw(path, directories):

@@ -9,24 +9,14 @@ Usage (docs/verification.md, "Recollisions switched off"):
 
     scripts/energy_budget.py [--windows 250,500,1000,2000,4000] RUN_DIR...
 """
-import csv
-import io
 import json
 import sys
 
 import numpy as np
 
+from block_jackknife import block_sums, jackknife
+
 DEFAULT_WINDOWS = [250.0, 500.0, 1000.0, 2000.0, 4000.0]
-
-
-def block_sums(directory):
-    """({block: {(t, observable): sum}}, {block: count}) from blocks.csv."""
-    rows = [r for r in open(f"{directory}/blocks.csv") if not r.startswith("#")]
-    sums, counts = {}, {}
-    for r in csv.DictReader(io.StringIO("".join(rows))):
-        sums.setdefault(int(r["block"]), {})[(float(r["t"]), r["observable"])] = float(r["sum"])
-        counts[int(r["block"])] = float(r["count"])
-    return sums, counts
 
 
 def impurity_mass(directory):
@@ -62,12 +52,8 @@ def budget(directory, windows):
     for t1, t2 in zip(edges, edges[1:]):
         if t1 >= t2:
             continue
-        parts = {b: window_sums(block, t1, t2, mass) for b, block in sums.items()}
-        total, count = sum(parts.values()), sum(counts.values())
-        value = per_impurity(total, count)
-        jackknife = np.array([per_impurity(total - parts[b], count - counts[b]) for b in parts])
-        n = len(parts)
-        error = np.sqrt((n - 1) / n * ((jackknife - jackknife.mean(axis=0)) ** 2).sum(axis=0))
+        parts = [window_sums(block, t1, t2, mass) for block in sums.values()]
+        value, error = jackknife(parts, [counts[b] for b in sums], per_impurity)
         result.append((t1, t2, value, error))
     return result
 

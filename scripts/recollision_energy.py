@@ -8,22 +8,13 @@ carry (matplotlib, Debian's python3-matplotlib). Usage:
     scripts/recollision_energy.py data/recollisions/unit data/recollisions/heavy data/recollisions/large
     scripts/recollision_energy.py --figure recollisions.png data/recollisions/*
 """
-import csv
-import io
 import sys
 
 import numpy as np
 
+from block_jackknife import block_sums, jackknife, time_series
+
 WINDOWS = [(0.0, 62.5), (62.5, 1000.0), (1000.0, 4000.0)]
-
-
-def block_sums(directory):
-    """{block: {(t, observable): sum}} from blocks.csv."""
-    rows = [r for r in open(f"{directory}/blocks.csv") if not r.startswith("#")]
-    sums = {}
-    for r in csv.DictReader(io.StringIO("".join(rows))):
-        sums.setdefault(int(r["block"]), {})[(float(r["t"]), r["observable"])] = float(r["sum"])
-    return sums
 
 
 def window_sums(block, t1, t2):
@@ -42,21 +33,10 @@ def per_collision(x):
 
 def shares(directory):
     """t, C_re/C_imp and dE_re/(dE_first + dE_re) at every recorded time, each with its block-jackknife error."""
-    sums = block_sums(directory)
-    times = sorted({t for block in sums.values() for (t, _) in block})
-    names = ["C_re", "C_imp", "dE_re", "dE_first"]
-    # per block: array [time, name]
-    parts = [np.array([[block[(t, name)] for name in names] for t in times]) for block in sums.values()]
-    total = sum(parts)
-
-    def ratios(x):
+    def ratios(x, count):
         return np.stack([x[:, 0] / x[:, 1], x[:, 2] / (x[:, 2] + x[:, 3])])
 
-    value = ratios(total)
-    jackknife = np.array([ratios(total - part) for part in parts])
-    n = len(parts)
-    error = np.sqrt((n - 1) / n * ((jackknife - jackknife.mean(axis=0)) ** 2).sum(axis=0))
-    return np.array(times), value, error
+    return time_series(directory, ["C_re", "C_imp", "dE_re", "dE_first"], ratios)
 
 
 def draw(directories, path):
@@ -83,18 +63,14 @@ def draw(directories, path):
 
 def main(directories):
     for directory in directories:
-        sums = block_sums(directory)
+        sums, counts = block_sums(directory)
         times = sorted({t for block in sums.values() for (t, _) in block})
         print(directory)
         for t1, t2 in WINDOWS:
             t1 = 0.0 if t1 == 0 else min(times, key=lambda t: abs(t - t1))
             t2 = min(times, key=lambda t: abs(t - t2))
-            parts = {b: window_sums(block, t1, t2) for b, block in sums.items()}
-            total = sum(parts.values())
-            value = per_collision(total)
-            jackknife = np.array([per_collision(total - part) for part in parts.values()])
-            n = len(parts)
-            error = np.sqrt((n - 1) / n * ((jackknife - jackknife.mean(axis=0)) ** 2).sum(axis=0))
+            parts = [window_sums(block, t1, t2) for block in sums.values()]
+            value, error = jackknife(parts, list(counts.values()), lambda x, count: per_collision(x))
             print(f"  t in ({t1:g}, {t2:g}]: energy lost per first collision {value[0]:.4g} ± {error[0]:.2g}, "
                   f"per recollision {value[1]:.4g} ± {error[1]:.2g}, ratio {value[2]:.3f} ± {error[2]:.3f}")
 

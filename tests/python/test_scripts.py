@@ -1,5 +1,7 @@
-"""scripts/recollision_energy.py: its per-collision energy losses (from blocks.csv, with jackknife
-errors) equal the same ratios computed from observables.csv's means, an independent path."""
+"""The analysis scripts (scripts/*.py) against independent paths: what they compute from blocks.csv
+with block-jackknife errors (recollision_energy.py, energy_budget.py, bow_figure.py) equals the same
+quantities from observables.csv's means, and the shared jackknife (block_jackknife.py) its closed
+form for a mean."""
 import csv
 import io
 import os
@@ -100,3 +102,17 @@ def test_bow_figure_equals_the_means(tmp_path):
     subprocess.run([sys.executable, os.path.join(REPO, "scripts", "bow_figure.py"), str(figure), shells],
                    capture_output=True, text=True, check=True)
     assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_block_jackknife_of_a_mean_is_the_standard_error():
+    """scripts/block_jackknife.py: for the mean of equal blocks, the delete-one-block jackknife error
+    is exactly the standard error of the block means (its closed form)."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import numpy as np
+    from block_jackknife import jackknife
+    rng = np.random.default_rng(7)
+    parts = [rng.normal(size=3) * 4 + 10 for _ in range(25)]  # sums over 4 realizations each
+    value, error = jackknife(parts, [4.0] * 25, lambda x, count: x / count)
+    means = np.array(parts) / 4
+    assert np.allclose(value, means.mean(axis=0), rtol=1e-14)
+    assert np.allclose(error, means.std(axis=0, ddof=1) / np.sqrt(25), rtol=1e-12)
