@@ -10,8 +10,10 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "kinetic/background.hpp"
+#include "kinetic/batch.hpp"
 #include "kinetic/tracer.hpp"
 #include "kinetic/trajectory.hpp"
 #include "md/scenes.hpp"
@@ -91,6 +93,34 @@ void late_core(benchmark::State& state) {
   report(state, counters);
 }
 
+/// late_core with eight trajectories at once in the 8-lane kernel (kinetic/batch.hpp); per
+/// iteration 8 × the trajectories of late_core.
+template <int D>
+void late_core_batch(benchmark::State& state) {
+  const LateScene& scene = late_scene(D);
+  const kinetic::GridBackground* grid = kinetic::batch_background(*scene.background);
+  if (!kinetic::batch_available() || grid == nullptr) {
+    state.SkipWithError("no 8-lane kernel on this CPU or background");
+    return;
+  }
+  const double t_max = scene.config.scene.t_max;
+  const kinetic::ImpurityModel impurity{D, 1.0, 2 * scene.config.scene.a};
+  std::vector<kinetic::Random> rngs;
+  for (int l = 0; l < kinetic::batch_lanes; ++l) rngs.emplace_back(2, l);
+  kinetic::TracerCounters counters;
+  for (auto _ : state) {
+    kinetic::TracerState<D> s[kinetic::batch_lanes];
+    for (int l = 0; l < kinetic::batch_lanes; ++l) {
+      s[l].t = 0.5 * t_max;
+      const kinetic::WindowBound window = scene.background->bound(s[l].t);
+      const double T = scene.background->at(0.0, s[l].t, window).T;
+      for (int k = 0; k < D; ++k) s[l].v[k] = std::sqrt(T) * rngs[l].normal();
+    }
+    kinetic::advance_batch<D>(*grid, impurity, s, rngs.data(), 0xffu, t_max, counters);
+  }
+  report(state, counters);
+}
+
 /// One host-state lookup at a random radius inside the core at t ≈ 0.7 t_max (2D scene): the time
 /// slice computed directly (a log and an exp), or derived from an anchor (series), then `at`.
 void lookup(benchmark::State& state) {
@@ -118,6 +148,8 @@ BENCHMARK_TEMPLATE(equilibrium, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(equilibrium, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(late_core, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(late_core, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(late_core_batch, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(late_core_batch, 3)->Unit(benchmark::kMillisecond);
 BENCHMARK(lookup)->Arg(0)->Arg(1);
 
 BENCHMARK_MAIN();

@@ -78,9 +78,9 @@ void write_tracer_run(const kinetic::TracerResult& result, const std::string& ou
               result.config.background.c_str(), result.ensemble.scene.config.name.c_str(),
               result.ensemble.scene.config.d, result.trajectories(),
               static_cast<unsigned long long>(result.collisions()), result.wall_seconds);
-  std::printf("  collision rate %s per impurity per time (chi = %.6g), null-collision rejection %.3f\n",
+  std::printf("  collision rate %s per impurity per time (chi = %.6g), null-collision rejection %.3f, %s kernel\n",
               common::format_measurement(result.collision_rate(), result.collision_rate_error()).c_str(), result.chi,
-              result.rejection_rate());
+              result.rejection_rate(), result.kernel.c_str());
   if (summary.contains("collision_rate_exact")) {  // equilibrium: the exact n chi S <|g|> beside the measurement
     const double exact = summary["collision_rate_exact"].get<double>();
     std::printf("  exact equilibrium collision rate n chi S <|g|> = %s (measured %+.1f sigma from it)\n",
@@ -132,6 +132,10 @@ void add_tracer_command(CLI::App& app) {
   c->add_option("--frames-per-decade", o->config.frames_per_decade, "ns: stored frames per decade of R/lambda")
       ->capture_default_str();
   c->add_option("--cells", o->config.cells, "ns: Navier-Stokes cells")->capture_default_str();
+  c->add_option("--kernel", o->config.kernel,
+                "auto (the 8-lane AVX-512 kernel where the CPU has it, for ns and tvns; else scalar), avx512 or "
+                "scalar: the same process with other deviates, so other sample paths (summary.json records it)")
+      ->capture_default_str();
   add_format_option(*c, o->format);
   c->callback([o] { run(*o); });
 }

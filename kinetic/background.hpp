@@ -15,6 +15,17 @@
 
 namespace coldblast::kinetic {
 
+/// The Enskog factor as a rational function of the packing fraction φ,
+/// χ = (c0 + c1 φ + c2 φ²)/(1 − φ)^power, valid for φ < phi_limit: the closed forms behind
+/// ContactModel::chi_at_phi (hydro::contact_value for equal radii, pair_contact_value otherwise)
+/// in the form the 8-lane kernel (kinetic/batch.hpp) evaluates; tests/kinetic check that the two
+/// agree to round-off. Dilute: χ = 1 (power 0).
+struct ChiRational {
+  double c0 = 1.0, c1 = 0.0, c2 = 0.0;
+  int power = 0;
+  double phi_limit = std::numeric_limits<double>::infinity();
+};
+
 /// Enskog factor of the impurity–host pair: 1 (dilute) or pair_contact_value at the local packing
 /// fraction n Ω_d a^d (dense).
 struct ContactModel {
@@ -27,6 +38,8 @@ struct ContactModel {
   double chi_at_phi(double phi) const;
   /// Packing fraction per unit host density, Ω_d a^d (theory::unit_ball_volume).
   double packing_per_density() const;
+  /// chi_at_phi's closed form as coefficients (ChiRational).
+  ChiRational rational() const;
 };
 
 /// Host state at one point: density, radial flow speed, temperature, contact factor.
@@ -61,6 +74,25 @@ struct TimeSlice {
 inline double host_mean_speed(int d, double T) {
   return T > 0.0 ? maxwellian_mean_speed(d, T) : 0.0;
 }
+
+/// A grid background's data in the layout of the 8-lane kernel (kinetic/batch.hpp): the field f
+/// (0: n, 1: u, 2: T) of frame k in cell i at fields[(3 k + f) cells + i].
+struct GridTables {
+  std::vector<double> x, fields;
+  std::size_t cells = 0;
+  bool uniform = false;       ///< x equally spaced (the kernel needs it)
+  double step_inverse = 0.0;  ///< 1 / (x[1] − x[0])
+  double edge = 0.0, n_inf = 0.0, chi_ambient = 1.0, phi_per_n = 0.0;
+  ChiRational chi;
+};
+
+/// A window's time interpolation in closed form, with L = ln t − log_t: the later frame's weight
+/// w = slope L, ln s = log_scale + alpha L, the velocity factor fu = exp(beta L) (0 between frames);
+/// the window's frames k0 and k1 (equal in a self-similar continuation, where w = 0).
+struct WindowCoefficients {
+  double log_t = 0.0, slope = 0.0, log_scale = 0.0, alpha = 0.0, beta = 0.0;
+  std::size_t k0 = 0, k1 = 0;
+};
 
 class Background {
  public:
@@ -156,6 +188,10 @@ class GridBackground final : public Background {
   double t_first() const override { return 0.0; }
   double t_last() const override;
   std::size_t frame_count() const { return frames_.size(); }
+  /// The data in the 8-lane kernel's layout, and a window's interpolation coefficients (the same
+  /// interpolation as slice() and at(), to round-off).
+  const GridTables& tables() const { return tables_; }
+  WindowCoefficients coefficients(const WindowBound& window) const;
   const std::vector<BackgroundFrame>& frames() const { return frames_; }
 
   /// Ratio of consecutive geometric windows in the self-similar extensions.
@@ -189,6 +225,7 @@ class GridBackground final : public Background {
   std::vector<double> ratio_powers_;               // q^j, j = -limit..limit
   /// Scale s(t) of window `window` (frame pair or self-similar continuation) and the velocity factor.
   double scale_at(const WindowBound& window, double t) const;
+  void build_tables();
   int d_;
   std::vector<double> x_;
   bool uniform_ = false;  // x_ equally spaced (the solvers' grids): locate() indexes directly
@@ -206,6 +243,7 @@ class GridBackground final : public Background {
   std::vector<double> band_start_;        // x of each band's first centre, then x_.back()
   std::vector<BandBounds> window_bands_;  // [k]: frames k, k+1
   BandBounds first_bands_, last_bands_;   // frame 0 alone, the last frame alone
+  GridTables tables_;
 };
 
 }  // namespace coldblast::kinetic

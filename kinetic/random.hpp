@@ -5,6 +5,7 @@
 // Normal and exponential deviates by Boost.Random's ziggurat (Marsaglia & Tsang 2000, J. Stat.
 // Softw. 5(8), with McFarland's tables, Boost >= 1.56): exact laws, one 64-bit word per deviate in
 // ~99 % of the draws, and portable (Boost's own code and tables, unlike <random>'s distributions).
+#include <array>
 #include <boost/random/exponential_distribution.hpp>
 #include <boost/random/normal_distribution.hpp>
 #include <cstdint>
@@ -28,6 +29,12 @@ class Random {
   static constexpr result_type min() { return 0; }
   static constexpr result_type max() { return std::numeric_limits<result_type>::max(); }
   result_type operator()() { return next(); }
+  /// The generator's four words (the 8-lane kernel, kinetic/batch.hpp, runs the stream in a lane
+  /// and hands it back): set_state(state()) leaves the stream unchanged.
+  std::array<std::uint64_t, 4> state() const { return {s_[0], s_[1], s_[2], s_[3]}; }
+  void set_state(const std::array<std::uint64_t, 4>& words) {
+    for (int k = 0; k < 4; ++k) s_[k] = words[static_cast<std::size_t>(k)];
+  }
   std::uint64_t next() {
     const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
     const std::uint64_t t = s_[1] << 17;

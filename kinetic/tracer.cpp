@@ -7,6 +7,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +16,7 @@
 #include "common/input.hpp"
 #include "common/validate.hpp"
 #include "hydro/tvns.hpp"
+#include "kinetic/batch.hpp"
 #include "kinetic/hydro_backgrounds.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/prefactors.hpp"
@@ -104,6 +107,7 @@ struct RunContext {
   ImpurityModel impurity;
   double start_time;
   const std::vector<md::ImpurityState>* states;  ///< start = "states": trajectory i starts from states[i]
+  const GridBackground* batch;                   ///< the 8-lane kernel's background, or nullptr (scalar loop)
 };
 
 /// start = "states": the file's states, checked against the scene (its physics keys, a time in
@@ -135,61 +139,163 @@ std::vector<md::ImpurityState> load_start_states(const TracerConfig& c, long lon
   return std::move(file.states);
 }
 
+/// One trajectory in flight: its stream, state, start position and counters.
 template <int D>
-void run_trajectory(const RunContext& ctx, long long index, std::vector<double>& record, TracerBlock& block) {
-  const md::BlastConfig& c = ctx.scene.config;
-  Random rng(c.seed, static_cast<std::uint64_t>(index));
+struct Trajectory {
+  Random rng;
   TracerState<D> s;
+  md::Vec<D> r0 = md::Vec<D>::Zero();  ///< where the impurity started (r is from the blast centre)
+  std::uint64_t collisions_before = 0;
+  long long index = 0;
+};
+
+template <int D>
+Trajectory<D> start_trajectory(const RunContext& ctx, long long index) {
+  Trajectory<D> x{Random(ctx.scene.config.seed, static_cast<std::uint64_t>(index)), {}, md::Vec<D>::Zero(), 0, index};
+  TracerState<D>& s = x.s;
   s.t = ctx.start_time;
-  md::Vec<D> r0 = md::Vec<D>::Zero();  // where the impurity started (r is from the blast centre)
   if (ctx.states != nullptr) {
     const md::ImpurityState& state = (*ctx.states)[static_cast<std::size_t>(index)];
     for (int k = 0; k < D; ++k) {
       s.r[k] = state.r[k];
       s.v[k] = state.v[k];
-      r0[k] = state.r0[k];
+      x.r0[k] = state.r0[k];
     }
     s.collisions = state.collisions;  // C_imp counts from the MD's start, as the MD's does
   } else {
-    s.v = initial_velocity<D>(ctx.config, ctx.background, s.t, rng);
+    s.v = initial_velocity<D>(ctx.config, ctx.background, s.t, x.rng);
   }
-  const std::uint64_t collisions_before = s.collisions;
-  TracerCounters counters;
+  x.collisions_before = s.collisions;
+  return x;
+}
+
+/// The observables of recording time k (x advanced to it) into `record`, and |Δr|², |Δr|⁴, |v|²,
+/// |v|⁴ into moments[4k..4k+3] (the trajectory's terms of TracerBlock::moments).
+template <int D>
+void record_time(const RunContext& ctx, std::size_t k, const Trajectory<D>& x, std::vector<double>& record,
+                 std::vector<double>& moments) {
+  const md::BlastConfig& c = ctx.scene.config;
+  const TracerState<D>& s = x.s;
+  const double t = ctx.scene.times[k];
+  const double r2 = (s.r - x.r0).squaredNorm(), v2 = s.v.squaredNorm();
+  const int kk = static_cast<int>(k);
+  record[ctx.layout.scalar("R_imp", kk)] = 0.5 * r2;
+  record[ctx.layout.scalar("V_imp", kk)] = 0.5 * v2;
+  record[ctx.layout.scalar("C_imp", kk)] = static_cast<double>(s.collisions);
+  const double time = std::max(t, s.t);
+  record[ctx.layout.scalar("u_imp", kk)] = std::abs(ctx.background.at(s.r.norm(), time, ctx.background.bound(time)).u);
+  // Eq. (39) [eq:pr]: |Δr| in bins of width R(t)/bins, R(t) from Eq. (1), as md/observers.cpp.
   const theory::BlastParameters p{D, c.n, c.a, c.E, ctx.scene.A_d};
   const int bins = c.p_imp_bins;
-  std::fill(record.begin(), record.end(), 0.0);
-  for (std::size_t k = 0; k < ctx.scene.times.size(); ++k) {
-    const double t = ctx.scene.times[k];
-    if (t > s.t) advance<D>(ctx.background, ctx.impurity, s, t, rng, counters);
-    const double r2 = (s.r - r0).squaredNorm(), v2 = s.v.squaredNorm();
-    const int kk = static_cast<int>(k);
-    record[ctx.layout.scalar("R_imp", kk)] = 0.5 * r2;
-    record[ctx.layout.scalar("V_imp", kk)] = 0.5 * v2;
-    record[ctx.layout.scalar("C_imp", kk)] = static_cast<double>(s.collisions);
-    const double time = std::max(t, s.t);
-    record[ctx.layout.scalar("u_imp", kk)] =
-        std::abs(ctx.background.at(s.r.norm(), time, ctx.background.bound(time)).u);
-    // Eq. (39) [eq:pr]: |Δr| in bins of width R(t)/bins, R(t) from Eq. (1), as md/observers.cpp.
-    const double width = theory::shock_radius(p, t) / bins;
-    const int b = static_cast<int>(std::sqrt(r2) / width);
-    if (b < bins) record[ctx.layout.p_imp(kk, b)] = 1.0;
-    double* m = &block.moments[4 * k];
-    m[0] += r2;
-    m[1] += r2 * r2;
-    m[2] += v2;
-    m[3] += v2 * v2;
-  }
-  if (c.t_max > s.t) advance<D>(ctx.background, ctx.impurity, s, c.t_max, rng, counters);
-  const double v2 = s.v.squaredNorm();
+  const double width = theory::shock_radius(p, t) / bins;
+  const int b = static_cast<int>(std::sqrt(r2) / width);
+  if (b < bins) record[ctx.layout.p_imp(kk, b)] = 1.0;
+  double* m = &moments[4 * k];
+  m[0] = r2;
+  m[1] = r2 * r2;
+  m[2] = v2;
+  m[3] = v2 * v2;
+}
+
+/// The end state at t_max (x advanced to it) and the moments' terms into the block; checks the record.
+template <int D>
+void finish_trajectory(const Trajectory<D>& x, const std::vector<double>& record, const std::vector<double>& moments,
+                       TracerBlock& block) {
+  for (std::size_t i = 0; i < moments.size(); ++i) block.moments[i] += moments[i];
+  const double v2 = x.s.v.squaredNorm();
   block.v2_final += v2;
   block.v2_final_squares += v2 * v2;
-  block.collisions += counters.collisions;
-  block.candidates += counters.candidates;
-  const auto made = static_cast<double>(s.collisions - collisions_before);  // in [start, t_max]
+  const auto made = static_cast<double>(x.s.collisions - x.collisions_before);  // in [start, t_max]
   block.collisions_squares += made * made;
   ++block.count;
-  for (const double x : record)
-    if (!std::isfinite(x)) throw std::runtime_error("non-finite observable in trajectory " + std::to_string(index));
+  for (const double value : record)
+    if (!std::isfinite(value))
+      throw std::runtime_error("non-finite observable in trajectory " + std::to_string(x.index));
+}
+
+void add_record(const std::vector<double>& record, md::BlockSums& sums) {
+  for (std::size_t e = 0; e < record.size(); ++e) {
+    sums.sum[e] += record[e];
+    sums.sum_squares[e] += record[e] * record[e];
+  }
+  ++sums.count;
+}
+
+/// Trajectories [first, first + count) one after the other (kinetic::advance).
+template <int D>
+void run_scalar(const RunContext& ctx, long long first, long long count, const std::atomic<bool>& stop,
+                TracerBlockSums& out) {
+  std::vector<double> record(ctx.layout.size(), 0.0), moments(out.tracer.moments.size(), 0.0);
+  for (long long i = first; i < first + count && !stop; ++i) {
+    Trajectory<D> x = start_trajectory<D>(ctx, i);
+    TracerCounters counters;
+    std::fill(record.begin(), record.end(), 0.0);
+    for (std::size_t k = 0; k < ctx.scene.times.size(); ++k) {
+      if (ctx.scene.times[k] > x.s.t)
+        advance<D>(ctx.background, ctx.impurity, x.s, ctx.scene.times[k], x.rng, counters);
+      record_time<D>(ctx, k, x, record, moments);
+    }
+    const double t_max = ctx.scene.config.t_max;
+    if (t_max > x.s.t) advance<D>(ctx.background, ctx.impurity, x.s, t_max, x.rng, counters);
+    out.tracer.collisions += counters.collisions;
+    out.tracer.candidates += counters.candidates;
+    finish_trajectory<D>(x, record, moments, out.tracer);
+    add_record(record, out.sums);
+  }
+}
+
+/// The same trajectories in the 8-lane kernel (kinetic/batch.hpp): a lane that reaches a
+/// recording time is recorded and sent on at once, and a finished lane takes the next trajectory,
+/// so no lane waits for another. Finished trajectories enter the block's sums in index order, as
+/// in run_scalar, so the sums do not depend on the lanes' timing; the sample paths are the kernel's.
+template <int D>
+void run_batched(const RunContext& ctx, long long first, long long count, const std::atomic<bool>& stop,
+                 TracerBlockSums& out) {
+  struct Flight {
+    Trajectory<D> x;
+    std::size_t next = 0;  ///< the next recording time; times.size(): bound for t_max
+    std::vector<double> record, moments;
+  };
+  const std::vector<double>& times = ctx.scene.times;
+  const double t_max = ctx.scene.config.t_max;
+  const auto target = [&](const Flight& f) { return f.next < times.size() ? times[f.next] : t_max; };
+  Batch<D> batch(*ctx.batch, ctx.impurity);
+  TracerCounters counters;
+  std::vector<std::unique_ptr<Flight>> lanes(batch_lanes);
+  std::map<long long, std::unique_ptr<Flight>> finished;  // waiting for an earlier trajectory
+  long long next_load = first, next_sum = first;
+  const auto load = [&](int l) {
+    if (next_load >= first + count || stop) return;
+    auto f = std::make_unique<Flight>(Flight{start_trajectory<D>(ctx, next_load++), 0,
+                                             std::vector<double>(ctx.layout.size(), 0.0),
+                                             std::vector<double>(out.tracer.moments.size(), 0.0)});
+    batch.load(l, f->x.s, f->x.rng, target(*f), counters);
+    lanes[static_cast<std::size_t>(l)] = std::move(f);
+  };
+  for (int l = 0; l < batch_lanes; ++l) load(l);
+  for (unsigned arrived; (arrived = batch.run(counters)) != 0;) {
+    for (; arrived != 0; arrived &= arrived - 1) {
+      const int l = __builtin_ctz(arrived);
+      Flight& f = *lanes[static_cast<std::size_t>(l)];
+      f.x.s = batch.state(l);
+      for (; f.next < times.size() && times[f.next] <= f.x.s.t; ++f.next)
+        record_time<D>(ctx, f.next, f.x, f.record, f.moments);
+      if (f.next < times.size() || t_max > f.x.s.t) {
+        batch.retarget(l, target(f), counters);
+        continue;
+      }
+      batch.unload(l);
+      finished[f.x.index] = std::move(lanes[static_cast<std::size_t>(l)]);
+      load(l);
+    }
+    for (auto it = finished.find(next_sum); it != finished.end(); it = finished.find(++next_sum)) {
+      finish_trajectory<D>(it->second->x, it->second->record, it->second->moments, out.tracer);
+      add_record(it->second->record, out.sums);
+      finished.erase(it);
+    }
+  }
+  out.tracer.collisions += counters.collisions;
+  out.tracer.candidates += counters.candidates;
 }
 
 TracerBlockSums run_block(const RunContext& ctx, long long block, const std::atomic<bool>& stop) {
@@ -198,19 +304,11 @@ TracerBlockSums run_block(const RunContext& ctx, long long block, const std::ato
   out.sums.sum.assign(ctx.layout.size(), 0.0);
   out.sums.sum_squares.assign(ctx.layout.size(), 0.0);
   out.tracer.moments.assign(4 * ctx.scene.times.size(), 0.0);
-  std::vector<double> record(ctx.layout.size(), 0.0);
   const long long first = block * c.block_size, count = md::block_realizations(c, block);
-  for (long long i = first; i < first + count && !stop; ++i) {
-    if (c.d == 2)
-      run_trajectory<2>(ctx, i, record, out.tracer);
-    else
-      run_trajectory<3>(ctx, i, record, out.tracer);
-    for (std::size_t e = 0; e < record.size(); ++e) {
-      out.sums.sum[e] += record[e];
-      out.sums.sum_squares[e] += record[e] * record[e];
-    }
-    ++out.sums.count;
-  }
+  if (ctx.batch != nullptr)
+    c.d == 2 ? run_batched<2>(ctx, first, count, stop, out) : run_batched<3>(ctx, first, count, stop, out);
+  else
+    c.d == 2 ? run_scalar<2>(ctx, first, count, stop, out) : run_scalar<3>(ctx, first, count, stop, out);
   out.sums.collisions = out.tracer.collisions;
   return out;
 }
@@ -260,6 +358,14 @@ void TracerConfig::validate() const {
   common::require_in_range("--start-time", start_time, 0.0, scene.t_max, Bound::closed, Bound::open);
   common::require_integer_in_range("--frames-per-decade", frames_per_decade, 4, 400);
   common::require_integer_in_range("--cells", cells, 64, 4096);
+  if (kernel != "auto" && kernel != "avx512" && kernel != "scalar")
+    throw std::invalid_argument("--kernel = " + kernel + " is not one of: auto, avx512, scalar");
+  if (kernel == "avx512" && !batch_available())
+    throw std::invalid_argument(
+        "--kernel = avx512: this CPU (or build) has no AVX-512 F and DQ; allowed here: auto, scalar");
+  if (kernel == "avx512" && background == "equilibrium")
+    throw std::invalid_argument(
+        "--kernel = avx512 is for the grid backgrounds ns and tvns; allowed with equilibrium: auto, scalar");
 }
 
 double TracerConfig::resolved_start_time() const {
@@ -382,8 +488,12 @@ TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progr
     result.chi = ambient.chi;
   }
   x.layout = std::make_unique<md::ObservableLayout>(scene);
+  const GridBackground* batch =
+      config.kernel != "scalar" && batch_available() ? batch_background(*x.background) : nullptr;
+  result.kernel = batch != nullptr ? "avx512" : "scalar";
   x.run = std::make_unique<RunContext>(RunContext{result.config, scene, *x.layout, *x.background, impurity,
-                                                  result.start_time, config.start == "states" ? &x.states : nullptr});
+                                                  result.start_time, config.start == "states" ? &x.states : nullptr,
+                                                  batch});
   const long long block_count = (trajectories + scene.config.block_size - 1) / scene.config.block_size;
   for (long long b = config.shard_index; b < block_count; b += config.shard_count) blocks_.push_back(b);
 }
@@ -468,6 +578,7 @@ common::Json tracer_summary(const TracerResult& result) {
   j["background_description"] = result.background_description;
   j["background_frames"] = result.background_frames;
   j["transport"] = c.transport;
+  j["kernel"] = result.kernel;
   j["start"] = c.start;
   if (c.start == "states") j["start_states"] = c.start_states;
   j["start_time"] = result.start_time;
@@ -584,6 +695,10 @@ common::Json read_tracer_summary(const std::filesystem::path& path) {
     take(key, true);
   if (!keys.at("background_frames").is_number_unsigned()) throw bad("'background_frames' is not a count");
   if (keys.at("background") == "equilibrium") take("T", true);
+  if (s.contains("kernel"))
+    take("kernel", false);
+  else
+    keys["kernel"] = "scalar";  // runs before the 8-lane kernel
   return keys;
 }
 
@@ -655,6 +770,7 @@ TracerResult merge_tracer_outputs(const std::vector<std::filesystem::path>& dire
   merged.start_time = c.start_time = first.at("start_time").get<double>();
   merged.background_description = first.at("background_description").get<std::string>();
   merged.background_frames = first.at("background_frames").get<std::uint64_t>();
+  merged.kernel = first.at("kernel").get<std::string>();
   merged.chi = first.at("chi").get<double>();
   merged.n = first.at("n_ambient").get<double>();
   merged.wall_seconds = merged.ensemble.wall_seconds;

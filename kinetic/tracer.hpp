@@ -41,6 +41,10 @@ struct TracerConfig {
   std::string start_states;    ///< start = "states": an impurity_states.csv of the same scene (md/states.hpp)
   int frames_per_decade = 40;  ///< ns: stored background frames per decade of R/λ, [4, 400]
   int cells = 256;             ///< ns: finite-volume cells, [64, 4096]; tvns: x samples = 8 × cells
+  /// "auto" (the 8-lane AVX-512 kernel of kinetic/batch.hpp where the CPU has it and the background
+  /// is a grid, else the scalar loop), "avx512" or "scalar". The kernels sample the same process
+  /// with different deviates: the same laws, other sample paths (a run records its kernel).
+  std::string kernel = "auto";
   /// Throws std::invalid_argument naming the option, its value and the allowed range.
   void validate() const;
   /// start_time with 0 resolved.
@@ -64,7 +68,8 @@ struct TracerResult {
   std::map<long long, TracerBlock> blocks;
   std::string background_description;
   std::size_t background_frames = 0;
-  double n = 0.0, chi = 1.0;  ///< ambient (equilibrium: bath) density and its contact value
+  std::string kernel = "scalar";  ///< the kernel that ran: "avx512" or "scalar"
+  double n = 0.0, chi = 1.0;      ///< ambient (equilibrium: bath) density and its contact value
   double start_time = 0.0;
   double wall_seconds = 0.0;
 

@@ -450,6 +450,7 @@ struct TracerOptions {
   double start_time = 0.0;
   int frames_per_decade = 40, cells = 256;
   std::string start_states;
+  std::string kernel = "auto";
 };
 
 py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
@@ -472,6 +473,7 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   config.start_states = o.start_states;
   config.frames_per_decade = o.frames_per_decade;
   config.cells = o.cells;
+  config.kernel = o.kernel;
   Progress progress(progress_callback);
   const std::function<kinetic::TracerResult()> work = [&] {
     kinetic::TracerProgress report;
@@ -625,14 +627,14 @@ PYBIND11_MODULE(_coldblast, m) {
       [](const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
          std::optional<long long> seed, const std::string& background, const std::string& transport,
          const std::string& start, long long trajectories, int threads, double T, std::optional<double> phi,
-         double start_time, int frames_per_decade, int cells, const std::string& start_states, const std::string& out,
-         const py::object& progress) {
+         double start_time, int frames_per_decade, int cells, const std::string& start_states,
+         const std::string& kernel, const std::string& out, const py::object& progress) {
         const TracerOptions options{background, transport,         start, trajectories, threads, T, phi,
-                                    start_time, frames_per_decade, cells, start_states};
+                                    start_time, frames_per_decade, cells, start_states, kernel};
         return tracer_run(scene_file, scene_text, overrides, seed, options, out, progress);
       },
       py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("seed"), py::arg("background"),
       py::arg("transport"), py::arg("start"), py::arg("trajectories"), py::arg("threads"), py::arg("T"), py::arg("phi"),
-      py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("out"),
-      py::arg("progress"));
+      py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("kernel"),
+      py::arg("out"), py::arg("progress"));
 }

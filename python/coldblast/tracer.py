@@ -11,7 +11,7 @@ from .md import scene_arguments
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
         start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=256, progress=True,
-        start_states=None, **overrides):
+        start_states=None, kernel="auto", **overrides):
     """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
 
     Parameters
@@ -44,6 +44,10 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         Equilibrium background only: bath temperature (> 0) and packing fraction (None: the scene's).
     frames_per_decade, cells : int
         ns background: stored frames per decade of R/lambda [4, 400] and Navier-Stokes cells [64, 4096].
+    kernel : str
+        "auto" (the 8-lane AVX-512 kernel where the CPU has it, for ns and tvns; else the scalar loop),
+        "avx512" or "scalar": the same process with other deviates, so other sample paths; the summary's
+        "kernel" says which ran.
     progress : bool or callable
         True: blocks done and ETA on stderr; False: silent; callable(done, total).
     **overrides
@@ -73,7 +77,7 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
                                 0.0 if start_time is None else number(start_time, "--start-time"),
                                 integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
                                 "" if start_states is None else os.fspath(start_states),
-                                "" if out is None else os.fspath(out),
+                                text(kernel, "--kernel"), "" if out is None else os.fspath(out),
                                 _progress.callback(progress, "tracer", "blocks"))
     return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],
                            out=None if out is None else os.fspath(out))

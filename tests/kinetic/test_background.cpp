@@ -209,3 +209,48 @@ TEST_CASE("grid background: self-similar windows hold t, also beyond the table o
     }
   }
 }
+
+TEST_CASE("contact model: the rational form of chi equals chi_at_phi (equal and unequal radii, 2D and 3D)") {
+  struct Case {
+    int d;
+    double a_imp;
+    bool enskog;
+  };
+  for (const Case c : {Case{2, 0.5, true}, Case{3, 0.5, true}, Case{2, 1.5, true}, Case{3, 0.2, true},
+                       Case{2, 0.5, false}, Case{3, 1.0, false}}) {
+    const ContactModel contact{c.d, 0.5, c.a_imp, c.enskog};
+    const ChiRational r = contact.rational();
+    CHECK(r.power == (c.enskog ? c.d : 0));
+    for (double phi = 0.0; phi < std::min(0.7, r.phi_limit); phi += 0.01) {
+      double denominator = 1.0;
+      for (int k = 0; k < r.power; ++k) denominator *= 1.0 - phi;
+      INFO("d = " << c.d << ", a_imp = " << c.a_imp << ", phi = " << phi);
+      CHECK((r.c0 + phi * (r.c1 + phi * r.c2)) / denominator == Approx(contact.chi_at_phi(phi)).epsilon(1e-14));
+    }
+  }
+  // The limit is the equation of state's range: chi_at_phi refuses it.
+  const ContactModel spheres{3, 0.5, 0.5, true};
+  CHECK_THROWS_AS(spheres.chi_at_phi(spheres.rational().phi_limit), std::invalid_argument);
+}
+
+TEST_CASE("grid background: a window's coefficients give slice()'s scale and weight, and its frames") {
+  const GridBackground bg = linear_background(true);
+  const GridTables& g = bg.tables();
+  REQUIRE(g.cells == 50);
+  REQUIRE(g.fields.size() == 4 * 3 * 50);
+  CHECK(g.fields[(3 * 2 + 0) * 50 + 7] == bg.frames()[2].n[7]);
+  CHECK(g.fields[(3 * 3 + 2) * 50 + 49] == bg.frames()[3].T[49]);
+  CHECK(g.chi_ambient == ContactModel{2, 0.2, 0.2, false}.chi(0.5));
+  for (const double t : {0.01, 0.3, 1.0, 1.7, 3.0, 7.99, 8.0, 20.0, 1e4}) {
+    const WindowBound w = bg.bound(t);
+    const TimeSlice s = bg.slice(w, t);
+    const WindowCoefficients c = bg.coefficients(w);
+    const double L = std::log(t) - c.log_t;
+    INFO("t = " << t << ", window " << w.index);
+    CHECK(std::exp(c.log_scale + c.alpha * L) == Approx(s.scale).epsilon(1e-14));
+    CHECK(c.slope * L == Approx(s.w).margin(1e-14));
+    CHECK(std::exp(c.beta * L) == Approx(s.fu).epsilon(1e-14));
+    CHECK(c.k1 == (w.index >= 0 ? c.k0 + 1 : c.k0));
+    CHECK(c.k0 == (w.index >= 0 ? static_cast<std::size_t>(w.index) : w.index == -1 ? 0 : 3));
+  }
+}

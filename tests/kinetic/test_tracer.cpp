@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "common/output.hpp"
+#include "kinetic/batch.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/tracer.hpp"
+#include "md/run_files.hpp"
 #include "md/states.hpp"
 #include "tests/temp_path.hpp"
 
@@ -53,9 +55,11 @@ TEST_CASE("tracer: equilibrium summary rate equals n chi S ⟨|g|⟩, and T_fina
   CHECK(r.trajectories() == 600);
 }
 
-TEST_CASE("tracer: bit-identical for any thread count and sharding") {
+TEST_CASE("tracer: bit-identical for any thread count and sharding, with either kernel") {
   TracerConfig c = small_config("tvns");
+  c.kernel = GENERATE(as<std::string>{}, "scalar", "auto");
   const TracerResult one = run_tracer(c);
+  CHECK(one.kernel == (c.kernel == "scalar" || !batch_available() ? "scalar" : "avx512"));
   c.threads = 3;
   const TracerResult three = run_tracer(c);
   REQUIRE(one.ensemble.blocks.size() == three.ensemble.blocks.size());
@@ -119,6 +123,56 @@ TEST_CASE("tracer: bad input names the option") {
   c.scene.t_max = 2.0;  // before the Navier–Stokes start at R/λ = 2: no background solution
   c.scene.t_min = 1.0;
   CHECK_THROWS_WITH(run_tracer(c), Catch::Contains("t_max"));
+  c = small_config("ns");
+  c.kernel = "simd";
+  CHECK(message(c).find("--kernel") != std::string::npos);
+  c = small_config("equilibrium");
+  c.kernel = "avx512";
+  CHECK(message(c).find("--kernel") != std::string::npos);
+  c.kernel = "auto";  // the equilibrium background runs the scalar loop
+  c.trajectories = 8;
+  CHECK(run_tracer(c).kernel == "scalar");
+}
+
+TEST_CASE("tracer: the 8-lane kernel and the scalar loop sample the same process (dense NS background)") {
+  if (!batch_available()) {
+    WARN("this CPU has no AVX-512 F and DQ: only the scalar loop runs here");
+    return;
+  }
+  // Different deviates, so different trajectories: every observable at every recorded time, the
+  // collision rate and T_final agree within 4 combined standard errors.
+  TracerConfig c = small_config("ns");
+  c.transport = "enskog";
+  c.scene.t_max = 400.0;
+  c.trajectories = 4000;
+  c.scene.block_size = 64;
+  c.threads = 2;
+  c.kernel = "scalar";
+  const TracerResult scalar = run_tracer(c);
+  c.kernel = "avx512";
+  const TracerResult vector = run_tracer(c);
+  REQUIRE(scalar.kernel == "scalar");
+  REQUIRE(vector.kernel == "avx512");
+  const auto z = [](double a, double ea, double b, double eb) { return std::abs(a - b) / std::hypot(ea, eb); };
+  CHECK(z(scalar.collision_rate(), scalar.collision_rate_error(), vector.collision_rate(),
+          vector.collision_rate_error()) < 4);
+  CHECK(z(scalar.temperature_final(), scalar.temperature_final_error(), vector.temperature_final(),
+          vector.temperature_final_error()) < 4);
+  const auto a = coldblast::md::estimate_observables(scalar.ensemble);
+  const auto b = coldblast::md::estimate_observables(vector.ensemble);
+  REQUIRE(a.size() == b.size());
+  int compared = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const auto &x = a[k], &y = b[k];
+    REQUIRE(x.observable == y.observable);
+    REQUIRE(x.t == y.t);
+    if (!(x.stderr_ > 0 || y.stderr_ > 0)) continue;
+    INFO(x.observable << " at t = " << x.t << ": " << x.mean << " ± " << x.stderr_ << " vs " << y.mean << " ± "
+                      << y.stderr_);
+    CHECK(z(x.mean, x.stderr_, y.mean, y.stderr_) < 4);
+    ++compared;
+  }
+  CHECK(compared > 100);
 }
 
 TEST_CASE("tracer: --start states starts trajectory i from the MD's impurity state i at the file's time") {
@@ -236,6 +290,19 @@ TEST_CASE("tracer: md merge of shard directories equals one run, summary keys an
   write_tracer_outputs(run_tracer(other), shards[1]);
   CHECK_THROWS_WITH(merge_tracer_outputs(shards),
                     Catch::Contains("background_description") || Catch::Contains("T = 3"));
+  // So is a shard of another kernel (its trajectories are not those of the run).
+  {
+    const auto path = shards[2] / "summary.json";
+    auto summary = coldblast::common::Json::parse(read(path));
+    REQUIRE(summary.at("kernel") == "scalar");
+    summary["kernel"] = "avx512";
+    std::ofstream(path) << summary.dump(2);
+    c.shard_index = 1;
+    write_tracer_outputs(run_tracer(c), shards[1]);
+    CHECK_THROWS_WITH(merge_tracer_outputs(shards), Catch::Contains("kernel"));
+    summary["kernel"] = "scalar";
+    std::ofstream(path) << summary.dump(2);
+  }
   // A shard without its tracer sums is bad input naming the file.
   c.shard_index = 1;
   write_tracer_outputs(run_tracer(c), shards[1]);

@@ -11,43 +11,13 @@
 #include "kinetic/background.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/trajectory.hpp"
+#include "tests/kinetic/support.hpp"
 
 using namespace coldblast::kinetic;
 using coldblast::md::Vec;
 
 namespace {
-const double pi = std::acos(-1.0);
-
-template <int D>
-Vec<D> maxwellian(double T, double M, Random& rng) {
-  Vec<D> v;
-  for (int k = 0; k < D; ++k) v[k] = std::sqrt(T / M) * rng.normal();
-  return v;
-}
-
-struct Mean {
-  double sum = 0, squares = 0;
-  long long count = 0;
-  void add(double x) {
-    sum += x;
-    squares += x * x;
-    ++count;
-  }
-  double mean() const { return sum / count; }
-  double error() const { return std::sqrt((squares / count - mean() * mean()) / (count - 1)); }
-};
-
-/// Wilson–Hilferty upper quantile of chi-square with k degrees of freedom at normal deviate z.
-double chi_square_quantile(int k, double z) {
-  const double c = 2.0 / (9.0 * k);
-  return k * std::pow(1 - c + z * std::sqrt(c), 3);
-}
-
-/// Regularised lower incomplete gamma P(d/2, x): the CDF of M v²/(2T) for a Maxwellian in d dims.
-double energy_cdf(int d, double x) {
-  if (d == 2) return 1 - std::exp(-x);
-  return std::erf(std::sqrt(x)) - 2 * std::sqrt(x / pi) * std::exp(-x);
-}
+using namespace coldblast::kinetic_test;
 
 template <int D>
 void check_collision_rate(double n, double chi, double a, double a_imp, double M, double T) {
@@ -100,27 +70,6 @@ void check_thermalisation(double M) {
               << temperature.error());
   CHECK(chi2 < chi_square_quantile(bins - 1, 3.719));  // p = 1e-4
   CHECK(std::abs(temperature.mean() - T) < 4 * temperature.error());
-}
-
-/// A dilute 2D grid background (host radius 0.5, n∞ = 0.5 beyond x = 1) on 120 centres refined at
-/// the centre like the Navier–Stokes grid, frames at t = 1, 2, 4, 8 with s = t^(1/2), and the
-/// fields (n, u, T) = fields(x, t) at the nodes.
-template <class Fields>
-GridBackground evolving_background(const Fields& fields) {
-  std::vector<double> x;
-  for (int i = 0; i < 120; ++i) x.push_back(0.01 + 0.98 * std::pow(i / 119.0, 1.5));
-  std::vector<BackgroundFrame> frames;
-  for (const double t : {1.0, 2.0, 4.0, 8.0}) {
-    BackgroundFrame f{t, std::sqrt(t), {}, {}, {}};
-    for (const double xi : x) {
-      const HostState h = fields(xi, t);
-      f.n.push_back(h.n);
-      f.u.push_back(h.u);
-      f.T.push_back(h.T);
-    }
-    frames.push_back(f);
-  }
-  return GridBackground(2, x, 1.0, frames, 0.5, ContactModel{2, 0.5, 0.5, false}, false);
 }
 
 /// D from windows of length 2Δ: (|Δr(2Δ)|² − |Δr(Δ)|²)/(2dΔ) removes the ballistic offset.
@@ -241,22 +190,11 @@ TEST_CASE("a heavy impurity in a cold, steep, evolving background collides at ra
   // the straight path r(t) = v0 (t − 1): the mean count is that rate's integral. The density rises
   // 20-fold over the grid and the frames evolve (s ∝ t^(1/2)), so the segments' local majorants
   // change along the path and are kept across collisions (counters.segments < collisions).
-  const GridBackground bg = evolving_background([](double x, double t) {
-    return HostState{10 * (1 + 19 * x * x) * (1 + 0.2 * std::log(t)), -0.15 * x * std::sqrt(t), 0.0};  // inflow
-  });
+  const GridBackground bg = cold_inflow_background();
   const ImpurityModel impurity{2, 1e12, 1.0};
   const Vec<2> v0(0.3, 0.1);
-  const double t0 = 1.0, t1 = 7.5, S = impurity.cross_section();
-  // The exact mean: composite Simpson over 2e5 intervals of the interpolated fields.
-  const auto rate = [&](double t) {
-    const Vec<2> r = v0 * (t - t0);
-    const HostState h = bg.at(r.norm(), t, bg.bound(t));
-    return S * h.n * (v0 - h.u * r.normalized()).norm();
-  };
-  const int intervals = 200000;
-  double integral = rate(t0 + 1e-12) + rate(t1);
-  for (int k = 1; k < intervals; ++k) integral += (k % 2 ? 4 : 2) * rate(t0 + (t1 - t0) * k / intervals);
-  integral *= (t1 - t0) / (3.0 * intervals);
+  const double t0 = 1.0, t1 = 7.5;
+  const double integral = straight_path_collisions(bg, impurity.cross_section(), v0, t0, t1);
   Random rng(17, 0);
   Mean count;
   TracerCounters counters;

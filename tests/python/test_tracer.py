@@ -32,6 +32,15 @@ def test_run_equals_cli(tmp_path, background):
                                                      rel=1e-12)
 
 
+def test_kernel_is_passed_on_and_recorded():
+    scalar = coldblast.tracer.run(background="tvns", kernel="scalar", trajectories=16, seed=3, progress=False, **TINY)
+    assert scalar.summary["kernel"] == "scalar"
+    auto = coldblast.tracer.run(background="tvns", trajectories=16, seed=3, progress=False, **TINY)
+    assert auto.summary["kernel"] in ("avx512", "scalar")
+    if auto.summary["kernel"] == "avx512":  # other deviates: other trajectories of the same law
+        assert auto.summary["collision_rate"] != scalar.summary["collision_rate"]
+
+
 def test_equilibrium_rate_is_the_exact_one():
     # Equal discs in a dilute bath (chi = 1): rate = n (2 * 2a) <|g|>, <|g|> = sqrt(pi T / (2 mu)), mu = 1/2.
     result = coldblast.tracer.run(background="equilibrium", start="thermal", T=1.5, trajectories=400, seed=5,
@@ -60,6 +69,7 @@ def test_compare_md_run_equals_cli(tmp_path):
     ({"background": "plasma"}, ["--background", "plasma"]),
     ({"background": "equilibrium", "T": -1.0}, ["--background", "equilibrium", "--T", -1]),
     ({"trajectories": 0.5}, None),
+    ({"kernel": "simd"}, ["--kernel", "simd"]),
 ])
 def test_bad_input_is_the_cli_error(kwargs, flags):
     with pytest.raises(ValueError) as error:
