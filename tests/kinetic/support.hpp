@@ -2,6 +2,8 @@
 // Shared by the kinetic tests of the scalar loop (test_trajectory.cpp) and the 8-lane kernel
 // (test_batch.cpp): running means, the chi-square quantile, the Maxwellian energy CDF and the
 // evolving grid background of the exact-rate tests.
+#include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
@@ -49,6 +51,32 @@ inline double energy_cdf(int d, double x) {
   if (d == 2) return 1 - std::exp(-x);
   return std::erf(std::sqrt(x)) - 2 * std::sqrt(x / pi) * std::exp(-x);
 }
+
+/// Energies of impurity samples (mass M, dimension d) against the bath's Maxwellian at T: a
+/// 20-bin histogram of the Maxwellian energy CDF (chi-square at p = 1e-4) and M v²/d against T
+/// (4 standard errors).
+struct MaxwellianCheck {
+  MaxwellianCheck(int d_, double M_, double T_) : d(d_), M(M_), T(T_) {}
+  int d;
+  double M, T;
+  static constexpr int bins = 20;
+  std::vector<int> histogram = std::vector<int>(bins, 0);
+  Mean temperature;
+  void add(double v2) {
+    const double x = 0.5 * M * v2 / T;
+    ++histogram[std::min(bins - 1, static_cast<int>(energy_cdf(d, x) * bins))];
+    temperature.add(M * v2 / d);
+  }
+  void check() const {
+    double chi2 = 0.0;
+    const double expected = static_cast<double>(temperature.count) / bins;
+    for (const int h : histogram) chi2 += (h - expected) * (h - expected) / expected;
+    INFO("d = " << d << ", M = " << M << ": chi2 = " << chi2 << " (19 dof), T = " << temperature.mean() << " ± "
+                << temperature.error());
+    CHECK(chi2 < chi_square_quantile(bins - 1, 3.719));  // p = 1e-4
+    CHECK(std::abs(temperature.mean() - T) < 4 * temperature.error());
+  }
+};
 
 /// A dilute 2D grid background (host radius 0.5, n∞ = 0.5 beyond x = 1) on 120 centres refined at
 /// the centre like the Navier–Stokes grid, frames at t = 1, 2, 4, 8 with s = t^(1/2), and the
