@@ -17,9 +17,14 @@ particle radius (diameter 2a), T means k_B T.
 - ``coldblast.reproduce(scale="quick", out="coldblast-reproduce")``: the paper end to end
   (``coldblast reproduce``); its summary as a dict.
 
+``coldblast.__version__`` is the version of the top CMakeLists.txt's project() with the git commit
+of the build as a PEP 440 local label (``0.1.0+a21aaf8c1234``; ``coldblast --version`` prints
+``coldblast 0.1.0 (a21aaf8c1234)``); ``coldblast.__commit__`` is the commit alone.
+
 Bad input raises ValueError with the CLI's exit-2 message; Ctrl-C raises KeyboardInterrupt within
 a fraction of a second and leaves no half-written file. Tour: docs/python.md.
 """
+from ._version import __commit__, __version__
 from . import _coldblast
 from . import hydro, md, theory, tracer
 from ._run import Run, read_run
