@@ -10,7 +10,8 @@ packages=(build-essential cmake git pkg-config
           libsundials-dev libgsl-dev libeigen3-dev libboost-dev
           catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
           libbenchmark-dev gnuplot-nox openmpi-bin libopenmpi-dev clang-format
-          python3-dev pybind11-dev python3-numpy python3-pandas python3-pytest python3-matplotlib python3-ase)
+          python3-dev pybind11-dev python3-numpy python3-pandas python3-pytest python3-matplotlib python3-ase
+          python3-venv python3-wheel)  # the pip route's test: a venv (its pip and setuptools) + wheel's bdist_wheel
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
