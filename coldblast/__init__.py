@@ -1,8 +1,10 @@
-"""Development shim: lets ``python3 -c "import coldblast"`` work from the repository root.
+"""Development shim: lets Debian's ``/usr/bin/python3 -c "import coldblast"`` work from the repository
+root without installing (elsewhere: PYTHONPATH=/path/to/coldblast/build/python).
 
 It loads the package that scripts/bootstrap.sh builds into build/python/coldblast (or
-$COLDBLAST_BUILD_DIR/python/coldblast). An installed coldblast (``cmake --install build``) does not
-need this file. Sources: python/coldblast (Python) and python/_coldblast.cpp (the extension).
+$COLDBLAST_BUILD_DIR/python/coldblast) for /usr/bin/python3. An installed coldblast (``python -m pip
+install --no-build-isolation .`` into any Python, or ``cmake --install build``) does not need this
+file. Sources: python/coldblast (Python) and python/_coldblast.cpp (the extension).
 """
 import importlib.util
 import os
@@ -22,4 +24,6 @@ try:
 except ImportError as error:
     del sys.modules[__name__]
     raise ImportError(f"{error}; build/ is made for Debian's /usr/bin/python3 with python3-numpy and "
-                      f"python3-pandas, this is {sys.executable}") from error
+                      f"python3-pandas, this is {sys.executable}: use /usr/bin/python3, or install coldblast "
+                      "into this Python (with numpy and pandas): python -m pip install --no-build-isolation . "
+                      "(docs/python.md)") from error
