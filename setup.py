@@ -61,11 +61,19 @@ class CMakeBuild(build_ext):
         cmake("--build", build, "--target", "_coldblast", *jobs)
         package = build / "python" / "coldblast"
         target.parent.mkdir(parents=True, exist_ok=True)
+        self.built_package = target.parent
         for name in (target.name, "_version.py"):
             if not (package / name).is_file():
                 sys.exit(f"coldblast: CMake built no {package / name}; the module is built for "
                          f"{sys.executable}, whose extension suffix CMake must agree with")
             shutil.copyfile(package / name, target.parent / name)
+
+    def copy_extensions_to_source(self):
+        """An editable install (pip install -e) imports python/coldblast/ itself: the extension and
+        the generated _version.py go there (both ignored by git)."""
+        super().copy_extensions_to_source()
+        self.copy_file(str(self.built_package / "_version.py"), str(ROOT / "python" / "coldblast" / "_version.py"),
+                       level=self.verbose)
 
 
 (ROOT / BUILD_BASE).mkdir(parents=True, exist_ok=True)
