@@ -1,4 +1,4 @@
-"""Ctrl-C: SIGINT to a child process running a long md.run raises KeyboardInterrupt within a second,
+"""Ctrl-C: SIGINT to a child process running a long md.run raises KeyboardInterrupt within seconds,
 writes no output file (finished blocks stay in the checkpoint), and the module stays usable."""
 import os
 import signal
@@ -21,6 +21,12 @@ CHILD = textwrap.dedent(r"""
         sys.exit(7)
     print("finished", flush=True)
 """)
+
+
+# The calls poll for Ctrl-C every 0.1 s and would otherwise run for minutes to hours, so a stop within
+# a few seconds proves the interrupt path. The bound is wall time: at load 10-14 on the 2-core
+# development VM the same stop took 1.3-4.9 s (a 1 s bound failed there), so it leaves room for load.
+LATENCY_BOUND_SECONDS = 8.0
 
 
 def interrupt_child(script, *args):
@@ -50,7 +56,7 @@ def test_sigint_interrupts_md_run(tmp_path):
     out = tmp_path / "run"
     lines, code, latency = interrupt_child(CHILD, out)
     assert "KeyboardInterrupt" in lines, lines
-    assert latency < 1.0
+    assert latency < LATENCY_BOUND_SECONDS
     assert "usable 2" in lines and code == 7
     assert not (out / "observables.csv").exists() and not (out / "summary.json").exists()
     assert not any(name.endswith(".tmp") or ".tmp" in name for _, _, files in os.walk(tmp_path) for name in files)
@@ -76,7 +82,7 @@ def test_sigint_interrupts_hydro_core():
     lines, code, latency = interrupt_child(HYDRO_CHILD)
     assert "KeyboardInterrupt" in lines, lines
     assert "finished" not in lines
-    assert latency is not None and latency < 1.0
+    assert latency is not None and latency < LATENCY_BOUND_SECONDS
     assert "usable 32" in lines and code == 7
 
 REPRODUCE_CHILD = textwrap.dedent(r"""
@@ -99,5 +105,5 @@ def test_sigint_interrupts_reproduce(tmp_path):
     lines, code, latency = interrupt_child(REPRODUCE_CHILD, out)
     assert "KeyboardInterrupt" in lines, lines
     assert "finished" not in lines and code == 7
-    assert latency is not None and latency < 1.0
+    assert latency is not None and latency < LATENCY_BOUND_SECONDS
     assert not (out / "REPORT.md").exists() and not (out / "md" / "summary.json").exists()
