@@ -21,16 +21,17 @@ struct ReproduceOptions {
 };
 
 void print_verdict(const char* name, const compare::CompareResult& result) {
-  std::printf("\nagainst %-6s: %s\n", name, compare::verdict_summary(result).c_str());
-  // The rule behind each row's word, as `compare` prints it: a row can pass beyond 2 sigma by the allowance.
-  if (result.against == compare::Reference::paper)
-    std::printf("  (exponents pass within %g sigma of MD and paper errors combined)\n", result.sigma);
-  else
-    std::printf("  (exponents pass within %g sigma + allowance %g)\n", result.sigma, result.allowance);
+  std::printf("\nagainst %-6s: %s\n", name, compare::verdict_word(result).c_str());
+  // Why each row that is not a pass is not, one line each; then the rule behind the words, as `compare` prints it.
+  for (const auto& reason : compare::verdict_reasons(result)) std::printf("  - %s\n", reason.c_str());
+  for (const auto& warning : result.warnings) std::printf("  warning: %s\n", warning.c_str());
+  std::printf("  (exponents pass within %g sigma%s, miss within that + the row's allowance; allowance: %s)\n",
+              result.sigma, result.against == compare::Reference::paper ? " of MD and paper errors combined" : "",
+              result.allowance_rule.c_str());
   for (const auto& v : result.observables)
-    std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma)  %s\n", v.name.c_str(),
-                v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error, v.deviation_sigma,
-                v.pass ? "pass" : "FAIL");
+    std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma, allowance %.3f)  %s\n",
+                v.name.c_str(), v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error,
+                v.deviation_sigma, v.allowance, compare::to_string(v.outcome).c_str());
   for (const auto& a : result.amplitudes)
     std::printf("  %-9s MD = %s  NS = %s  (%+.1f %%, %+.1f sigma, bound %.2g %%)  %s\n", a.name.c_str(),
                 common::format_measurement(a.measured, a.error).c_str(),

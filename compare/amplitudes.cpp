@@ -71,16 +71,16 @@ CoreSize md_front_radius(const RunData& run, double t) {
   return binned_front_radius(centre, density, error);
 }
 
-std::string to_string(AmplitudeOutcome outcome) {
+std::string to_string(Outcome outcome) {
   switch (outcome) {
-    case AmplitudeOutcome::pass:
+    case Outcome::pass:
       return "pass";
-    case AmplitudeOutcome::miss:
+    case Outcome::miss:
       return "miss";
-    case AmplitudeOutcome::fail:
+    case Outcome::fail:
       return "FAIL";
   }
-  throw std::logic_error("unknown AmplitudeOutcome");
+  throw std::logic_error("unknown Outcome");
 }
 
 AmplitudeVerdict judge_amplitude(AmplitudeVerdict v, double sigma) {
@@ -91,13 +91,19 @@ AmplitudeVerdict judge_amplitude(AmplitudeVerdict v, double sigma) {
   v.tolerance = sigma * combined;
   const bool finite = std::isfinite(v.measured) && std::isfinite(combined);
   if (finite && std::abs(difference) <= v.tolerance)
-    v.outcome = AmplitudeOutcome::pass;
+    v.outcome = Outcome::pass;
   else if (finite && std::abs(v.relative_difference) <= v.continuum_bound)
-    v.outcome = AmplitudeOutcome::miss;
+    v.outcome = Outcome::miss;
   else
-    v.outcome = AmplitudeOutcome::fail;
-  v.pass = v.outcome == AmplitudeOutcome::pass;
+    v.outcome = Outcome::fail;
+  v.pass = v.outcome == Outcome::pass;
   return v;
+}
+
+double core_knudsen(const ContinuumReference& continuum) {
+  const ContinuumAmplitudes& ns = continuum.amplitudes;
+  const double Kn = 1.0 / (ns.n0_over_n * ns.H_over_R * continuum.R_over_lambda_last);
+  return std::isfinite(Kn) && Kn > 0 ? Kn : NAN;
 }
 
 std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const ContinuumReference& continuum,
@@ -113,7 +119,7 @@ std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const Conti
   const double x = continuum.R_over_lambda_last;
   // The first order NS drops: Burnett, O(Kn²), in the core with Kn of the NS core (the model's own
   // estimate of its validity, free of MD noise); λ/R at the shock, which is a few λ thick.
-  const double Kn = 1.0 / (ns.n0_over_n * ns.H_over_R * x);
+  const double Kn = core_knudsen(continuum);
   const double core_bound = std::isfinite(Kn) && Kn > 0 ? Kn * Kn : 0.0;
   AmplitudeVerdict base;
   base.t = t;

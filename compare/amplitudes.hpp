@@ -12,15 +12,16 @@
 
 namespace coldblast::compare {
 
-/// The outcome of one amplitude verdict (docs/compare.md, "Amplitudes"):
-/// - pass: |MD − NS| ≤ k σ, σ = √(δ_MD² + δ_NS²), δ_NS the NS's own numerical error;
-/// - miss: beyond k σ, but |MD/NS − 1| ≤ the size of the first order the Navier–Stokes equations
-///   drop: Kn² for the core (Kn = λ n∞/(n0 H) of the NS core, Burnett order), λ/R for the shock
-///   radius (the front is a few λ thick, a region NS does not describe): a measured continuum miss;
-/// - fail: beyond that too, a wrong model or a bug.
-enum class AmplitudeOutcome { pass, miss, fail };
+/// The word of one verdict, an amplitude's or an exponent's (docs/compare.md, "Verdicts"):
+/// - pass: within k σ of the combined errors;
+/// - miss: beyond k σ, but within the stated bound of what the reference leaves out: for an
+///   amplitude |MD/NS − 1| ≤ the first order the Navier–Stokes equations drop (Kn² for the core,
+///   Kn = λ n∞/(n0 H) of the NS core, Burnett order; λ/R for the shock radius, a front a few λ
+///   thick); for an exponent |α_S − α_ref| ≤ k σ + the finite-R/λ allowance. A measured miss;
+/// - fail: beyond that too, a wrong model or a bug (or an exponent that cannot be measured).
+enum class Outcome { pass, miss, fail };
 /// "pass", "miss", "FAIL".
-std::string to_string(AmplitudeOutcome outcome);
+std::string to_string(Outcome outcome);
 
 struct AmplitudeVerdict {
   std::string name;        ///< "n0/n", "T0/Rdot^2", "R", "H/R"
@@ -34,7 +35,7 @@ struct AmplitudeVerdict {
   double relative_difference = 0;  ///< measured/reference - 1
   double tolerance = 0;            ///< k √(error² + reference_error²)
   double continuum_bound = 0;      ///< relative: Kn² (core) or λ/R (shock radius)
-  AmplitudeOutcome outcome = AmplitudeOutcome::fail;
+  Outcome outcome = Outcome::fail;
   bool pass = false;  ///< outcome == pass
 };
 
@@ -45,6 +46,11 @@ AmplitudeVerdict judge_amplitude(AmplitudeVerdict v, double sigma);
 /// The amplitude verdicts for every amplitude the run records (n0 and T0 need n0, T0 and R in
 /// blocks.csv; R needs R; H needs profiles.csv), at the run's last recorded time; k = sigma.
 std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const ContinuumReference& continuum, double sigma);
+
+/// Kn = λ n∞/(n0 H) of the continuum's core at the MD's last time (n0 in the MD's ball, H by the
+/// binned density rule in the MD's shells): the model's own estimate of its validity, free of MD
+/// noise. NaN when the continuum's amplitudes give none.
+double core_knudsen(const ContinuumReference& continuum);
 
 /// The MD's core size at time t from profiles.csv (the latest profile time <= t); NaN when the
 /// run has no profiles or the density never reaches twice its innermost bin.

@@ -6,14 +6,36 @@
 
 namespace coldblast::compare {
 
-JackknifeResult jackknife(const BlockSeries& series,
-                          const std::function<Eigen::VectorXd(const std::vector<double>&)>& estimator) {
+namespace {
+std::vector<long> used_blocks(const BlockSeries& series) {
   std::vector<long> used;
   for (std::size_t b = 0; b < series.block_count(); ++b) {
     double count = 0;
     for (double c : series.counts[b]) count += c;
     if (count > 0) used.push_back(static_cast<long>(b));
   }
+  return used;
+}
+
+std::vector<std::size_t> times_inside(const BlockSeries& series, double t_first, double t_last) {
+  std::vector<std::size_t> inside;
+  for (std::size_t k = 0; k < series.time_count(); ++k)
+    if (series.t[k] >= t_first && series.t[k] <= t_last) inside.push_back(k);
+  return inside;
+}
+}  // namespace
+
+int nonempty_blocks(const BlockSeries& series) {
+  return static_cast<int>(used_blocks(series).size());
+}
+
+int recorded_times_in(const BlockSeries& series, double t_first, double t_last) {
+  return static_cast<int>(times_inside(series, t_first, t_last).size());
+}
+
+JackknifeResult jackknife(const BlockSeries& series,
+                          const std::function<Eigen::VectorXd(const std::vector<double>&)>& estimator) {
+  const std::vector<long> used = used_blocks(series);
   if (used.size() < 2)
     throw std::invalid_argument("observable " + series.observable + ": " + std::to_string(used.size()) +
                                 " non-empty block(s); an error bar needs at least 2 (raise realizations "
@@ -58,9 +80,7 @@ std::vector<RunningExponent> running_exponents(const BlockSeries& series) {
 }
 
 PowerLawFit fit_power_law(const BlockSeries& series, double t_first, double t_last) {
-  std::vector<std::size_t> inside;
-  for (std::size_t k = 0; k < series.time_count(); ++k)
-    if (series.t[k] >= t_first && series.t[k] <= t_last) inside.push_back(k);
+  const std::vector<std::size_t> inside = times_inside(series, t_first, t_last);
   if (inside.size() < 2)
     throw std::invalid_argument("observable " + series.observable + ": the fit window [" + std::to_string(t_first) +
                                 ", " + std::to_string(t_last) + "] holds " + std::to_string(inside.size()) +

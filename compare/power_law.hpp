@@ -19,6 +19,9 @@ struct JackknifeResult {
   int blocks = 0;
 };
 
+/// The blocks holding at least one realization: the samples a jackknife leaves out one at a time.
+int nonempty_blocks(const BlockSeries& series);
+
 /// Applies `estimator` (ensemble values A(t_k) -> parameter vector) to all blocks and to every
 /// leave-one-block-out sample. Throws std::invalid_argument with fewer than 2 non-empty blocks.
 JackknifeResult jackknife(const BlockSeries& series,
@@ -41,6 +44,9 @@ struct PowerLawFit {
   double t_first = 0, t_last = 0;
   int points = 0, blocks = 0;
 };
+
+/// The recording times inside [t_first, t_last] (a window fit needs at least 2).
+int recorded_times_in(const BlockSeries& series, double t_first, double t_last);
 
 /// Fit over the recording times inside [t_first, t_last]; needs >= 2 times and >= 2 blocks,
 /// otherwise throws std::invalid_argument saying what is missing.

@@ -43,6 +43,9 @@ common::Json verdict_json(const CompareResult& result) {
                              {"points", v.window.points}}},
                            {"deviation_sigma", v.deviation_sigma},
                            {"tolerance", v.tolerance},
+                           {"allowance", v.allowance},
+                           {"allowance_origin", v.allowance_origin},
+                           {"verdict", to_string(v.outcome)},
                            {"pass", v.pass},
                            {"running", running}});
   }
@@ -61,6 +64,7 @@ common::Json verdict_json(const CompareResult& result) {
                           {"deviation_sigma", a.deviation_sigma},
                           {"relative_difference", a.relative_difference},
                           {"tolerance", a.tolerance},
+                          {"verdict", to_string(a.outcome)},
                           {"pass", a.pass}});
   common::Json hydro_model = nullptr;
   if (result.against == Reference::hydro && result.continuum) {
@@ -105,7 +109,9 @@ common::Json verdict_json(const CompareResult& result) {
           {"amplitudes", amplitudes},
           {"notes", result.notes},
           {"sigma", result.sigma},
-          {"allowance", result.allowance},
+          {"allowance", result.allowance ? common::Json(*result.allowance) : common::Json(nullptr)},
+          {"allowance_rule", result.allowance_rule},
+          {"warnings", result.warnings},
           {"until", result.until},
           {"run_dir", result.run.directory.string()},
           {"observables", observables},
@@ -140,6 +146,11 @@ void run_gnuplot(const fs::path& folder, const std::string& script_name) {
 }
 
 namespace {
+
+/// A verdict word in a Markdown table: what does not pass is bold.
+const char* markdown_word(Outcome outcome) {
+  return outcome == Outcome::pass ? "pass" : outcome == Outcome::miss ? "**miss**" : "**FAIL**";
+}
 
 std::string label(const std::string& name) {
   const theory::ObservableInfo* info = theory::find_observable(name);
@@ -250,10 +261,7 @@ std::string amplitude_markdown(const CompareResult& result) {
     std::snprintf(row, sizeof row, "| %s | %s (t = %s) | %s | %+.1f %% | %+.1f | %.2g %% | %s |\n", a.name.c_str(),
                   common::format_measurement(a.measured, a.error).c_str(), common::format_significant(a.t, 6).c_str(),
                   common::format_measurement(a.reference, a.reference_error).c_str(), 100 * a.relative_difference,
-                  a.deviation_sigma, 100 * a.continuum_bound,
-                  a.outcome == AmplitudeOutcome::pass   ? "pass"
-                  : a.outcome == AmplitudeOutcome::miss ? "**miss**"
-                                                        : "**FAIL**");
+                  a.deviation_sigma, 100 * a.continuum_bound, markdown_word(a.outcome));
     md << row;
   }
   // Kn = λ_core/H with the core's dilute mean free path λ n∞/n0: a continuum description of the
@@ -266,8 +274,7 @@ std::string amplitude_markdown(const CompareResult& result) {
   if (std::isfinite(n0) && std::isfinite(H))
     md << "\nCore Knudsen number Kn = λ n∞/(n0 H) = "
        << common::format_significant(1 / (n0 * H * c.R_over_lambda_last), 3) << " (MD), "
-       << common::format_significant(1 / (c.amplitudes.n0_over_n * c.amplitudes.H_over_R * c.R_over_lambda_last), 3)
-       << " (NS); NS's temperature core radius (T = T0/2): H_T/R = "
+       << common::format_significant(core_knudsen(c), 3) << " (NS); NS's temperature core radius (T = T0/2): H_T/R = "
        << common::format_significant(c.amplitudes.H_temperature_over_R, 3) << ".\n";
   md << density_residuals(result);
   return md.str();
@@ -328,11 +335,15 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
   md << "# coldblast comparison: " << run_label(result.run) << " against " << to_string(result.against) << "\n\n"
      << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
      << ", recorded times up to t = " << format_number(result.until) << ". Verdict: **" << verdict_word(result)
-     << "** (tolerance: " << format_number(result.sigma) << " sigma";
-  if (result.against != Reference::paper) md << " + allowance " << format_number(result.allowance);
-  md << "; errors: delete-one-block jackknife over realizations).\n\n"
-     << "| observable | alpha_T | reference | alpha_S (last two times) | window fit | deviation / sigma | verdict |\n"
-     << "|---|---|---|---|---|---|---|\n";
+     << "**; errors: delete-one-block jackknife over realizations.\n\n";
+  for (const auto& warning : result.warnings) md << "> **Warning:** " << warning << "\n\n";
+  md << "Each exponent: **pass** within " << format_number(result.sigma)
+     << " σ of the combined errors; **miss** beyond that but within it plus the row's finite-R/λ allowance; **FAIL** "
+        "beyond that too (docs/compare.md, \"Verdicts\"). Allowance: "
+     << result.allowance_rule << ".\n\n"
+     << "| observable | alpha_T | reference | alpha_S (last two times) | window fit | deviation / sigma | allowance "
+        "| verdict |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
   char buffer[512];
   for (const auto& v : result.observables) {
     // Undefined exponents (an ensemble mean <= 0 at some time, e.g. u_flow lost in noise) are named, not printed as
@@ -350,16 +361,21 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
       std::snprintf(deviation, sizeof deviation, "%+.2f", v.deviation_sigma);
     else
       std::snprintf(deviation, sizeof deviation, "-");
-    std::snprintf(buffer, sizeof buffer, "| %s | %s (%.4f) | %.4f%s | %s (t = %s) | %s (%d pts) | %s | %s |\n",
+    const std::string window =
+        v.window.points < 2 ? std::string("none") : exponent(v.window.exponent, v.window.exponent_error);
+    std::snprintf(buffer, sizeof buffer, "| %s | %s (%.4f) | %.4f%s | %s (t = %s) | %s (%d pts) | %s | %s: %s | %s |\n",
                   v.name.c_str(), v.alpha_theory_rational.c_str(), v.alpha_theory, v.alpha_reference,
                   v.alpha_reference_error > 0 ? (" ± " + format_number(v.alpha_reference_error)).c_str() : "",
                   exponent(v.alpha_measured, v.alpha_error).c_str(),
-                  common::format_significant(v.t_measured, 6).c_str(),
-                  exponent(v.window.exponent, v.window.exponent_error).c_str(), v.window.points, deviation,
-                  v.pass ? "pass" : "**fail**");
+                  common::format_significant(v.t_measured, 6).c_str(), window.c_str(), v.window.points, deviation,
+                  common::format_significant(v.allowance, 2).c_str(), v.allowance_origin.c_str(),
+                  markdown_word(v.outcome));
     md << buffer;
   }
   for (const auto& note : result.notes) md << "\n- " << note << "\n";
+  const std::vector<std::string> reasons = verdict_reasons(result);
+  if (!reasons.empty()) md << "\nNot a pass:\n\n";
+  for (const auto& reason : reasons) md << "- " << reason << "\n";
   if (result.against == Reference::hydro && result.continuum) md << amplitude_markdown(result);
   if (figures) md << "\n![Observables with running exponents](figures/observables.png)\n";
   if (fit) {

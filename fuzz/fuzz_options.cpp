@@ -104,7 +104,7 @@ void compare_flags(const std::vector<std::string>& v) {
     for (std::string& item : common::split_fields(observables))
       if (!item.empty()) c.observables.push_back(item);
     c.validate();
-    fuzz::require(c.effective_allowance() >= 0 && c.effective_allowance() <= 1, "effective allowance");
+    fuzz::require(!c.allowance || (*c.allowance >= 0 && *c.allowance <= 1), "allowance within [0, 1]");
   });
 }
 
