@@ -35,7 +35,7 @@ t_max = 200.0
 realizations = 32
 seed = 1
 block_size = 16
-observables = ["R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"]
+observables = ["R_imp", "V_imp", "C_imp", "u_imp", "u_flow", "n0", "T0", "R"]
 box_margin = 3.0     # small blasts run ahead of Eq. (1) early on (docs/md-output.md)
 
 [impurities]
