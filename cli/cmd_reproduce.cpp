@@ -1,6 +1,7 @@
 // coldblast reproduce: A_2 and A_3, the Navier–Stokes core run, an MD ensemble of the paper's 2D
 // scene, the kinetic tracer of the impurity, and comparisons against theory, the paper's Table 1,
 // hydro and (the tracer) the MD, with reports.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -28,10 +29,17 @@ void print_verdict(const char* name, const compare::CompareResult& result) {
   std::printf("  (exponents pass within %g sigma%s, miss within that + the row's allowance; allowance: %s)\n",
               result.sigma, result.against == compare::Reference::paper ? " of MD and paper errors combined" : "",
               result.allowance_rule.c_str());
-  for (const auto& v : result.observables)
-    std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %8.4f ± %.4f  (%+.1f sigma, allowance %.3f)  %s\n",
-                v.name.c_str(), v.alpha_theory_rational.c_str(), v.alpha_reference, v.alpha_measured, v.alpha_error,
-                v.deviation_sigma, v.allowance, compare::to_string(v.outcome).c_str());
+  for (const auto& v : result.observables) {
+    char measured[80];  // an undefined exponent (a mean <= 0) is named, not printed as nan
+    if (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error))
+      std::snprintf(measured, sizeof measured, "%8.4f ± %.4f  (%+.1f sigma", v.alpha_measured, v.alpha_error,
+                    v.deviation_sigma);
+    else
+      std::snprintf(measured, sizeof measured, "undefined  (-");
+    std::printf("  %-6s alpha_T = %-9s ref = %8.4f  alpha_S = %s, allowance %.3f)  %s\n", v.name.c_str(),
+                v.alpha_theory_rational.c_str(), v.alpha_reference, measured, v.allowance,
+                compare::to_string(v.outcome).c_str());
+  }
   for (const auto& a : result.amplitudes)
     std::printf("  %-9s MD = %s  NS = %s  (%+.1f %%, %+.1f sigma, bound %.2g %%)  %s\n", a.name.c_str(),
                 common::format_measurement(a.measured, a.error).c_str(),
