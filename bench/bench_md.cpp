@@ -10,11 +10,16 @@
 #include <memory>
 
 #include "md/engine.hpp"
-#include "md/ensemble.hpp"
 #include "md/initial_state.hpp"
-#include "md/scenes.hpp"
+#include "md/realization.hpp"
+#include "run/ensemble.hpp"
+#include "run/scene_file.hpp"
 
 using namespace coldblast::md;
+using coldblast::run::BlastResult;
+using coldblast::run::default_scene_toml;
+using coldblast::run::parse_scene;
+using coldblast::run::run_blast;
 
 namespace {
 // The paper's 2D scene (scenes/paper-2d.toml) with hydro's A_2(phi = 0.118) = 0.2238 given
@@ -44,7 +49,7 @@ void blast(benchmark::State& state, const std::string& queue, double t_max, doub
 }
 
 // Set-up share of a paper-scene realization: RSA placement, impurity kick and engine construction
-// (cell list, calendar), without the event loop (same steps as md/ensemble.cpp's run_realization).
+// (cell list, calendar), without the event loop (same steps as md/realization.cpp's run_realization).
 void paper_2d_setup(benchmark::State& state) {
   const ResolvedScene scene = resolve_scene(paper_2d(4000.0, "calendar", 1.6));
   long long index = 0;

@@ -16,7 +16,7 @@
 #include "kinetic/batch.hpp"
 #include "kinetic/tracer.hpp"
 #include "kinetic/trajectory.hpp"
-#include "md/scenes.hpp"
+#include "run/scene_file.hpp"
 
 namespace {
 
@@ -28,7 +28,7 @@ kinetic::TracerConfig paper_scene(int d, double t_max) {
   std::ostringstream text;
   text << in.rdbuf();
   kinetic::TracerConfig c;
-  c.scene = md::parse_scene(text.str(), {"t_max=" + std::to_string(t_max)});
+  c.scene = coldblast::run::parse_scene(text.str(), {"t_max=" + std::to_string(t_max)});
   c.transport = "enskog";
   return c;
 }

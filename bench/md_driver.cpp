@@ -7,13 +7,13 @@
 //   md_driver blast D REALIZATION [T_MAX] [CELL_WIDTH]
 //       one realization of the paper scene's physics (D = 2: n = 0.15, t_max 4000 by default,
 //       box_margin 1.6; D = 3: n = 0.225, t_max 1000, box_margin 2), calendar queue, the same
-//       steps as md/ensemble.cpp's run_realization without observers; CELL_WIDTH 0 = automatic
+//       steps as md/realization.cpp's run_realization without observers; CELL_WIDTH 0 = automatic
 //   md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS]
 //       3D hard spheres in a periodic box from a lattice at T = 1 (defaults: realization 1,
 //       10^5 particles, 5 x 10^5 melt collisions, 10^6 timed collisions)
 //   md_driver setup REALIZATION KEY=VALUE...
 //       the set-up alone of `md run --set KEY=VALUE...` (the embedded scene): the steps of
-//       md/ensemble.cpp's blast_initial_state, RSA and the impurities' kick timed apart, with
+//       md/realization.cpp's blast_initial_state, RSA and the impurities' kick timed apart, with
 //       the voxel phases' counts and a checksum of the initial positions and velocities
 //
 // Output (one line): counts, an FNV-1a checksum of all final positions and velocities, the set-up
@@ -27,12 +27,15 @@
 #include <string>
 #include <vector>
 
+#include "md/blast_config.hpp"
 #include "md/engine.hpp"
-#include "md/ensemble.hpp"
 #include "md/initial_state.hpp"
-#include "md/scenes.hpp"
+#include "md/realization.hpp"
+#include "run/scene_file.hpp"
 
 using namespace coldblast::md;
+using coldblast::run::default_scene_toml;
+using coldblast::run::parse_scene;
 
 namespace {
 double cpu_seconds() {

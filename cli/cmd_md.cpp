@@ -1,5 +1,5 @@
 // coldblast md: event-driven MD of the cold-gas blast (paper Sec. V). `md run` maps flags onto a
-// BlastConfig and calls md::run_blast; `md merge` combines shard directories exactly; `md
+// BlastConfig and calls run::run_blast; `md merge` combines shard directories exactly; `md
 // equilibrium` runs periodic hard spheres (md::run_equilibrium). Output formats: docs/md-output.md.
 #include <chrono>
 #include <cmath>
@@ -15,13 +15,13 @@
 #include "common/interrupt.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
-#include "compare/md_run.hpp"
-#include "md/ensemble.hpp"
 #include "md/equilibrium.hpp"
-#include "md/scenes.hpp"
-#include "md/states.hpp"
+#include "run/ensemble.hpp"
+#include "run/impurity_states.hpp"
+#include "run/md_run.hpp"
+#include "run/tracer_files.hpp"
 #if COLDBLAST_HAVE_MPI
-#include "md/mpi_ensemble.hpp"
+#include "run/mpi_ensemble.hpp"
 #endif
 
 namespace coldblast::cli {
@@ -107,8 +107,8 @@ class Progress {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
 };
 
-void print_summary(const md::BlastResult& result, const std::string& out, Format format) {
-  common::Json summary = md::blast_summary(result);
+void print_summary(const run::BlastResult& result, const std::string& out, Format format) {
+  common::Json summary = run::blast_summary(result);
   summary.erase("scene_toml");
   summary["out"] = out;
   if (format == Format::json) {
@@ -125,8 +125,8 @@ void print_summary(const md::BlastResult& result, const std::string& out, Format
 
 }  // namespace
 
-void print_final_estimates(const md::BlastResult& ensemble) {
-  const auto rows = md::estimate_observables(ensemble);
+void print_final_estimates(const run::BlastResult& ensemble) {
+  const auto rows = run::estimate_observables(ensemble);
   const double t_last = rows.empty() ? 0.0 : rows.back().t;
   for (const auto& row : rows) {
     if (row.t != t_last) continue;
@@ -142,12 +142,12 @@ void print_final_estimates(const md::BlastResult& ensemble) {
 namespace {
 
 // The ensemble (over MPI ranks when built with MPI); a SIGINT/SIGTERM stop says how to resume.
-md::BlastResult run_ensemble(const md::BlastConfig& config, const md::RunOptions& options, const std::string& out) {
+run::BlastResult run_ensemble(const md::BlastConfig& config, const run::RunOptions& options, const std::string& out) {
   try {
 #if COLDBLAST_HAVE_MPI
-    return md::run_blast_mpi(config, options);
+    return run::run_blast_mpi(config, options);
 #else
-    return md::run_blast(config, options);
+    return run::run_blast(config, options);
 #endif
   } catch (const common::Interrupted&) {
     std::cerr << "\ncoldblast: the finished blocks are saved in "
@@ -158,16 +158,16 @@ md::BlastResult run_ensemble(const md::BlastConfig& config, const md::RunOptions
 }
 
 void run_md(const MdRunOptions& o) {
-  compare::MdRunRequest request;
+  run::MdRunRequest request;
   request.scene_file = o.scene_file;
   request.overrides = o.set;
   if (o.realizations_option->count() > 0) request.realizations = o.realizations;
   if (o.seed_option->count() > 0) request.seed = o.seed;
   request.threads = o.threads;
-  const auto [shard_index, shard_count] = md::parse_shard(o.shard);
-  compare::MdRunPlan plan = compare::plan_md_run(request);
+  const auto [shard_index, shard_count] = run::parse_shard(o.shard);
+  run::MdRunPlan plan = run::plan_md_run(request);
   const md::BlastConfig& config = plan.config;
-  md::RunOptions& options = plan.options;
+  run::RunOptions& options = plan.options;
   options.shard_index = shard_index;
   options.shard_count = shard_count;
   Progress progress(config.t_max);
@@ -187,37 +187,37 @@ void run_md(const MdRunOptions& o) {
   options.checkpoint = std::filesystem::path(out) / "checkpoint";
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks; rank 0 alone reports progress and writes the outputs.
-  if (md::MpiSession::rank() != 0) {
+  if (run::MpiSession::rank() != 0) {
     options.progress = nullptr;
     options.realization_time = nullptr;
   }
-  md::BlastResult result = run_ensemble(config, options, out);
-  if (md::MpiSession::rank() != 0) return;
+  run::BlastResult result = run_ensemble(config, options, out);
+  if (run::MpiSession::rank() != 0) return;
 #else
-  md::BlastResult result = run_ensemble(config, options, out);
+  run::BlastResult result = run_ensemble(config, options, out);
 #endif
-  md::write_blast_outputs(result, out);
+  run::write_blast_outputs(result, out);
   std::error_code ignored;
   std::filesystem::remove_all(options.checkpoint, ignored);
   print_summary(result, out, o.format);
 }
 
-/// md states: the impurities' state at one time in every realization (md/states.hpp).
+/// md states: the impurities' state at one time in every realization (run/impurity_states.hpp).
 void states_md(const MdStatesOptions& o) {
-  compare::MdRunRequest request;
+  run::MdRunRequest request;
   request.scene_file = o.run.scene_file;
   request.overrides = o.run.set;
   if (o.run.realizations_option->count() > 0) request.realizations = o.run.realizations;
   if (o.run.seed_option->count() > 0) request.seed = o.run.seed;
   request.threads = o.run.threads;
-  const compare::MdRunPlan plan = compare::plan_md_run(request);
+  const run::MdRunPlan plan = run::plan_md_run(request);
   common::require_output_folder(o.out, "--out");
-  const md::ResolvedScene scene = md::resolve_scene(plan.config, plan.options.amplitude);
+  const md::ResolvedScene scene = run::resolve_blast_scene(plan.config);
   Progress progress(o.time, "md states");
-  const auto states = md::impurity_states(scene, o.time, plan.config.realizations, o.run.threads,
-                                          [&progress](long long done, long long total) { progress(done, total); });
+  const auto states = run::impurity_states(scene, o.time, plan.config.realizations, o.run.threads,
+                                           [&progress](long long done, long long total) { progress(done, total); });
   const std::filesystem::path file = std::filesystem::path(o.out) / "impurity_states.csv";
-  common::write_file_atomic(file, md::impurity_states_csv(states, plan.config, o.time));
+  common::write_file_atomic(file, run::impurity_states_csv(states, plan.config, o.time));
   std::printf("md states: %zu impurities of %lld realizations of scene %s at t = %s; written to %s\n", states.size(),
               plan.config.realizations, plan.config.name.c_str(), common::format_number(o.time).c_str(),
               file.string().c_str());
@@ -226,15 +226,15 @@ void states_md(const MdStatesOptions& o) {
 void merge_md(const MdMergeOptions& o) {
   common::require_output_folder(o.out, "--out");
   std::vector<std::filesystem::path> inputs(o.inputs.begin(), o.inputs.end());
-  if (kinetic::is_tracer_run(inputs.front())) {  // tracer shards: also moments.csv and the tracer's keys
-    const kinetic::TracerResult result = kinetic::merge_tracer_outputs(inputs);
-    if (const std::string note = md::partial_merge_note(result.ensemble); !note.empty()) std::cerr << note << '\n';
+  if (run::is_tracer_run(inputs.front())) {  // tracer shards: also moments.csv and the tracer's keys
+    const run::TracerResult result = run::merge_tracer_outputs(inputs);
+    if (const std::string note = run::partial_merge_note(result.ensemble); !note.empty()) std::cerr << note << '\n';
     write_tracer_run(result, o.out, o.format);
     return;
   }
-  const md::BlastResult result = md::merge_blast_outputs(inputs);
-  if (const std::string note = md::partial_merge_note(result); !note.empty()) std::cerr << note << '\n';
-  md::write_blast_outputs(result, o.out);
+  const run::BlastResult result = run::merge_blast_outputs(inputs);
+  if (const std::string note = run::partial_merge_note(result); !note.empty()) std::cerr << note << '\n';
+  run::write_blast_outputs(result, o.out);
   print_summary(result, o.out, o.format);
 }
 

@@ -1,6 +1,6 @@
 // coldblast tracer: Monte Carlo of the impurity's Lorentz–Boltzmann equation (paper Eq. (36)
 // [LB-full]) in a Navier–Stokes, TvNS or equilibrium background. Maps flags onto a
-// kinetic::TracerConfig, calls kinetic::run_tracer and writes the `md run` run directory
+// kinetic::TracerConfig, calls run::run_tracer and writes the `md run` run directory
 // (docs/kinetic.md), over MPI ranks under mpirun (MPI build). Shards are combined with `coldblast md merge`.
 #include <cmath>
 #include <cstdio>
@@ -9,11 +9,14 @@
 #include "common/input.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
-#include "kinetic/tracer.hpp"
-#include "md/scenes.hpp"
+#include "kinetic/tracer_config.hpp"
+#include "run/ensemble.hpp"
+#include "run/scene_file.hpp"
+#include "run/tracer_files.hpp"
+#include "run/tracer_run.hpp"
 #if COLDBLAST_HAVE_MPI
-#include "kinetic/mpi_tracer.hpp"
-#include "md/mpi_ensemble.hpp"
+#include "run/mpi_ensemble.hpp"
+#include "run/mpi_tracer.hpp"
 #endif
 
 namespace coldblast::cli {
@@ -34,15 +37,16 @@ struct TracerOptions {
 
 void run(TracerOptions& o) {
   common::require_output_folder(o.out, "--out");
-  std::vector<std::string> overrides = o.set;
-  if (o.seed_option->count() > 0) md::add_seed_override(overrides, o.seed);
-  const std::string text = o.scene_file.empty() ? md::default_scene_toml()
-                                                : common::read_text(o.scene_file, "SCENE", common::text_size_limit);
+  run::SceneRequest scene;
+  scene.file = o.scene_file;
+  scene.overrides = o.set;
+  if (o.seed_option->count() > 0) scene.seed = o.seed;
+  scene.md_snapshots = false;  // the tracer records no particles
   kinetic::TracerConfig config = o.config;
-  config.scene = kinetic::parse_tracer_scene(text, overrides, o.scene_file.empty() ? "default scene" : o.scene_file);
+  config.scene = run::load_scene(scene);
   config.phi = o.phi;
-  std::tie(config.shard_index, config.shard_count) = md::parse_shard(o.shard);
-  kinetic::TracerProgress progress;
+  std::tie(config.shard_index, config.shard_count) = run::parse_shard(o.shard);
+  run::TracerProgress progress;
   ProgressPacer pacer;
   progress.background = [&pacer](double R_over_lambda) {
     if (!pacer.due_at(R_over_lambda)) return;
@@ -54,20 +58,20 @@ void run(TracerOptions& o) {
   };
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks (md's launcher); rank 0 alone reports and writes.
-  if (md::MpiSession::rank() != 0) progress = {};
-  const kinetic::TracerResult result = kinetic::run_tracer_mpi(config, progress);
-  if (md::MpiSession::rank() != 0) return;
+  if (run::MpiSession::rank() != 0) progress = {};
+  const run::TracerResult result = run::run_tracer_mpi(config, progress);
+  if (run::MpiSession::rank() != 0) return;
 #else
-  const kinetic::TracerResult result = kinetic::run_tracer(config, progress);
+  const run::TracerResult result = run::run_tracer(config, progress);
 #endif
   write_tracer_run(result, o.out, o.format);
 }
 
 }  // namespace
 
-void write_tracer_run(const kinetic::TracerResult& result, const std::string& out, Format format) {
-  kinetic::write_tracer_outputs(result, out);
-  common::Json summary = kinetic::tracer_summary(result);
+void write_tracer_run(const run::TracerResult& result, const std::string& out, Format format) {
+  run::write_tracer_outputs(result, out);
+  common::Json summary = run::tracer_summary(result);
   summary.erase("scene_toml");
   summary["out"] = out;
   if (format == Format::json) {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "common/output.hpp"
-#include "kinetic/tracer.hpp"
-#include "md/run_files.hpp"
+#include "run/run_files.hpp"
+#include "run/tracer_run.hpp"
 
 namespace coldblast::cli {
 
@@ -71,10 +71,10 @@ void print_json(const common::Json& document);
 
 /// Prints the last recorded time's estimates of an ensemble (md run, md merge, tracer): one line
 /// per observable, "mean ± error", or "mean (no error: one realization)" when there is none.
-void print_final_estimates(const md::BlastResult& ensemble);
+void print_final_estimates(const run::BlastResult& ensemble);
 
 /// Writes a tracer run directory and prints its summary (`coldblast tracer`, and `md merge` of
 /// tracer shards); defined in cmd_tracer.cpp.
-void write_tracer_run(const kinetic::TracerResult& result, const std::string& out, Format format);
+void write_tracer_run(const run::TracerResult& result, const std::string& out, Format format);
 
 }  // namespace coldblast::cli

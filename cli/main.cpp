@@ -18,7 +18,7 @@
 #include "coldblast/build_info.hpp"
 #include "common/interrupt.hpp"
 #if COLDBLAST_HAVE_MPI
-#include "md/mpi_ensemble.hpp"
+#include "run/mpi_ensemble.hpp"
 #endif
 
 namespace coldblast::cli {
@@ -75,8 +75,8 @@ void accept_integer_notation(CLI::App& app) {
 int run(int argc, char** argv) {
   using namespace coldblast;
 #if COLDBLAST_HAVE_MPI
-  md::MpiSession mpi(argc, argv);  // under mpirun/srun only; an error on any rank ends all ranks
-  const auto failure = [](int code) { return md::MpiSession::end_all_ranks(code); };
+  run::MpiSession mpi(argc, argv);  // under mpirun/srun only; an error on any rank ends all ranks
+  const auto failure = [](int code) { return run::MpiSession::end_all_ranks(code); };
 #else
   const auto failure = [](int code) { return code; };
 #endif

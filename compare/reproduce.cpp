@@ -15,9 +15,11 @@
 #include "compare/run_data.hpp"
 #include "hydro/navier_stokes.hpp"
 #include "hydro/tvns.hpp"
-#include "kinetic/tracer.hpp"
-#include "md/ensemble.hpp"
-#include "md/scenes.hpp"
+#include "md/blast_config.hpp"
+#include "run/ensemble.hpp"
+#include "run/scene_file.hpp"
+#include "run/tracer_files.hpp"
+#include "run/tracer_run.hpp"
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
 
@@ -57,7 +59,7 @@ namespace {
 /// blocks) that the run's summary.json "scene" object does not share, as "key is X, the paper
 /// scene's Y"; empty when it is the paper scene.
 std::string paper_scene_difference(const common::Json& scene) {
-  const md::BlastConfig paper = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
+  const md::BlastConfig paper = run::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
   const std::pair<const char*, double> keys[] = {{"/d", paper.d},
                                                  {"/n", paper.n},
                                                  {"/a", paper.a},
@@ -77,7 +79,7 @@ std::string paper_scene_difference(const common::Json& scene) {
     return name + " is " + (present ? scene.at(key).dump() : std::string("missing")) + ", the paper scene's " +
            common::format_number(value);
   }
-  // The no-recollision experiment is not hard-sphere dynamics (md/scenes.hpp): not the paper's MD.
+  // The no-recollision experiment is not hard-sphere dynamics (md/blast_config.hpp): not the paper's MD.
   const common::Json::json_pointer recollide("/impurities/recollide");
   if (scene.is_object() && scene.contains(recollide) && scene.at(recollide) != true)
     return "impurities.recollide is " + scene.at(recollide).dump() + ", the paper scene's true";
@@ -330,14 +332,13 @@ fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const Rep
   scene.realizations =
       config.realizations > 0 ? config.realizations : (config.scale == ReproduceScale::quick ? 384 : 30000);
   scene.block_size = static_cast<int>(std::max<long long>(1, scene.realizations / 64));
-  md::RunOptions options;
-  options.amplitude = hydro::md_amplitude;
+  run::RunOptions options;
   options.threads = worker_threads(config);
   options.progress = count_lines(progress, "md", "realizations", 20);
-  const md::BlastResult blast = md::run_blast(scene, options);
+  const run::BlastResult blast = run::run_blast(scene, options);
   const fs::path md_dir = config.out / "md";
-  md::write_blast_outputs(blast, md_dir);
-  r.md = md::blast_summary(blast);
+  run::write_blast_outputs(blast, md_dir);
+  r.md = run::blast_summary(blast);
   return md_dir;
 }
 
@@ -346,7 +347,10 @@ fs::path md_step(const ReproduceConfig& config, md::BlastConfig scene, const Rep
 /// step 3), the MD's kick, into out/tracer. r.tracer is its summary. Returns the run's folder.
 fs::path tracer_step(const ReproduceConfig& config, const ReproduceProgress& progress, ReproduceResult& r) {
   kinetic::TracerConfig tracer;
-  tracer.scene = kinetic::parse_tracer_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
+  run::SceneRequest scene;
+  scene.text = paper_scene_toml;
+  scene.md_snapshots = false;  // the tracer records no particles
+  tracer.scene = run::load_scene(scene);
   tracer.scene.seed = static_cast<std::uint64_t>(config.seed);
   tracer.background = "ns";
   tracer.transport = "enskog";
@@ -355,12 +359,12 @@ fs::path tracer_step(const ReproduceConfig& config, const ReproduceProgress& pro
   tracer.threads = worker_threads(config);
   say(progress, "step 4/6: the impurity from kinetic theory (paper Eq. (36)): " + std::to_string(tracer.trajectories) +
                     " tracer trajectories in the dense Navier–Stokes background");
-  kinetic::TracerProgress tracer_progress;
+  run::TracerProgress tracer_progress;
   tracer_progress.blocks = count_lines(progress, "tracer", "blocks", 10);
-  const kinetic::TracerResult result = kinetic::run_tracer(tracer, tracer_progress);
+  const run::TracerResult result = run::run_tracer(tracer, tracer_progress);
   const fs::path tracer_dir = config.out / "tracer";
-  kinetic::write_tracer_outputs(result, tracer_dir);
-  r.tracer = kinetic::tracer_summary(result);
+  run::write_tracer_outputs(result, tracer_dir);
+  r.tracer = run::tracer_summary(result);
   r.tracer.erase("scene_toml");
   return tracer_dir;
 }
@@ -373,7 +377,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   fs::create_directories(config.out);
 
   say(progress, "step 1/6: exact TvNS amplitudes A_2, A_3 and A_2 at the MD's packing fraction");
-  const md::BlastConfig scene = md::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
+  const md::BlastConfig scene = run::parse_scene(paper_scene_toml, {}, "scenes/paper-2d.toml");
   tvns_step(config, scene, r);
   const fs::path md_dir = md_step(config, scene, progress, r);
 

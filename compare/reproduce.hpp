@@ -39,7 +39,7 @@ struct ReproduceResult {
   common::Json hydro;                                 ///< final NS exponents beside theory, and "model"
   common::Json md;                                    ///< the MD summary.json
   CompareResult against_theory, against_paper, against_hydro;
-  common::Json tracer;         ///< the tracer's summary.json (kinetic::tracer_summary) without its scene text
+  common::Json tracer;         ///< the tracer's summary.json (run::tracer_summary) without its scene text
   CompareResult tracer_vs_md;  ///< the tracer run against theory, with tracer_md: its amplitudes against the MD's
   std::filesystem::path out;
 };

@@ -46,7 +46,7 @@ struct RunData {
 };
 
 /// Whether the run was written by `coldblast tracer` (summary.json's "engine" starts with "tracer",
-/// the key kinetic/tracer.cpp writes; MD runs have no "engine").
+/// the key run/tracer_files.cpp writes; MD runs have no "engine").
 bool is_tracer_run(const RunData& run);
 
 /// What made the run, for headings and legends: "tracer" (the kinetic Monte Carlo of Eq. (36)) or "MD".

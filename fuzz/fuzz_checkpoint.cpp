@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "fuzz/fuzz_check.hpp"
-#include "md/checkpoint.hpp"
-#include "md/scenes.hpp"
+#include "run/checkpoint.hpp"
+#include "run/scene_file.hpp"
 
 using namespace coldblast;
 namespace fs = std::filesystem;
@@ -32,8 +32,8 @@ std::vector<std::string> parts(const std::string& text) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   // The scene of the seeds in fuzz/corpus/checkpoint (small blocks keep the inputs short).
-  static const md::ResolvedScene scene = md::resolve_scene(md::parse_scene(
-      md::default_scene_toml(), {"realizations=4", "block_size=1", "observables=[\"R_imp\"]", "t_max=8", "A_d=0.35"}));
+  static const md::ResolvedScene scene = md::resolve_scene(run::parse_scene(
+      run::default_scene_toml(), {"realizations=4", "block_size=1", "observables=[\"R_imp\"]", "t_max=8", "A_d=0.35"}));
   static const fs::path folder = fs::temp_directory_path() / ("coldblast_fuzz_checkpoint." + std::to_string(getpid()));
   const std::vector<std::string> files = parts(std::string(reinterpret_cast<const char*>(data), size));
   fs::remove_all(folder);
@@ -42,11 +42,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t k = 1; k < files.size() && k < 6; ++k)
     std::ofstream(folder / ("block_" + std::to_string(k - 1) + ".txt"), std::ios::binary) << files[k];
   fuzz::expect_clean([&] {
-    const md::Checkpoint checkpoint = md::load_checkpoint(folder, scene);
+    const run::Checkpoint checkpoint = run::load_checkpoint(folder, scene);
     for (const auto& [block, sums] : checkpoint.blocks) {
-      const std::string text = md::checkpoint_block_text(block, sums);
-      const md::BlockSums again = md::parse_checkpoint_block(text, block, sums.sum.size(), sums.count, "round trip");
-      fuzz::require(md::checkpoint_block_text(block, again) == text, "block text does not round-trip");
+      const std::string text = run::checkpoint_block_text(block, sums);
+      const md::BlockSums again = run::parse_checkpoint_block(text, block, sums.sum.size(), sums.count, "round trip");
+      fuzz::require(run::checkpoint_block_text(block, again) == text, "block text does not round-trip");
       for (std::size_t e = 0; e < sums.sum.size(); ++e) {
         fuzz::require_finite(sums.sum[e], "a checkpoint sum");
         fuzz::require_finite(sums.sum_squares[e], "a checkpoint sum of squares");
@@ -56,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The block parser alone, with the text as one block of the default scene's layout.
   if (files.size() > 1)
     fuzz::expect_clean([&] {
-      const md::BlockSums s = md::parse_checkpoint_block(files[1], 0, 13, 1, "fuzz");
+      const md::BlockSums s = run::parse_checkpoint_block(files[1], 0, 13, 1, "fuzz");
       fuzz::require(s.sum.size() == 13 && s.count == 1, "parse_checkpoint_block ignored the expected shape");
     });
   return 0;

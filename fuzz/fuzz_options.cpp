@@ -1,7 +1,8 @@
 // Fuzz target: the option parsers of the command line. The first byte picks the parser, the rest
 // is the text:
-//   0-4  (4: any byte value not listed) `--shard i/n` (md::parse_shard), number and count fields (common::parse_finite,
-//        parse_count, parse_number_or_nan), `--set key=value` scene overrides (md::parse_scene with
+//   0-4  (4: any byte value not listed) `--shard i/n` (run::parse_shard), number and count fields
+//   (common::parse_finite,
+//        parse_count, parse_number_or_nan), `--set key=value` scene overrides (run::parse_scene with
 //        overrides on the default scene, resolved as md run does);
 //   5    `tvns --at` (hydro::parse_profile_points);
 //   6    `theory --d-range` (theory::parse_dimension_range);
@@ -19,16 +20,16 @@
 #include "fuzz/fuzz_check.hpp"
 #include "hydro/options.hpp"
 #include "hydro/tvns.hpp"
-#include "kinetic/tracer.hpp"
-#include "md/ensemble.hpp"
+#include "kinetic/tracer_config.hpp"
 #include "md/equilibrium.hpp"
-#include "md/scenes.hpp"
+#include "run/ensemble.hpp"
+#include "run/scene_file.hpp"
 #include "theory/exponents.hpp"
 
 using namespace coldblast;
 
 namespace {
-// A scene with A_d = 0 needs an amplitude policy (md/scenes.hpp); the ideal-gas value keeps the
+// A scene with A_d = 0 needs an amplitude policy (md/blast_config.hpp); the ideal-gas value keeps the
 // fuzzers free of hydro's solver.
 theory::AmplitudeChoice fuzz_amplitude(int d, double) {
   return {theory::ideal_gas_amplitude(d), "ideal gas"};
@@ -129,7 +130,7 @@ void tracer_flags(const std::vector<std::string>& v) {
     c.phi = phi;
   }
   fuzz::expect_clean([&] {
-    c.scene = md::parse_scene(md::default_scene_toml(), {}, "default scene");
+    c.scene = run::parse_scene(run::default_scene_toml(), {}, "default scene");
     c.validate();
     fuzz::require_finite(c.resolved_start_time(), "resolved start time");
   });
@@ -155,7 +156,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   switch (data[0] % 13) {
     case 0:
       fuzz::expect_clean([&] {
-        const auto [i, n] = md::parse_shard(text);
+        const auto [i, n] = run::parse_shard(text);
         fuzz::require(n >= 1 && i >= 0 && i < n, "parse_shard accepted " + text);
       });
       break;
@@ -209,7 +210,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const std::vector<std::string> overrides = lines_of(text, 8);  // one per line, as repeated --set
       fuzz::expect_clean([&] {
         const md::ResolvedScene scene =
-            md::resolve_scene(md::parse_scene(md::default_scene_toml(), overrides, "default scene"), fuzz_amplitude);
+            md::resolve_scene(run::parse_scene(run::default_scene_toml(), overrides, "default scene"), fuzz_amplitude);
         fuzz::require_finite(scene.region_radius, "region_radius");
         fuzz::require_finite(scene.phi, "phi");
       });

@@ -1,5 +1,5 @@
 // Fuzz target: the run-directory readers of `coldblast compare` (compare::read_run and the
-// exponent analysis on top) and `md merge` (md::merge_blast_outputs). The input is split at lines
+// exponent analysis on top) and `md merge` (run::merge_blast_outputs). The input is split at lines
 // "@@" into summary.json, blocks.csv, block_totals.csv and accumulators.csv of one run folder.
 // What reads must give a finite merged summary and finite block sums.
 #include <unistd.h>
@@ -11,7 +11,7 @@
 
 #include "compare/run_data.hpp"
 #include "fuzz/fuzz_check.hpp"
-#include "md/ensemble.hpp"
+#include "run/run_files.hpp"
 
 using namespace coldblast;
 namespace fs = std::filesystem;
@@ -39,10 +39,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   });
   fuzz::expect_clean([&] {
-    const md::BlastResult merged = md::merge_blast_outputs({folder});
+    const run::BlastResult merged = run::merge_blast_outputs({folder});
     for (const auto& [block, sums] : merged.blocks)
       for (std::size_t e = 0; e < sums.sum.size(); ++e) fuzz::require(!std::isinf(sums.sum[e]), "an infinite sum");
-    const std::string summary = md::blast_summary(merged).dump(2);
+    const std::string summary = run::blast_summary(merged).dump(2);
     fuzz::require(!summary.empty(), "empty summary");
   });
   return 0;

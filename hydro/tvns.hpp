@@ -139,10 +139,10 @@ TvnsSolution solve_tvns(const TvnsConfig& config);
 TvnsSolution solve_tvns_for_md(int d, double phi);
 
 /// The A_d policy of the MD box, the project's one: a scene with A_d = 0 ("not given") is sized
-/// with the hard-particle amplitude A_d(phi) of solve_tvns_for_md. md cannot include hydro, so
-/// `md run`, `reproduce`, the Python module (through compare::plan_md_run) and md::run_blast's other
-/// callers inject this function as md::RunOptions::amplitude; the tracer calls it directly. A scene
-/// therefore gets the same box, and the same trajectories, whichever way it is run.
+/// with the hard-particle amplitude A_d(phi) of solve_tvns_for_md. md cannot include hydro, so run/
+/// (run::resolve_blast_scene, under `md run`, `reproduce`, `md states` and the Python module)
+/// injects this function into md::resolve_scene; the tracer calls it directly. A scene therefore
+/// gets the same box, and the same trajectories, whichever way it is run.
 theory::AmplitudeChoice md_amplitude(int d, double phi);
 
 /// Which branch applies for an ideal gas with this d and gamma.

@@ -2,7 +2,7 @@
 // Host-gas backgrounds of the impurity's Lorentz–Boltzmann equation (paper Eq. (36) [LB-full]):
 // the local Maxwellian F(r, w, t) is fixed by n(r,t), the radial flow u(r,t) and T(r,t). A
 // background also gives, for each time window, upper bounds of n chi and n chi (|u| + c̄(T)) over
-// all space; they make the null-collision majorant of kinetic/tracer.hpp (docs/kinetic.md).
+// all space; they make the null-collision majorant of kinetic/tracer_drivers.hpp (docs/kinetic.md).
 // Grids (Navier–Stokes, TvNS) are stored on their self-similar coordinate x = r/s(t) and
 // interpolated bilinearly (x, and ln t between stored frames).
 #include <cstddef>

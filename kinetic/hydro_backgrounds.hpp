@@ -7,7 +7,7 @@
 #include <string>
 
 #include "kinetic/background.hpp"
-#include "md/scenes.hpp"
+#include "md/blast_config.hpp"
 
 namespace coldblast::kinetic {
 

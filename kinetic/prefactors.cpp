@@ -2,17 +2,12 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 
-#include "common/output.hpp"
-#include "common/validate.hpp"
 #include "md/observers.hpp"
 #include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::kinetic {
-
-using common::format_number;
 
 namespace {
 
@@ -57,8 +52,7 @@ std::vector<double> quantities(const Inputs& in, const std::vector<double>& sum,
   return out;
 }
 
-Inputs make_inputs(const TracerResult& result) {
-  const md::ResolvedScene& scene = result.ensemble.scene;
+Inputs make_inputs(const md::ResolvedScene& scene) {
   const md::BlastConfig& c = scene.config;
   const md::ObservableLayout layout(scene);
   const theory::BlastParameters p{c.d, c.n, c.a, c.E, scene.A_d};
@@ -92,9 +86,9 @@ const std::vector<std::string>& prefactor_observables() {
   return names;
 }
 
-std::vector<PrefactorRow> prefactor_rows(const TracerResult& result) {
-  const Inputs in = make_inputs(result);
-  const auto& blocks = result.ensemble.blocks;
+std::vector<PrefactorRow> prefactor_rows(const md::ResolvedScene& scene,
+                                         const std::map<long long, md::BlockSums>& blocks) {
+  const Inputs in = make_inputs(scene);
   std::vector<double> total;
   double N = 0.0;
   for (const auto& [b, s] : blocks) {
@@ -120,7 +114,7 @@ std::vector<PrefactorRow> prefactor_rows(const TracerResult& result) {
   std::vector<PrefactorRow> rows;
   for (std::size_t k = 0; k < in.entry.size(); ++k) {
     PrefactorRow row;
-    row.t = result.ensemble.scene.times[k];
+    row.t = scene.times[k];
     row.R_over_lambda = in.R_over_lambda[k];
     for (std::size_t j = 0; j < J; ++j)
       for (int q = 0; q < 2; ++q) {
@@ -132,34 +126,6 @@ std::vector<PrefactorRow> prefactor_rows(const TracerResult& result) {
     rows.push_back(row);
   }
   return rows;
-}
-
-std::string prefactors_csv(const TracerResult& result) {
-  const md::ResolvedScene& scene = result.ensemble.scene;
-  std::ostringstream out;
-  out << common::provenance_header({{"scene", scene.config.name},
-                                    {"seed", std::to_string(scene.config.seed)},
-                                    {"background", result.background_description},
-                                    {"A_d", format_number(scene.A_d)}},
-                                   "m = 1 (host mass), k_B = 1, lengths and times in the scene's units")
-      << "# X_prefactor = X / (the paper's estimate of X with its O(1) factor set to 1: theory::scaling_estimates,\n"
-         "#   Eqs. (6), (8), (10)), R/lambda from Eq. (1) with A_d; X_exponent = d ln X / d ln(R/lambda) over\n"
-         "#   [t/"
-      << format_number(prefactor_window)
-      << ", t]; errors: block jackknife\n"
-         "t,R_over_lambda";
-  for (const std::string& name : prefactor_observables())
-    out << ',' << name << "_prefactor," << name << "_prefactor_stderr," << name << "_exponent," << name
-        << "_exponent_stderr";
-  out << '\n';
-  for (const PrefactorRow& row : prefactor_rows(result)) {
-    out << format_number(row.t) << ',' << format_number(row.R_over_lambda);
-    for (std::size_t j = 0; j < row.prefactor.size(); ++j)
-      out << ',' << format_number(row.prefactor[j]) << ',' << format_number(row.prefactor_error[j]) << ','
-          << format_number(row.exponent[j]) << ',' << format_number(row.exponent_error[j]);
-    out << '\n';
-  }
-  return out.str();
 }
 
 }  // namespace coldblast::kinetic

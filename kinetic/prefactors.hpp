@@ -2,11 +2,14 @@
 // The impurity's amplitudes measured by the tracer, divided by the paper's estimates with their O(1)
 // factors set to 1 (theory::scaling_estimates: R_imp = C λ (R/λ)^{h_d}, Eq. (6); V_imp, Eq. (8);
 // C_imp, Eq. (10)), and their running exponents in R/λ, at every recording time, with block-jackknife
-// errors. R/λ is Eq. (1) with the run's A_d. Written as prefactors.csv (docs/kinetic.md).
+// errors. R/λ is Eq. (1) with the run's A_d. Written as prefactors.csv (run/tracer_files.hpp,
+// docs/kinetic.md).
+#include <map>
 #include <string>
 #include <vector>
 
-#include "kinetic/tracer.hpp"
+#include "md/blast_config.hpp"
+#include "md/block_sums.hpp"
 
 namespace coldblast::kinetic {
 
@@ -24,10 +27,9 @@ struct PrefactorRow {
 /// Ratio of the two recording times of a running exponent (a factor 4 in t).
 inline constexpr double prefactor_window = 4.0;
 
-/// Rows at every recording time t > 0 of the result (trajectories start at the scene's t_min or later).
-std::vector<PrefactorRow> prefactor_rows(const TracerResult& result);
-
-/// prefactors.csv: a provenance header and one line per recording time.
-std::string prefactors_csv(const TracerResult& result);
+/// Rows at every recording time of a tracer run's scene and md-layout block sums (trajectories start
+/// at the scene's t_min or later).
+std::vector<PrefactorRow> prefactor_rows(const md::ResolvedScene& scene,
+                                         const std::map<long long, md::BlockSums>& blocks);
 
 }  // namespace coldblast::kinetic

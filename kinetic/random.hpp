@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "md/initial_state.hpp"
+#include "common/random_streams.hpp"
 
 namespace coldblast::kinetic {
 
@@ -20,9 +20,9 @@ class Random {
  public:
   using result_type = std::uint64_t;
   Random(std::uint64_t seed, std::uint64_t stream) {
-    std::uint64_t x = md::splitmix64(seed) ^ md::splitmix64(stream ^ 0x5851F42D4C957F2DULL);
+    std::uint64_t x = common::splitmix64(seed) ^ common::splitmix64(stream ^ 0x5851F42D4C957F2DULL);
     for (auto& word : s_) {
-      x = md::splitmix64(x);
+      x = common::splitmix64(x);
       word = x;
     }
   }

@@ -12,14 +12,8 @@
 
 namespace coldblast::md {
 
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
-}
-
 std::mt19937_64 realization_rng(std::uint64_t seed, std::uint64_t index) {
+  using common::splitmix64;
   std::seed_seq sequence{splitmix64(seed), splitmix64(splitmix64(seed) ^ index), index};
   return std::mt19937_64(sequence);
 }

@@ -2,18 +2,17 @@
 // Initial configurations (paper Sec. V): random sequential addition (RSA) of non-overlapping
 // discs/spheres in a ball (blast) and lattice starts for periodic equilibrium runs; the impurity
 // kick with total energy exactly E and total momentum exactly zero; Maxwellian velocities.
-// Random numbers: one std::mt19937_64 per realization seeded by splitmix64 from (seed, index), so
+// Random numbers: one std::mt19937_64 per realization seeded by common::splitmix64 from (seed, index), so
 // a realization does not depend on which thread or shard runs it.
 #include <cstdint>
 #include <random>
 #include <stdexcept>
 
+#include "common/random_streams.hpp"
 #include "md/particles.hpp"
 
 namespace coldblast::md {
 
-/// splitmix64 step (Steele, Lea & Flood 2014): a well-mixed 64-bit hash of x.
-std::uint64_t splitmix64(std::uint64_t x);
 /// The generator of realization `index` of a run with master seed `seed`.
 std::mt19937_64 realization_rng(std::uint64_t seed, std::uint64_t index);
 /// Uniform double in [0, 1) from the top 53 bits (portable, unlike std::uniform_real_distribution).

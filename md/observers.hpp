@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "md/blast_config.hpp"
 #include "md/engine.hpp"
-#include "md/scenes.hpp"
 
 namespace coldblast::md {
 

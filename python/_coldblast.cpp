@@ -24,16 +24,18 @@
 #include "common/interrupt.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
-#include "compare/md_run.hpp"
 #include "compare/report.hpp"
 #include "compare/reproduce.hpp"
 #include "compare/run_data.hpp"
 #include "compare/verdict.hpp"
 #include "hydro/options.hpp"
-#include "kinetic/tracer.hpp"
-#include "md/ensemble.hpp"
-#include "md/scenes.hpp"
-#include "md/states.hpp"
+#include "kinetic/tracer_config.hpp"
+#include "run/ensemble.hpp"
+#include "run/impurity_states.hpp"
+#include "run/md_run.hpp"
+#include "run/scene_file.hpp"
+#include "run/tracer_files.hpp"
+#include "run/tracer_run.hpp"
 #include "theory/computed_prefactors.hpp"
 #include "theory/exponents.hpp"
 
@@ -345,10 +347,10 @@ py::dict hydro_run(bool euler, int d, double until, int cells, bool viscosity, s
 
 /// The estimates of observables.csv per observable, in output order:
 /// {name: {"t", "mean", "stderr": float64 arrays, "count": int64 array}}.
-py::dict estimate_dict(const md::BlastResult& result) {
-  std::map<std::string, std::vector<const md::ObservableEstimate*>> by_name;
+py::dict estimate_dict(const run::BlastResult& result) {
+  std::map<std::string, std::vector<const run::ObservableEstimate*>> by_name;
   std::vector<std::string> order;
-  const std::vector<md::ObservableEstimate> rows = md::estimate_observables(result);
+  const std::vector<run::ObservableEstimate> rows = run::estimate_observables(result);
   for (const auto& row : rows) {
     if (!by_name.count(row.observable)) order.push_back(row.observable);
     by_name[row.observable].push_back(&row);
@@ -357,9 +359,9 @@ py::dict estimate_dict(const md::BlastResult& result) {
   for (const std::string& name : order) {
     const auto& list = by_name[name];
     py::dict e;
-    e["t"] = column(list, [](const md::ObservableEstimate* r) { return r->t; });
-    e["mean"] = column(list, [](const md::ObservableEstimate* r) { return r->mean; });
-    e["stderr"] = column(list, [](const md::ObservableEstimate* r) { return r->stderr_; });
+    e["t"] = column(list, [](const run::ObservableEstimate* r) { return r->t; });
+    e["mean"] = column(list, [](const run::ObservableEstimate* r) { return r->mean; });
+    e["stderr"] = column(list, [](const run::ObservableEstimate* r) { return r->stderr_; });
     py::array_t<long long> count(static_cast<py::ssize_t>(list.size()));
     for (std::size_t i = 0; i < list.size(); ++i) count.mutable_data()[i] = list[i]->count;
     e["count"] = count;
@@ -372,9 +374,9 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
                 std::optional<long long> realizations, std::optional<long long> seed, int threads,
                 const std::string& out, const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, "--out");
-  const compare::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
-  compare::MdRunPlan plan = compare::plan_md_run(request);
-  md::RunOptions& options = plan.options;
+  const run::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
+  run::MdRunPlan plan = run::plan_md_run(request);
+  run::RunOptions& options = plan.options;
   Progress progress(progress_callback);
   options.progress = [&progress](long long done, long long total) {
     progress.set(static_cast<double>(done), static_cast<double>(total));
@@ -382,10 +384,10 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
   // As `md run --out DIR`: finished blocks are checkpointed in DIR/checkpoint until the outputs
   // are written (an interrupted run keeps them; `coldblast md run --resume DIR` continues).
   if (!out.empty()) options.checkpoint = std::filesystem::path(out) / "checkpoint";
-  const std::function<md::BlastResult()> work = [&] { return md::run_blast(plan.config, options); };
-  md::BlastResult result = run_interruptible(work, progress);
+  const std::function<run::BlastResult()> work = [&] { return run::run_blast(plan.config, options); };
+  run::BlastResult result = run_interruptible(work, progress);
   if (!out.empty()) {
-    md::write_blast_outputs(result, out);
+    run::write_blast_outputs(result, out);
     std::error_code ignored;
     std::filesystem::remove_all(options.checkpoint, ignored);
   }
@@ -393,31 +395,31 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
   for (const auto& [name, content] : result.realization0_files) files[py::str(name)] = content;
   py::dict output;
   output["estimates"] = estimate_dict(result);
-  output["summary"] = json_to_python(md::blast_summary(result));
+  output["summary"] = json_to_python(run::blast_summary(result));
   output["realization0_files"] = files;
   return output;
 }
 
-/// md states: the impurities at time t of every realization (md/states.hpp), as numpy arrays; with
+/// md states: the impurities at time t of every realization (run/impurity_states.hpp), as numpy arrays; with
 /// `out`, also out/impurity_states.csv (for tracer --start states).
 py::dict md_states(const std::string& scene_file, const std::string& scene_text,
                    const std::vector<std::string>& overrides, std::optional<long long> realizations,
                    std::optional<long long> seed, int threads, double time, const std::string& out,
                    const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, "--out");
-  const compare::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
-  const compare::MdRunPlan plan = compare::plan_md_run(request);
-  const md::ResolvedScene scene = md::resolve_scene(plan.config, plan.options.amplitude);
+  const run::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
+  const run::MdRunPlan plan = run::plan_md_run(request);
+  const md::ResolvedScene scene = run::resolve_blast_scene(plan.config);
   Progress progress(progress_callback);
   const std::function<std::vector<md::ImpurityState>()> work = [&] {
-    return md::impurity_states(
+    return run::impurity_states(
         scene, time, plan.config.realizations, threads,
         [&progress](long long done, long long n) { progress.set(static_cast<double>(done), static_cast<double>(n)); });
   };
   const std::vector<md::ImpurityState> states = run_interruptible(work, progress);
   if (!out.empty())
     common::write_file_atomic(std::filesystem::path(out) / "impurity_states.csv",
-                              md::impurity_states_csv(states, plan.config, time));
+                              run::impurity_states_csv(states, plan.config, time));
   const int d = plan.config.d;
   const auto matrix = [&](auto member) {
     py::array_t<double> a({static_cast<py::ssize_t>(states.size()), static_cast<py::ssize_t>(d)});
@@ -457,11 +459,14 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
                     std::optional<long long> seed, const TracerOptions& o, const std::string& out,
                     const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, "--out");
-  md::add_seed_override(overrides, seed);
-  const std::string text = !scene_file.empty() ? common::read_text(scene_file, "SCENE", common::text_size_limit)
-                                               : (scene_text.empty() ? md::default_scene_toml() : scene_text);
+  run::SceneRequest scene;
+  scene.file = scene_file;
+  scene.text = scene_text;
+  scene.overrides = std::move(overrides);
+  scene.seed = seed;
+  scene.md_snapshots = false;  // the tracer records no particles
   kinetic::TracerConfig config;
-  config.scene = kinetic::parse_tracer_scene(text, overrides, scene_file.empty() ? "default scene" : scene_file);
+  config.scene = run::load_scene(scene);
   config.background = o.background;
   config.transport = o.transport;
   config.start = o.start;
@@ -475,17 +480,17 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   config.cells = o.cells;
   config.kernel = o.kernel;
   Progress progress(progress_callback);
-  const std::function<kinetic::TracerResult()> work = [&] {
-    kinetic::TracerProgress report;
+  const std::function<run::TracerResult()> work = [&] {
+    run::TracerProgress report;
     report.blocks = [&progress](long long done, long long total) {
       progress.set(static_cast<double>(done), static_cast<double>(total));
     };
-    return kinetic::run_tracer(config, report);
+    return run::run_tracer(config, report);
   };
-  const kinetic::TracerResult result = run_interruptible(work, progress);
-  if (!out.empty()) kinetic::write_tracer_outputs(result, out);
+  const run::TracerResult result = run_interruptible(work, progress);
+  if (!out.empty()) run::write_tracer_outputs(result, out);
   py::dict moments;
-  const std::vector<kinetic::MomentRow> rows = kinetic::moment_rows(result);
+  const std::vector<kinetic::MomentRow> rows = kinetic::moment_rows(result.ensemble.scene.times, result.blocks);
   const auto add = [&](const char* name, double kinetic::MomentRow::*field) {
     moments[name] = column(rows, [field](const kinetic::MomentRow& r) { return r.*field; });
   };
@@ -501,7 +506,7 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   py::dict output;
   output["estimates"] = estimate_dict(result.ensemble);
   output["moments"] = moments;
-  output["summary"] = json_to_python(kinetic::tracer_summary(result));
+  output["summary"] = json_to_python(run::tracer_summary(result));
   return output;
 }
 
@@ -613,7 +618,7 @@ PYBIND11_MODULE(_coldblast, m) {
   m.def("md_states", &md_states, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"),
         py::arg("realizations"), py::arg("seed"), py::arg("threads"), py::arg("time"), py::arg("out"),
         py::arg("progress"));
-  m.def("default_scene_toml", [] { return md::default_scene_toml(); });
+  m.def("default_scene_toml", [] { return run::default_scene_toml(); });
   m.def("read_run_summary", &read_run_summary, py::arg("directory"));
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
         py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"),

@@ -1,4 +1,4 @@
-# The tracer's ensembles use md's shard/merge machinery (one launcher, md::run_slots_in_parallel and
+# The tracer's ensembles use the run layer's shard/merge machinery (one launcher, run::run_slots_in_parallel and
 # the run-directory format): `coldblast tracer --shard 0/2` and `--shard 1/2` merged with
 # `coldblast md merge` give the files of one 2-thread run, line by line apart from the "# command:"
 # provenance line (the merge keeps the shards' A_d source and region), moments.csv, prefactors.csv

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "hydro/tvns.hpp"
-#include "md/ensemble.hpp"
-#include "md/scenes.hpp"
+#include "run/ensemble.hpp"
+#include "run/scene_file.hpp"
 
 using namespace coldblast;
 namespace fs = std::filesystem;
@@ -23,9 +23,9 @@ namespace {
 /// Compares the fresh ensemble's estimates with every row of a reference observables.csv at
 /// t >= 256 (the names the fresh run records): each within 4.5 combined standard errors. Returns
 /// the number of points compared.
-int agreeing_points(const fs::path& reference_csv, const md::BlastResult& fresh, unsigned seed) {
-  std::map<std::pair<double, std::string>, md::ObservableEstimate> fresh_by_key;
-  for (const auto& e : md::estimate_observables(fresh)) fresh_by_key[{e.t, e.observable}] = e;
+int agreeing_points(const fs::path& reference_csv, const run::BlastResult& fresh, unsigned seed) {
+  std::map<std::pair<double, std::string>, run::ObservableEstimate> fresh_by_key;
+  for (const auto& e : run::estimate_observables(fresh)) fresh_by_key[{e.t, e.observable}] = e;
   // observables.csv stores the names as text, so match rows by (t, name) from the raw file.
   std::ifstream in(reference_csv);
   REQUIRE(in);
@@ -60,13 +60,13 @@ TEST_CASE("a fresh small ensemble of the paper scene is consistent with data/pap
   scene_text << scene_file.rdbuf();
   const unsigned seed = 20261121;
   md::BlastConfig scene =
-      md::parse_scene(scene_text.str(), {"realizations=48", "block_size=4", "seed=" + std::to_string(seed),
-                                         "observables=[\"R_imp\",\"V_imp\",\"C_imp\",\"n0\",\"T0\",\"R\"]"});
-  md::RunOptions options;
+      run::parse_scene(scene_text.str(), {"realizations=48", "block_size=4", "seed=" + std::to_string(seed),
+                                          "observables=[\"R_imp\",\"V_imp\",\"C_imp\",\"n0\",\"T0\",\"R\"]"});
+  run::RunOptions options;
   options.threads = 2;
-  const md::BlastResult fresh = md::run_blast(scene, options);
-  std::map<std::pair<double, std::string>, md::ObservableEstimate> fresh_by_key;
-  for (const auto& e : md::estimate_observables(fresh)) fresh_by_key[{e.t, e.observable}] = e;
+  const run::BlastResult fresh = run::run_blast(scene, options);
+  std::map<std::pair<double, std::string>, run::ObservableEstimate> fresh_by_key;
+  for (const auto& e : run::estimate_observables(fresh)) fresh_by_key[{e.t, e.observable}] = e;
 
   CHECK(agreeing_points(reference_dir / "observables.csv", fresh, seed) >= 40);
 }
@@ -74,15 +74,14 @@ TEST_CASE("a fresh small ensemble of the paper scene is consistent with data/pap
 namespace {
 /// 24 fresh realizations of the paper scene with the heavy impurity (mass 10), seed `seed`, the
 /// extra scene keys and `md run`'s box and p_imp bins (A_d(phi)).
-md::BlastResult fresh_heavy_ensemble(unsigned seed, std::vector<std::string> keys) {
+run::BlastResult fresh_heavy_ensemble(unsigned seed, std::vector<std::string> keys) {
   std::ifstream scene_file(fs::path(COLDBLAST_SOURCE_DIR) / "scenes" / "paper-2d.toml");
   std::stringstream scene_text;
   scene_text << scene_file.rdbuf();
   keys.insert(keys.end(), {"realizations=24", "block_size=2", "seed=" + std::to_string(seed), "impurities.mass=10"});
-  md::RunOptions options;
+  run::RunOptions options;
   options.threads = 2;
-  options.amplitude = hydro::md_amplitude;
-  return md::run_blast(md::parse_scene(scene_text.str(), keys), options);
+  return run::run_blast(run::parse_scene(scene_text.str(), keys), options);
 }
 }  // namespace
 
@@ -91,7 +90,8 @@ TEST_CASE("a fresh heavy-impurity ensemble has data/recollisions' C_imp, C_re, d
   // change of them (or of the engine's partner bookkeeping) moves them by many sigma. 24 realizations against the 256
   // of the reference.
   const unsigned seed = 20261124;
-  const md::BlastResult fresh = fresh_heavy_ensemble(seed, {"observables=[\"C_imp\",\"C_re\",\"dE_first\",\"dE_re\"]"});
+  const run::BlastResult fresh =
+      fresh_heavy_ensemble(seed, {"observables=[\"C_imp\",\"C_re\",\"dE_first\",\"dE_re\"]"});
   CHECK(agreeing_points(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "recollisions" / "heavy" / "observables.csv", fresh,
                         seed) >= 4 * 10);
 }
@@ -102,7 +102,7 @@ TEST_CASE("a fresh heavy-impurity ensemble without recollisions has data/recolli
   // 24 fresh realizations against the 256 of the reference. A change of the switch's rule (say,
   // letting impurity pairs recollide, or ghosting host pairs) moves C_imp by many sigma.
   const unsigned seed = 20261125;
-  const md::BlastResult fresh =
+  const run::BlastResult fresh =
       fresh_heavy_ensemble(seed, {"impurities.recollide=false", "observables=[\"R_imp\",\"V_imp\",\"C_imp\"]"});
   const fs::path reference = fs::path(COLDBLAST_SOURCE_DIR) / "data" / "recollisions" / "heavy-no-recollisions";
   CHECK(agreeing_points(reference / "observables.csv", fresh, seed) >= 4 * 10);
@@ -113,7 +113,7 @@ TEST_CASE("a fresh heavy-impurity ensemble has data/recollisions/heavy-shells' c
   // g_front, g_back, u_front are definitions (the shell, its sides, the units): a change of them
   // moves the bow's numbers of docs/verification.md by many sigma.
   const unsigned seed = 20261126;
-  const md::BlastResult fresh = fresh_heavy_ensemble(seed, {"observables=[\"g_front\",\"g_back\",\"u_front\"]"});
+  const run::BlastResult fresh = fresh_heavy_ensemble(seed, {"observables=[\"g_front\",\"g_back\",\"u_front\"]"});
   const fs::path reference = fs::path(COLDBLAST_SOURCE_DIR) / "data" / "recollisions" / "heavy-shells";
   CHECK(agreeing_points(reference / "observables.csv", fresh, seed) >= 3 * 10);
 }

@@ -494,7 +494,7 @@ TEST_CASE("a report replaces only a new, empty or previous report's folder, and 
 }
 
 TEST_CASE("a tracer run is labelled tracer, not MD, in the report and the figure legend", "[fast]") {
-  // is_tracer_run reads summary.json's "engine" (written by kinetic/tracer.cpp); MD runs have none.
+  // is_tracer_run reads summary.json's "engine" (written by run/tracer_files.cpp); MD runs have none.
   const fs::path dir = make_run(2);
   CompareConfig config;
   config.run_dir = dir;

@@ -10,8 +10,9 @@
 #include <string>
 
 #include "kinetic/prefactors.hpp"
-#include "kinetic/tracer.hpp"
-#include "md/scenes.hpp"
+#include "kinetic/tracer_config.hpp"
+#include "run/scene_file.hpp"
+#include "run/tracer_run.hpp"
 #include "theory/computed_prefactors.hpp"
 #include "theory/prefactors.hpp"
 
@@ -25,7 +26,7 @@ kinetic::TracerConfig scene_config(const std::string& file, long long trajectori
   std::ostringstream text;
   text << in.rdbuf();
   kinetic::TracerConfig c;
-  c.scene = md::parse_scene(text.str());
+  c.scene = run::parse_scene(text.str());
   c.background = "ns";
   c.transport = "enskog";  // the dense Navier–Stokes blast of the table's runs
   c.trajectories = trajectories;
@@ -35,8 +36,9 @@ kinetic::TracerConfig scene_config(const std::string& file, long long trajectori
 }
 
 /// Every table entry of dimension d at a recording time of `result` agrees within 4 combined sigma.
-int check_against_table(const kinetic::TracerResult& result, int d) {
-  const std::vector<kinetic::PrefactorRow> rows = kinetic::prefactor_rows(result);
+int check_against_table(const run::TracerResult& result, int d) {
+  const std::vector<kinetic::PrefactorRow> rows =
+      kinetic::prefactor_rows(result.ensemble.scene, result.ensemble.blocks);
   const auto& names = kinetic::prefactor_observables();
   int compared = 0;
   for (const theory::ComputedPrefactor& p : theory::computed_prefactors(d))
@@ -69,7 +71,7 @@ TEST_CASE("prefactors: the 2D table's paper-scene entries are reproduced by an i
   kinetic::TracerConfig c = scene_config("paper-2d.toml", 4000);
   c.scene.t_max = 1.0001 * first_table_time(2);
   REQUIRE(c.scene.t_max < 5000.0);
-  const kinetic::TracerResult r = kinetic::run_tracer(c);
+  const run::TracerResult r = run::run_tracer(c);
   CHECK(check_against_table(r, 2) >= 3);  // R_imp, V_imp, C_imp at t = 4000 (R/λ = 34.2) at least
 }
 
@@ -77,20 +79,20 @@ TEST_CASE("prefactors: the 3D table's paper-scene entries are reproduced by an i
   kinetic::TracerConfig c = scene_config("paper-3d.toml", 600);
   c.scene.t_max = 1.0001 * first_table_time(3);
   REQUIRE(c.scene.t_max < 60000.0);
-  const kinetic::TracerResult r = kinetic::run_tracer(c);
+  const run::TracerResult r = run::run_tracer(c);
   CHECK(check_against_table(r, 3) >= 3);
 }
 
 TEST_CASE("prefactors: rows are the ensemble's R_imp over theory::scaling_estimates, exponents their log slope") {
   kinetic::TracerConfig c = scene_config("paper-2d.toml", 512);
   c.scene.t_max = 2000.0;  // the scene's last snapshot time
-  const kinetic::TracerResult r = kinetic::run_tracer(c);
-  const std::vector<kinetic::PrefactorRow> rows = kinetic::prefactor_rows(r);
+  const run::TracerResult r = run::run_tracer(c);
+  const std::vector<kinetic::PrefactorRow> rows = kinetic::prefactor_rows(r.ensemble.scene, r.ensemble.blocks);
   const md::ResolvedScene& s = r.ensemble.scene;
   REQUIRE(rows.size() == s.times.size());
   const theory::BlastParameters p{s.config.d, s.config.n, s.config.a, s.config.E, s.A_d};
   // R_imp from the moments (⟨r²⟩ = 2 R_imp², Eq. (38)) independently of the md layout.
-  const std::vector<kinetic::MomentRow> moments = kinetic::moment_rows(r);
+  const std::vector<kinetic::MomentRow> moments = kinetic::moment_rows(r.ensemble.scene.times, r.blocks);
   int checked = 0;
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const theory::ScalingEstimates e = theory::scaling_estimates(p, rows[k].t);

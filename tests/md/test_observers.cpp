@@ -9,13 +9,14 @@
 #include <random>
 #include <sstream>
 
-#include "md/ensemble.hpp"
 #include "md/observers.hpp"
-#include "md/scenes.hpp"
+#include "run/ensemble.hpp"
+#include "run/scene_file.hpp"
 #include "tests/temp_path.hpp"
 #include "theory/prefactors.hpp"
 
 using namespace coldblast::md;
+using namespace coldblast::run;
 using Catch::Matchers::WithinAbs;
 namespace fs = std::filesystem;
 
@@ -198,8 +199,8 @@ TEST_CASE(
     CHECK(without["C_imp"].rbegin()->second > 1.0);  // and still collides without it
   }
   // The switch is written to the scene's text only when off (ordinary scenes keep their old text).
-  CHECK(parse_scene(default_scene_toml(), {}).to_toml().find("recollide") == std::string::npos);
-  CHECK(parse_scene(default_scene_toml(), {"impurities.recollide=false"}).to_toml().find("recollide = false") !=
+  CHECK(scene_toml(parse_scene(default_scene_toml(), {})).find("recollide") == std::string::npos);
+  CHECK(scene_toml(parse_scene(default_scene_toml(), {"impurities.recollide=false"})).find("recollide = false") !=
         std::string::npos);
   // A boolean key takes true or false only (toml++ would read the integer 2 as true).
   for (const char* bad : {"impurities.recollide=2", "overlap_check=1"})

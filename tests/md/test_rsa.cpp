@@ -13,11 +13,13 @@
 #include <vector>
 
 #include "common/interrupt.hpp"
-#include "md/ensemble.hpp"
 #include "md/initial_state.hpp"
-#include "md/scenes.hpp"
+#include "md/realization.hpp"
+#include "run/scene_file.hpp"
 
 using namespace coldblast::md;
+using coldblast::run::default_scene_toml;
+using coldblast::run::parse_scene;
 
 namespace {
 

@@ -1,0 +1,159 @@
+#include "md/blast_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/validate.hpp"
+#include "md/initial_state.hpp"
+#include "theory/observables.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::md {
+
+namespace {
+using common::Bound;
+using common::format_number;
+using common::require_in_range;
+using common::require_integer_in_range;
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+/// What the run needs from t = 0 on, whatever Eq. (1) says: the impurities (the `count` particles
+/// nearest the origin, within r_count) and the balls of 100 particles the observers measure around
+/// each of them and around the origin (radius r_100, md/observers.cpp): r_count + 2 r_100 (radii at
+/// the mean density; the factor 2 covers the fluctuation of the 100th neighbour's distance and the
+/// guard band). count is capped at 100: the floor is for small blasts, not a way to make room for
+/// more impurities than the region holds, which stays an error.
+double minimum_region_radius(const BlastConfig& c) {
+  const double per_volume = c.n * theory::unit_ball_volume(c.d);
+  const double r_count = std::pow(std::min(c.impurities.count, 100) / per_volume, 1.0 / c.d);
+  const double r_100 = std::pow(100.0 / per_volume, 1.0 / c.d);
+  return r_count + 2.0 * r_100;
+}
+}  // namespace
+
+double early_reach_bound(const BlastConfig& c, double impurity_radius, double shock_radius) {
+  // Derivation in scenes.hpp and docs/md-output.md ("Region size").
+  const double mu = c.impurities.mass, k = c.impurities.count;
+  const double E1 = k > 1 ? c.E * (k - 1.0) / k : c.E;
+  const double v0 = std::sqrt(2.0 * E1 / mu), v_max = v0 * std::max(1.0, 2.0 * mu / (1.0 + mu));
+  const double lambda_c = theory::mean_free_path(c.d, c.n, c.a + impurity_radius);  // Eq. (5) [eq:mfp]
+  const double f = 8.0 * mu / ((1.0 + mu) * (1.0 + mu) * (c.d + 1.0)), tau0 = lambda_c / v0;
+  const double shock_speed = 2.0 / (c.d + 2.0) * shock_radius / c.t_max;  // dR/dt of Eq. (1) at t_max
+  const double collisions =
+      2.0 / f * std::min(std::log1p(f * c.t_max / (2.0 * tau0)), std::log(std::max(1.0, v0 / shock_speed)));
+  const double g = 2.0 * mu / (1.0 + 2.0 * mu);
+  const double rms = lambda_c * std::sqrt(2.0 * collisions / (1.0 - g));
+  return std::min(v_max * c.t_max, 3.0 * rms);
+}
+
+const std::vector<std::string>& scalar_observable_names() {
+  static const std::vector<std::string> names = theory::observable_names(theory::is_md_scalar);
+  return names;
+}
+
+const std::vector<std::string>& known_observable_names() {
+  static const std::vector<std::string> names = theory::observable_names(theory::is_md_requestable);
+  return names;
+}
+
+void BlastConfig::validate() const {
+  require_integer_in_range("d", d, 2, 3);
+  require_in_range("n", n, 0.0, inf);
+  require_in_range("a", a, 0.0, inf);
+  require_in_range("E", E, 0.0, inf);
+  require_in_range("A_d", A_d, 0.0, inf, Bound::closed, Bound::open, " (0 = not given)");
+  const double phi = theory::packing_fraction(d, n, a);
+  const double jam = rsa_jamming_fraction(d);
+  require_in_range("phi", phi, 0.0, jam, Bound::open, Bound::open,
+                   " for d = " + std::to_string(d) + " (random sequential addition jams; lower n or a)");
+  require_in_range("impurities.mass", impurities.mass, 0.0, inf);
+  require_in_range("impurities.radius", impurities.radius, 0.0, inf, Bound::closed, Bound::open, " (0 = a)");
+  require_integer_in_range("impurities.count", impurities.count, 1, std::numeric_limits<int>::max(),
+                           " (one impurity starts with momentum sqrt(2 m E); two or more with zero momentum)");
+  require_in_range("t_max", t_max, 0.0, inf);
+  require_in_range("t_min", t_min, 0.0, t_max, Bound::open, Bound::closed, " (t_min <= t_max)");
+  require_integer_in_range("realizations", realizations, 1, 1000000000);
+  require_integer_in_range("block_size", block_size, 1, 1000000);
+  require_in_range("box_margin", box_margin, 1.25, 100.0, Bound::closed, Bound::closed);
+  require_in_range("cell_width", cell_width, 0.0, inf, Bound::closed, Bound::open, " (0 = automatic)");
+  if (queue != "calendar" && queue != "heap")
+    throw std::invalid_argument("queue = " + queue + " is not one of: calendar, heap");
+  require_integer_in_range("profile_bins", profile_bins, 1, 100000);
+  require_integer_in_range("p_imp_bins", p_imp_bins, 1, 100000);
+  const auto& known = known_observable_names();
+  for (const std::string& o : observables)
+    if (std::find(known.begin(), known.end(), o) == known.end())
+      throw std::invalid_argument("observables: unknown observable " + o + " (allowed: " + theory::join_names(known) +
+                                  ")");
+  for (const double t : snapshot_times)
+    require_in_range("snapshot_times", t, 0.0, t_max, Bound::open, Bound::closed, " (within (0, t_max])");
+}
+
+bool ResolvedScene::wants(const std::string& observable) const {
+  return std::find(config.observables.begin(), config.observables.end(), observable) != config.observables.end();
+}
+
+ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& amplitude) {
+  config.validate();
+  ResolvedScene s;
+  s.config = config;
+  const BlastConfig& c = s.config;
+  s.phi = theory::packing_fraction(c.d, c.n, c.a);
+  s.A_d = c.A_d;
+  s.A_d_source = "scene";
+  if (c.A_d == 0.0) {
+    if (!amplitude)
+      throw std::invalid_argument(
+          "A_d = 0 (not given) needs the caller's amplitude policy (hydro::md_amplitude, as "
+          "`md run` uses); give A_d > 0 in the scene or resolve it through run::resolve_blast_scene");
+    const theory::AmplitudeChoice choice = amplitude(c.d, s.phi);
+    require_in_range("A_d", choice.A_d, 0.0, inf, Bound::open, Bound::open, " (from " + choice.source + ")");
+    s.config.A_d = s.A_d = choice.A_d;  // written to summary.json's scene, so merges and resumes agree
+    s.A_d_source = choice.source;
+  }
+  s.lambda = theory::mean_free_path(c.d, c.n, c.a);
+  s.impurity_radius = c.impurities.radius > 0.0 ? c.impurities.radius : c.a;
+  const theory::BlastParameters p{c.d, c.n, c.a, c.E, s.A_d};
+  s.shock_radius_at_t_max = theory::shock_radius(p, c.t_max);  // Eq. (1) [R-shock]
+  const double contact = 2.0 * std::max(c.a, s.impurity_radius);
+  // The guard sits 2σ inside the outermost particles; the shock must stay inside box_margin × R. A
+  // blast that has not reached Eq. (1) by t_max (small E or t_max, a dilute gas, a light or lone
+  // impurity) needs more: the region is never smaller than the impurities' neighbourhood
+  // (minimum_region_radius) plus where they can get in their early phase (early_reach_bound).
+  const double shock_region = c.box_margin * s.shock_radius_at_t_max;
+  const double impurity_region =
+      minimum_region_radius(c) + early_reach_bound(c, s.impurity_radius, s.shock_radius_at_t_max);
+  s.region_radius = std::max(shock_region, impurity_region) + 2.0 * contact + 2.0 * std::max(contact, c.cell_width);
+  s.guard_radius = s.region_radius - 2.0 * contact;
+  const double count = c.n * theory::unit_ball_volume(c.d) * std::pow(s.region_radius, c.d);
+  if (count > 1.5e9) {
+    std::ostringstream message;
+    message << "the blast region holds " << std::setprecision(3) << count << " particles (more than 1.5e9): ";
+    if (impurity_region > shock_region)  // a light or lone impurity outruns the shock early on
+      message << "its radius " << std::setprecision(4) << s.region_radius
+              << " is set by how far the impurities can get before the blast forms, not by the shock (R = "
+              << s.shock_radius_at_t_max << "); raise impurities.mass (= " << c.impurities.mass
+              << "), or lower t_max or E";
+    else
+      message << "lower t_max or E";
+    throw std::invalid_argument(message.str());
+  }
+  s.particle_count = static_cast<std::size_t>(std::llround(count));
+  require_integer_in_range("impurities.count", c.impurities.count, 1, static_cast<long long>(s.particle_count),
+                           " (at most the " + std::to_string(s.particle_count) + " particles of the region)");
+  for (int k = 0;; ++k) {
+    const double t = c.t_min * std::pow(2.0, k / 4.0);
+    if (t > c.t_max * (1.0 + 1e-12)) break;
+    s.times.push_back(t);
+  }
+  s.snapshot_times = c.snapshot_times;
+  if (s.snapshot_times.empty()) s.snapshot_times = {0.25 * c.t_max, 0.5 * c.t_max, 0.75 * c.t_max, c.t_max};
+  std::sort(s.snapshot_times.begin(), s.snapshot_times.end());
+  return s;
+}
+
+}  // namespace coldblast::md

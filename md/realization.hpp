@@ -1,0 +1,80 @@
+#pragma once
+// One realization of a blast scene (paper Sec. V): its initial state (random sequential addition,
+// then the impurities' kick), its engine settings, and its run to t_max with the observers measuring
+// at the recording times, returning the realization's record and, when asked, its snapshots and its
+// impurities' paths as data. Ensembles, files and checkpoints are run/'s (run/ensemble.hpp).
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "md/blast_config.hpp"
+#include "md/engine.hpp"
+#include "md/initial_state.hpp"
+#include "md/observers.hpp"
+
+namespace coldblast::md {
+
+/// The initial state of realization `index` of a resolved blast scene (paper Sec. V): random
+/// sequential addition at density n in the scene's region, then the impurities (the particles
+/// nearest the origin) kicked with total energy E and zero momentum; seeded from (seed, index).
+template <int D>
+InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index);
+
+/// The engine settings of a blast realization (open region, guard and its advice, cell width,
+/// overlap check): the one scene → EngineConfig mapping, shared by ensembles and benchmarks.
+template <int D>
+EngineConfig<D> blast_engine_config(const ResolvedScene& scene);
+
+/// Which particles a snapshot holds (run/ chooses; the scene's snapshot_* keys).
+struct SnapshotSelection {
+  /// false: every particle; true: the moving ones and the resting ones closer to the origin than
+  /// the farthest moving particle plus `margin`.
+  bool front_only = false;
+  double margin = 0.0;  ///< length, >= 0
+  int stride = 1;       ///< keep every stride-th particle of the selection (by index), >= 1
+};
+
+/// The selected particles of a realization at time t, as data (run/snapshot_files.* writes them).
+struct SnapshotFrame {
+  double t = 0.0;
+  std::vector<std::int32_t> id;            ///< particle index, ascending
+  std::vector<double> position, velocity;  ///< d entries per particle
+  std::vector<std::uint8_t> impurity, moving;
+  std::vector<std::uint32_t> collisions;  ///< per particle, since t = 0
+  std::size_t size() const { return id.size(); }
+};
+
+/// One point of an impurity's path (its start, each of its collisions, its end at t_max).
+struct PathPoint {
+  std::int32_t id = 0;
+  double t = 0.0;
+  std::array<double, 3> position{};  ///< d entries used
+};
+
+/// What a realization records beyond its observables.
+struct RealizationExtras {
+  std::vector<double> snapshot_times;  ///< times of snapshots, ascending, in (0, t_max]; empty = none
+  SnapshotSelection selection;
+  bool paths = false;  ///< the impurities' paths (trajectories.csv)
+};
+
+/// A finished realization.
+struct RealizationOutput {
+  std::vector<double> record;  ///< ObservableLayout order
+  std::uint64_t collisions = 0;
+  double energy_error = 0.0;  ///< |E_kin(t_max) - E|/E
+  std::vector<SnapshotFrame> snapshots;
+  std::vector<PathPoint> paths;  ///< by impurity id, then time (empty unless extras.paths)
+};
+
+/// Runs realization `index` to t_max: the observers' record at each recording time, the extras
+/// asked for. `time(index, t)` (may be empty) is called at the start (t = 0, before the initial state
+/// is built) and as the realization passes each recorded time. Throws std::invalid_argument for a
+/// scene whose region does not hold its particles, std::runtime_error when a particle reaches the
+/// guard or an observable is not finite.
+RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
+                                  const RealizationExtras& extras = {},
+                                  const std::function<void(long long, double)>& time = {});
+
+}  // namespace coldblast::md

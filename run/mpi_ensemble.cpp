@@ -1,0 +1,351 @@
+#include "run/mpi_ensemble.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#define OMPI_SKIP_MPICXX 1  // the C API only
+#include <mpi.h>
+
+#include "common/validate.hpp"
+#include "run/checkpoint.hpp"
+
+namespace coldblast::run {
+
+using md::BlockSums;
+
+namespace {
+bool initialised_here = false;
+
+bool started_by_launcher() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
+    if (std::getenv(name)) return true;
+  return false;
+}
+
+void check(int status, const char* what) {
+  if (status != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+}
+
+// Worker -> rank 0 messages (MPI_BYTE, tag = the worker's thread index): a kind, then its payload.
+// Rank 0 answers `request` and `result` with one int64: the next block, or -1 = stop.
+enum Kind : std::int64_t { kind_request = 0, kind_result = 1, kind_failure = 2 };
+constexpr std::int64_t stop_block = -1;
+
+int error_code(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::invalid_argument&) {
+    return 2;
+  } catch (...) {
+    return 1;
+  }
+}
+
+std::string error_text(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
+/// Rank 0: hands out the pending blocks (to its own threads and, on request, to the other ranks'
+/// threads) and passes every finished block to work.finish.
+void run_coordinator(const MpiBlockWork& work, int ranks) {
+  const std::vector<long long>& pending = work.pending;
+  std::mutex mutex;  // guards next, error
+  std::size_t next = 0;
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  const auto take_block = [&]() -> long long {
+    std::lock_guard<std::mutex> lock(mutex);
+    return next < pending.size() && !failed ? pending[next++] : stop_block;
+  };
+  const auto fail = [&](std::exception_ptr e) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!error) error = e;
+    failed = true;
+  };
+  auto local_worker = [&] {
+    try {
+      for (long long b = take_block(); b != stop_block; b = take_block()) {
+        std::vector<char> result = work.run(b, failed);
+        if (failed) return;
+        work.finish(b, std::move(result), false);
+      }
+    } catch (...) {
+      fail(std::current_exception());
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < work.threads; ++t) pool.emplace_back(local_worker);
+
+  // Serve the other ranks' threads until each has been told to stop. Polling with a short sleep
+  // keeps this thread off the CPU (a blocking MPI_Recv spins in Open MPI).
+  int remote_workers = (ranks - 1) * work.threads;
+  std::vector<char> buffer;
+  try {
+    while (remote_workers > 0) {
+      int arrived = 0;
+      MPI_Status status;
+      check(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status), "MPI_Iprobe");
+      if (!arrived) {
+        if (failed) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        continue;
+      }
+      int bytes = 0;
+      MPI_Get_count(&status, MPI_BYTE, &bytes);
+      buffer.resize(static_cast<std::size_t>(bytes));
+      check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
+                     MPI_STATUS_IGNORE),
+            "MPI_Recv");
+      ByteReader reader(buffer);
+      const auto kind = reader.get<std::int64_t>();
+      if (kind == kind_failure) {
+        const int code = static_cast<int>(reader.get<std::int64_t>());
+        const std::string text = "rank " + std::to_string(status.MPI_SOURCE) + ": " + reader.get_string();
+        if (code == 2) throw std::invalid_argument(text);
+        throw std::runtime_error(text);
+      }
+      if (kind == kind_result) {
+        const long long b = reader.get<std::int64_t>();
+        const std::size_t header = 2 * sizeof(std::int64_t);
+        work.finish(b, std::vector<char>(buffer.begin() + static_cast<std::ptrdiff_t>(header), buffer.end()), true);
+      }
+      const std::int64_t reply = take_block();
+      if (reply == stop_block) --remote_workers;
+      check(MPI_Send(&reply, 1, MPI_INT64_T, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD), "MPI_Send");
+    }
+  } catch (...) {
+    fail(std::current_exception());
+  }
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+/// Ranks > 0: `threads` compute threads; this (the only MPI-calling) thread forwards each thread's
+/// finished block plus its request for the next one to rank 0 and hands back the answer.
+void run_worker(const MpiBlockWork& work) {
+  struct Outgoing {
+    int thread;
+    std::vector<char> bytes;
+  };
+  std::mutex mutex;
+  std::condition_variable cv;
+  std::deque<Outgoing> outbox;
+  std::vector<long long> answer(static_cast<std::size_t>(work.threads));
+  std::vector<bool> answered(answer.size(), false);
+  int running = work.threads;
+  const std::atomic<bool> never_stop{false};  // a worker rank stops when rank 0 says so
+  const auto ask = [&](int thread, ByteWriter&& message) {
+    std::unique_lock<std::mutex> lock(mutex);
+    answered[thread] = false;
+    outbox.push_back({thread, std::move(message.bytes)});
+    cv.notify_all();
+    cv.wait(lock, [&] { return answered[thread]; });
+    return answer[thread];
+  };
+  auto compute = [&](int thread) {
+    ByteWriter first;
+    first.put<std::int64_t>(kind_request);
+    long long b = ask(thread, std::move(first));
+    try {
+      while (b != stop_block) {
+        const std::vector<char> result = work.run(b, never_stop);
+        ByteWriter message;
+        message.put<std::int64_t>(kind_result);
+        message.put<std::int64_t>(b);
+        message.bytes.insert(message.bytes.end(), result.begin(), result.end());
+        b = ask(thread, std::move(message));
+      }
+    } catch (...) {
+      const std::exception_ptr e = std::current_exception();
+      ByteWriter message;
+      message.put<std::int64_t>(kind_failure);
+      message.put<std::int64_t>(error_code(e));
+      message.put_string(error_text(e));
+      std::lock_guard<std::mutex> lock(mutex);
+      outbox.push_back({thread, std::move(message.bytes)});
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    --running;
+    cv.notify_all();
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < work.threads; ++t) pool.emplace_back(compute, t);
+  std::unique_lock<std::mutex> lock(mutex);
+  while (running > 0 || !outbox.empty()) {
+    cv.wait(lock, [&] { return running == 0 || !outbox.empty(); });
+    if (outbox.empty()) break;
+    Outgoing message = std::move(outbox.front());
+    outbox.pop_front();
+    lock.unlock();
+    check(MPI_Send(message.bytes.data(), static_cast<int>(message.bytes.size()), MPI_BYTE, 0, message.thread,
+                   MPI_COMM_WORLD),
+          "MPI_Send");
+    if (ByteReader(message.bytes).get<std::int64_t>() == kind_failure) {
+      // Rank 0 reports the error and ends every rank; wait for that without spinning.
+      for (auto& t : pool) t.detach();
+      for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+    }
+    std::int64_t reply = stop_block;
+    check(MPI_Recv(&reply, 1, MPI_INT64_T, 0, message.thread, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
+    lock.lock();
+    answer[message.thread] = reply;
+    answered[message.thread] = true;
+    cv.notify_all();
+  }
+  lock.unlock();
+  for (auto& t : pool) t.join();
+}
+}  // namespace
+
+MpiSession::MpiSession(int& argc, char**& argv) {
+  if (!started_by_launcher()) return;
+  int provided = 0;
+  check(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+  initialised_here = true;
+  if (provided < MPI_THREAD_FUNNELED) {
+    std::fprintf(stderr, "coldblast: failed: MPI does not provide MPI_THREAD_FUNNELED\n");
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+}
+
+MpiSession::~MpiSession() {
+  if (initialised_here) MPI_Finalize();
+}
+
+int MpiSession::rank() {
+  int r = 0;
+  if (initialised_here) MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+int MpiSession::size() {
+  int s = 1;
+  if (initialised_here) MPI_Comm_size(MPI_COMM_WORLD, &s);
+  return s;
+}
+
+int MpiSession::end_all_ranks(int code) {
+  if (code != 0 && size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  return code;
+}
+
+void put_block_sums(ByteWriter& w, const BlockSums& s, const NamedFiles& files) {
+  w.put<std::int64_t>(s.count);
+  w.put<std::uint64_t>(s.collisions);
+  w.put<double>(s.energy_error_max);
+  w.put_doubles(s.sum);
+  w.put_doubles(s.sum_squares);
+  w.put<std::uint64_t>(files.size());
+  for (const auto& [name, content] : files) {
+    w.put_string(name);
+    w.put_string(content);
+  }
+}
+
+BlockSums get_block_sums(ByteReader& r, NamedFiles* files) {
+  BlockSums s;
+  s.count = r.get<std::int64_t>();
+  s.collisions = r.get<std::uint64_t>();
+  s.energy_error_max = r.get<double>();
+  s.sum = r.get_doubles();
+  s.sum_squares = r.get_doubles();
+  const auto n = r.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < n; ++i) {
+    std::string name = r.get_string();
+    std::string content = r.get_string();
+    if (files) files->push_back({std::move(name), std::move(content)});
+  }
+  return s;
+}
+
+void run_blocks_mpi(const MpiBlockWork& work) {
+  common::require_integer_in_range("threads", work.threads, 1, 1024);
+  const int ranks = MpiSession::size();
+  if (MpiSession::rank() == 0)
+    run_coordinator(work, ranks);
+  else
+    run_worker(work);
+}
+
+BlastResult run_blast_mpi(const md::BlastConfig& config, const RunOptions& options) {
+  const int ranks = MpiSession::size();
+  if (ranks == 1) return run_blast(config, options);
+  common::require_integer_in_range("threads", options.threads, 1, 1024);
+  common::require_integer_in_range("shard_count", options.shard_count, 1, 1000000);
+  common::require_integer_in_range("shard_index", options.shard_index, 0, options.shard_count - 1);
+  const auto started = std::chrono::steady_clock::now();
+  MpiBlockWork work;
+  work.threads = options.threads;
+  if (MpiSession::rank() != 0) {
+    const md::ResolvedScene scene = resolve_blast_scene(config);
+    work.run = [&](long long b, const std::atomic<bool>&) {
+      NamedFiles files;
+      const BlockSums s = run_block(scene, b, &files);
+      ByteWriter w;
+      put_block_sums(w, s, files);
+      return std::move(w.bytes);
+    };
+    run_blocks_mpi(work);
+    BlastResult empty;
+    empty.ranks = ranks;
+    return empty;
+  }
+  // Rank 0: the plan (scene, checkpoint, pending blocks); progress counts realizations, its own
+  // one by one, the other ranks' block by block.
+  EnsemblePlan plan = plan_ensemble(config, options);
+  BlastResult& result = plan.result;
+  result.ranks = ranks;
+  const md::ResolvedScene& scene = result.scene;
+  const long long total = plan.pending_realizations;
+  std::mutex mutex;  // guards done, result.blocks, result.realization0_files
+  long long done = 0;
+  const auto realization_done = [&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (options.progress) options.progress(done, total);
+  };
+  work.pending = plan.pending;
+  work.run = [&](long long b, const std::atomic<bool>& stop) {
+    NamedFiles files;
+    const BlockSums s = run_block(scene, b, &files, realization_done, &stop, options.realization_time);
+    ByteWriter w;
+    put_block_sums(w, s, files);
+    return std::move(w.bytes);
+  };
+  work.finish = [&](long long b, std::vector<char>&& bytes, bool remote) {
+    ByteReader reader(bytes);
+    NamedFiles files;
+    BlockSums s = get_block_sums(reader, &files);
+    if (!options.checkpoint.empty()) save_checkpoint_block(options.checkpoint, b, s, b == 0 ? &files : nullptr);
+    std::lock_guard<std::mutex> lock(mutex);
+    if (remote) {
+      done += s.count;
+      if (options.progress) options.progress(done, total);
+    }
+    if (b == 0) result.realization0_files = std::move(files);
+    result.blocks[b] = std::move(s);
+  };
+  run_blocks_mpi(work);
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return std::move(plan.result);
+}
+
+}  // namespace coldblast::run

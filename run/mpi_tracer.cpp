@@ -1,0 +1,77 @@
+#include "run/mpi_tracer.hpp"
+
+#include <chrono>
+#include <map>
+#include <mutex>
+
+#include "run/mpi_ensemble.hpp"
+
+namespace coldblast::run {
+
+namespace {
+
+std::vector<char> to_bytes(const kinetic::TracerBlockSums& block) {
+  ByteWriter w;
+  put_block_sums(w, block.sums);
+  const kinetic::TracerBlock& t = block.tracer;
+  w.put_doubles(t.moments);
+  w.put<double>(t.collisions_squares);
+  w.put<double>(t.v2_final);
+  w.put<double>(t.v2_final_squares);
+  w.put<std::uint64_t>(t.candidates);
+  w.put<std::uint64_t>(t.collisions);
+  w.put<std::int64_t>(t.count);
+  return std::move(w.bytes);
+}
+
+kinetic::TracerBlockSums from_bytes(const std::vector<char>& bytes) {
+  ByteReader r(bytes);
+  kinetic::TracerBlockSums block;
+  block.sums = get_block_sums(r);
+  kinetic::TracerBlock& t = block.tracer;
+  t.moments = r.get_doubles();
+  t.collisions_squares = r.get<double>();
+  t.v2_final = r.get<double>();
+  t.v2_final_squares = r.get<double>();
+  t.candidates = r.get<std::uint64_t>();
+  t.collisions = r.get<std::uint64_t>();
+  t.count = r.get<std::int64_t>();
+  return block;
+}
+
+}  // namespace
+
+TracerResult run_tracer_mpi(const kinetic::TracerConfig& config, const TracerProgress& progress) {
+  const int ranks = MpiSession::size();
+  if (ranks == 1) return run_tracer(config, progress);
+  const auto started = std::chrono::steady_clock::now();
+  config.validate();
+  // Every rank: validation (bad input ends every rank alike), the start states and the background.
+  const kinetic::TracerRun run(with_start_states(config), progress.background);
+  std::mutex mutex;  // guards the blocks and done
+  std::map<long long, kinetic::TracerBlockSums> finished;
+  long long done = 0;
+  const auto total = static_cast<long long>(run.blocks().size());
+  MpiBlockWork work;
+  work.threads = config.threads;
+  work.pending = run.blocks();
+  work.run = [&](long long b, const std::atomic<bool>& stop) { return to_bytes(run.run_block(b, stop)); };
+  work.finish = [&](long long b, std::vector<char>&& bytes, bool) {
+    kinetic::TracerBlockSums block = from_bytes(bytes);
+    std::lock_guard<std::mutex> lock(mutex);
+    finished[b] = std::move(block);
+    ++done;
+    if (progress.blocks) progress.blocks(done, total);
+  };
+  run_blocks_mpi(work);
+  if (MpiSession::rank() != 0) return TracerResult{};
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  TracerResult result = tracer_result(run.info(), wall, ranks);
+  for (auto& [b, block] : finished) {
+    result.ensemble.blocks[b] = std::move(block.sums);
+    result.blocks[b] = std::move(block.tracer);
+  }
+  return result;
+}
+
+}  // namespace coldblast::run

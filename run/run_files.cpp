@@ -1,0 +1,412 @@
+#include "run/run_files.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/input.hpp"
+#include "common/validate.hpp"
+#include "md/observers.hpp"
+#include "run/scene_file.hpp"
+#include "theory/observables.hpp"
+#include "theory/prefactors.hpp"
+
+namespace coldblast::run {
+
+using md::BlockSums;
+using md::ObservableLayout;
+using md::ResolvedScene;
+
+namespace {
+using common::format_number;
+namespace fs = std::filesystem;
+
+const char* units_text = "m = 1 (host mass), k_B = 1, lengths and times in the scene's units (a = host radius)";
+const char* accumulator_header = "block,entry,channel,t,bin,sum,sum_squares";
+const char* block_totals_header = "block,count,collisions,energy_error_max";
+
+std::string number_or_nan(double v) {
+  return std::isfinite(v) ? format_number(v) : "nan";
+}
+}  // namespace
+
+long long BlastResult::realizations() const {
+  long long n = 0;
+  for (const auto& [b, s] : blocks) n += s.count;
+  return n;
+}
+
+std::uint64_t BlastResult::collisions() const {
+  std::uint64_t n = 0;
+  for (const auto& [b, s] : blocks) n += s.collisions;
+  return n;
+}
+
+double BlastResult::energy_error_max() const {
+  double e = 0.0;
+  for (const auto& [b, s] : blocks) e = std::max(e, s.energy_error_max);
+  return e;
+}
+
+EnsembleTotals ensemble_totals(const BlastResult& result) {
+  const std::size_t size = ObservableLayout(result.scene).size();
+  EnsembleTotals totals;
+  totals.sum.assign(size, 0.0);
+  totals.sum_squares.assign(size, 0.0);
+  for (const auto& [b, s] : result.blocks) {  // block order: identical for any threads/shards
+    for (std::size_t e = 0; e < size; ++e) {
+      totals.sum[e] += s.sum[e];
+      totals.sum_squares[e] += s.sum_squares[e];
+    }
+    totals.count += s.count;
+  }
+  return totals;
+}
+
+double EnsembleTotals::standard_error(std::size_t e) const {
+  if (count < 2) return std::nan("");
+  const double mean = sum[e] / count;
+  return std::sqrt(std::max(0.0, (sum_squares[e] - sum[e] * mean) / (count - 1)) / count);
+}
+
+std::vector<ObservableEstimate> estimate_observables(const BlastResult& result) {
+  const ResolvedScene& scene = result.scene;
+  const ObservableLayout layout(scene);
+  const EnsembleTotals totals = ensemble_totals(result);
+  const long long N = totals.count;
+  std::vector<ObservableEstimate> rows;
+  for (std::size_t k = 0; k < scene.times.size(); ++k)
+    for (const std::string& name : md::scalar_observable_names()) {
+      const int e = layout.scalar(name, static_cast<int>(k));
+      if (e < 0) continue;
+      const double mean = totals.sum[e] / N;
+      double value = mean, error = totals.standard_error(e);
+      if (theory::observable_info(name).transform == theory::Transform::sqrt) {
+        // Eq. (38) (and u_flow): sqrt of the ensemble mean; delta method. u_flow's mean of
+        // |ū|² − s²/N can be <= 0 when the flow is below the noise: reported as 0.
+        value = mean > 0.0 ? theory::apply_transform(theory::Transform::sqrt, mean) : 0.0;
+        error = value > 0.0 ? error / (2.0 * value) : std::nan("");
+      }
+      rows.push_back({scene.times[k], name, value, error, N});
+    }
+  return rows;
+}
+
+std::string run_file_header(const ResolvedScene& s, const common::HeaderFields& extra) {
+  common::HeaderFields fields = {{"scene", s.config.name},
+                                 {"seed", std::to_string(s.config.seed)},
+                                 {"A_d", format_number(s.A_d) + " (" + s.A_d_source + ")"},
+                                 {"particles", std::to_string(s.particle_count)},
+                                 {"region_radius", format_number(s.region_radius)}};
+  fields.insert(fields.end(), extra.begin(), extra.end());
+  std::string header = common::provenance_header(fields, units_text) + "# resolved scene (TOML):\n";
+  std::istringstream toml_lines(scene_toml(s.config));
+  std::string line;
+  while (std::getline(toml_lines, line))
+    if (!line.empty()) header += "#   " + line + "\n";
+  return header;
+}
+
+common::Json blast_summary(const BlastResult& result) {
+  const ResolvedScene& s = result.scene;
+  const md::BlastConfig& c = s.config;
+  std::ostringstream scene_json;
+  scene_json << toml::json_formatter{toml::parse(std::string_view(scene_toml(c)))};
+  // Cost figures count the work done in wall_seconds: without the blocks a resumed run loaded.
+  const double collisions = static_cast<double>(result.collisions() - result.resumed_collisions);
+  const long long realizations_run = result.realizations() - result.resumed_realizations;
+  common::Json j;
+  j["scene"] = common::Json::parse(scene_json.str());
+  j["seed"] = c.seed;
+  j["realizations"] = result.realizations();
+  j["collisions_total"] = result.collisions();
+  j["wall_seconds"] = result.wall_seconds;
+  j["collisions_per_second"] = result.wall_seconds > 0.0 ? collisions / result.wall_seconds : 0.0;
+  j["energy_error_max"] = result.energy_error_max();
+  j["d"] = c.d;
+  j["n"] = c.n;
+  j["a"] = c.a;
+  j["E"] = c.E;
+  j["phi"] = s.phi;
+  j["lambda"] = s.lambda;
+  j["A_d"] = s.A_d;
+  j["A_d_source"] = s.A_d_source;
+  j["particles"] = s.particle_count;
+  j["region_radius"] = s.region_radius;
+  j["R_theory_at_t_max"] = s.shock_radius_at_t_max;
+  j["R_over_lambda_at_t_max"] = s.shock_radius_at_t_max / s.lambda;
+  j["recording_times"] = s.times.size();
+  j["block_size"] = c.block_size;
+  j["blocks"] = result.blocks.size();
+  j["seconds_per_realization"] =
+      realizations_run > 0 ? result.wall_seconds * result.threads * result.ranks / realizations_run : 0.0;
+  j["resumed_realizations"] = result.resumed_realizations;
+  j["resumed_collisions"] = result.resumed_collisions;
+  j["threads"] = result.threads;
+  j["ranks"] = result.ranks;
+  j["shard"] = std::to_string(result.shard_index) + "/" + std::to_string(result.shard_count);
+  j["scene_toml"] = scene_toml(c);
+  return j;
+}
+
+namespace {
+
+void write_observables_csv(const BlastResult& result, const std::string& header, const fs::path& directory) {
+  std::ostringstream out;
+  out << header << "t,observable,mean,stderr,count\n";
+  for (const auto& row : estimate_observables(result))
+    out << format_number(row.t) << ',' << row.observable << ',' << number_or_nan(row.mean) << ','
+        << number_or_nan(row.stderr_) << ',' << row.count << '\n';
+  common::write_file_atomic(directory / "observables.csv", out.str());
+}
+
+/// blocks.csv (scalar sums, read by compare/), accumulators.csv and block_totals.csv (every entry
+/// and block total, exact: read back by merge_blast_outputs).
+void write_block_files(const BlastResult& result, const std::string& header, const fs::path& directory) {
+  const ResolvedScene& scene = result.scene;
+  const ObservableLayout layout(scene);
+  std::ostringstream out, acc, totals;
+  out << header << "block,t,observable,sum,count\n";
+  acc << header << accumulator_header << '\n';
+  totals << header << block_totals_header << '\n';
+  for (const auto& [b, s] : result.blocks) {
+    for (std::size_t k = 0; k < scene.times.size(); ++k)
+      for (const std::string& name : md::scalar_observable_names()) {
+        const int e = layout.scalar(name, static_cast<int>(k));
+        if (e >= 0)
+          out << b << ',' << format_number(scene.times[k]) << ',' << name << ',' << format_number(s.sum[e]) << ','
+              << s.count << '\n';
+      }
+    for (std::size_t e = 0; e < layout.size(); ++e)
+      acc << b << ',' << e << ',' << layout.channel(e) << ',' << format_number(scene.times[layout.time_index(e)]) << ','
+          << layout.bin(e) << ',' << format_number(s.sum[e]) << ',' << format_number(s.sum_squares[e]) << '\n';
+    totals << b << ',' << s.count << ',' << s.collisions << ',' << format_number(s.energy_error_max) << '\n';
+  }
+  common::write_file_atomic(directory / "blocks.csv", out.str());
+  common::write_file_atomic(directory / "accumulators.csv", acc.str());
+  common::write_file_atomic(directory / "block_totals.csv", totals.str());
+}
+
+void write_profiles_csv(const BlastResult& result, const EnsembleTotals& totals, const std::string& header,
+                        const fs::path& directory) {
+  const ResolvedScene& scene = result.scene;
+  const ObservableLayout layout(scene);
+  const std::vector<double>& S = totals.sum;
+  const double N = static_cast<double>(totals.count);
+  std::ostringstream out;
+  out << header
+      << "t,bin,r_over_R_lo,r_over_R_hi,density_over_n,density_stderr,radial_velocity,temperature,particles\n";
+  const int bins = scene.config.profile_bins;
+  const double width = 1.5 / bins;
+  for (std::size_t k = 0; k < scene.times.size(); ++k)
+    for (int b = 0; b < bins; ++b) {
+      const int e0 = layout.profile(static_cast<int>(k), b, 0);
+      const double count = S[e0 + 3];
+      const double u = count > 0 ? S[e0 + 1] / count : 0.0;
+      const double T = count > 0 ? std::max(0.0, (S[e0 + 2] / count - u * u) / scene.config.d) : 0.0;
+      out << format_number(scene.times[k]) << ',' << b << ',' << format_number(b * width) << ','
+          << format_number((b + 1) * width) << ',' << format_number(S[e0] / N) << ','
+          << number_or_nan(totals.standard_error(e0)) << ',' << format_number(u) << ',' << format_number(T) << ','
+          << format_number(count / N) << '\n';
+    }
+  common::write_file_atomic(directory / "profiles.csv", out.str());
+}
+
+/// p_imp.csv: Eq. (39) [eq:pr]'s radial density in bins of width R(t)/bins, R(t) of Eq. (1).
+void write_p_imp_csv(const BlastResult& result, const EnsembleTotals& totals, const std::string& header,
+                     const fs::path& directory) {
+  const ResolvedScene& scene = result.scene;
+  const ObservableLayout layout(scene);
+  const double N = static_cast<double>(totals.count);  // streamed as a double, as always
+  std::ostringstream out;
+  out << header << "t,bin,r_lo,r_hi,r,p,p_stderr,count\n";
+  const int bins = scene.config.p_imp_bins;
+  const theory::BlastParameters p{scene.config.d, scene.config.n, scene.config.a, scene.config.E, scene.A_d};
+  for (std::size_t k = 0; k < scene.times.size(); ++k) {
+    const double width = theory::shock_radius(p, scene.times[k]) / bins;
+    for (int b = 0; b < bins; ++b) {
+      const int e = layout.p_imp(static_cast<int>(k), b);
+      out << format_number(scene.times[k]) << ',' << b << ',' << format_number(b * width) << ','
+          << format_number((b + 1) * width) << ',' << format_number((b + 0.5) * width) << ','
+          << format_number(totals.sum[e] / N / width) << ',' << number_or_nan(totals.standard_error(e) / width) << ','
+          << N << '\n';
+    }
+  }
+  common::write_file_atomic(directory / "p_imp.csv", out.str());
+}
+
+}  // namespace
+
+void write_blast_outputs(const BlastResult& result, const fs::path& directory) {
+  common::remove_stale_temporaries(directory);  // writes of a killed earlier attempt
+  const ObservableLayout layout(result.scene);
+  const std::string header = run_file_header(result.scene);
+  write_observables_csv(result, header, directory);
+  write_block_files(result, header, directory);
+  const EnsembleTotals totals = ensemble_totals(result);
+  if (layout.has_profiles() && totals.count > 0) write_profiles_csv(result, totals, header, directory);
+  if (layout.has_p_imp() && totals.count > 0) write_p_imp_csv(result, totals, header, directory);
+  for (const auto& [name, content] : result.realization0_files) common::write_file_atomic(directory / name, content);
+  common::write_file_atomic(directory / "summary.json", blast_summary(result).dump(2) + "\n");
+}
+
+namespace {
+
+/// The block sums of one shard directory, read back exactly from block_totals.csv and accumulators.csv.
+std::map<long long, BlockSums> read_block_sums(const fs::path& dir, const ObservableLayout& layout) {
+  std::map<long long, BlockSums> blocks;
+  const common::CsvTable totals = common::parse_csv(common::read_text(dir / "block_totals.csv", "md merge DIR file"),
+                                                    (dir / "block_totals.csv").string(), block_totals_header);
+  for (const common::CsvRow& row : totals.rows) {
+    const std::string where = totals.where(row);
+    BlockSums s;
+    s.count = common::parse_count(row.fields[1], where);
+    s.collisions = static_cast<std::uint64_t>(common::parse_count(row.fields[2], where));
+    s.energy_error_max = common::parse_number_or_nan(row.fields[3], where);
+    s.sum.assign(layout.size(), 0.0);
+    s.sum_squares.assign(layout.size(), 0.0);
+    blocks[common::parse_count(row.fields[0], where)] = s;
+  }
+  const common::CsvTable accumulators =
+      common::parse_csv(common::read_text(dir / "accumulators.csv", "md merge DIR file"),
+                        (dir / "accumulators.csv").string(), accumulator_header);
+  for (const common::CsvRow& row : accumulators.rows) {
+    const std::string where = accumulators.where(row);
+    const auto block = blocks.find(common::parse_count(row.fields[0], where));
+    const auto e = static_cast<std::size_t>(common::parse_count(row.fields[1], where));
+    if (block == blocks.end() || e >= layout.size() || row.fields[2] != layout.channel(e))
+      throw std::invalid_argument("md merge: " + where + " does not match the scene layout");
+    block->second.sum[e] = common::parse_number_or_nan(row.fields[5], where);
+    block->second.sum_squares[e] = common::parse_number_or_nan(row.fields[6], where);
+  }
+  return blocks;
+}
+
+bool is_realization0_file(const std::string& name) {
+  return name == "trajectories.csv" || name == "snapshots.extxyz" ||
+         (name.rfind("snapshot_", 0) == 0 && name.size() > 4 && name.substr(name.size() - 4) == ".csv");
+}
+
+}  // namespace
+
+namespace {
+/// What md merge takes from a shard's summary.json.
+struct MergedSummary {
+  std::string scene_toml;
+  double wall_seconds = 0.0;
+  long long resumed_realizations = 0, resumed_collisions = 0;
+  int threads = 1;
+  // As the shards resolved the scene (absent in old files): where A_d came from, and the region
+  // (the tracer's has no particles), which md's resolve_scene would otherwise size anew.
+  std::optional<std::string> A_d_source;
+  std::optional<long long> particles;
+  std::optional<double> region_radius;
+};
+
+/// Reads summary.json of a shard: a malformed file or field is bad input (std::invalid_argument
+/// naming the file and the key), not a runtime failure (found by fuzz/fuzz_run_directory.cpp).
+MergedSummary read_merged_summary(const std::filesystem::path& path) {
+  const std::string text = common::read_text(path, "md merge DIR file");
+  const auto bad = [&](const std::string& what) {
+    return std::invalid_argument("md merge: " + path.string() + ": " + what);
+  };
+  try {
+    const common::Json s = common::Json::parse(text);
+    if (!s.is_object()) throw bad("not a JSON object");
+    const auto count = [&](const char* key, long long fallback, long long most) {
+      if (!s.contains(key)) {
+        if (fallback < 0) throw bad(std::string("no '") + key + "'");
+        return fallback;
+      }
+      const common::Json& v = s.at(key);
+      if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > most)
+        throw bad(std::string("'") + key + "' = " + v.dump() + " is not a count in [0, " + std::to_string(most) + "]");
+      return v.get<long long>();
+    };
+    MergedSummary m;
+    if (!s.contains("scene_toml") || !s.at("scene_toml").is_string()) throw bad("no 'scene_toml' string");
+    m.scene_toml = s.at("scene_toml").get<std::string>();
+    if (!s.contains("wall_seconds") || !s.at("wall_seconds").is_number() ||
+        !(s.at("wall_seconds").get<double>() >= 0.0) || !std::isfinite(s.at("wall_seconds").get<double>()))
+      throw bad("no finite 'wall_seconds' >= 0");
+    m.wall_seconds = s.at("wall_seconds").get<double>();
+    m.resumed_realizations = count("resumed_realizations", 0, std::numeric_limits<long long>::max());
+    m.resumed_collisions = count("resumed_collisions", 0, std::numeric_limits<long long>::max());
+    m.threads = static_cast<int>(count("threads", -1, 1 << 20));
+    if (s.contains("A_d_source")) {
+      if (!s.at("A_d_source").is_string()) throw bad("'A_d_source' is not a string");
+      m.A_d_source = s.at("A_d_source").get<std::string>();
+    }
+    if (s.contains("particles")) m.particles = count("particles", -1, std::numeric_limits<long long>::max());
+    if (s.contains("region_radius")) {
+      const common::Json& v = s.at("region_radius");
+      if (!v.is_number() || !(v.get<double>() > 0.0) || !std::isfinite(v.get<double>()))
+        throw bad("'region_radius' = " + v.dump() + " is not a finite number > 0");
+      m.region_radius = v.get<double>();
+    }
+    return m;
+  } catch (const common::Json::exception& e) {
+    throw bad(e.what());
+  }
+}
+}  // namespace
+
+std::string partial_merge_note(const BlastResult& merged) {
+  const long long expected = merged.scene.config.realizations, got = merged.realizations();
+  if (got >= expected) return "";
+  const long long block_size = merged.scene.config.block_size;
+  const long long blocks = (expected + block_size - 1) / block_size;
+  std::string missing;
+  int listed = 0;
+  for (long long b = 0; b < blocks; ++b) {
+    if (merged.blocks.count(b)) continue;
+    if (listed++ == 8) {
+      missing += ", ...";
+      break;
+    }
+    missing += (missing.empty() ? "" : ", ") + std::to_string(b);
+  }
+  return "md merge: " + std::to_string(got) + " of the scene's " + std::to_string(expected) + " realizations (blocks " +
+         missing + " missing): a partial ensemble";
+}
+
+BlastResult merge_blast_outputs(const std::vector<fs::path>& directories) {
+  if (directories.empty()) throw std::invalid_argument("md merge: no input directories");
+  BlastResult merged;
+  std::string scene_toml;
+  for (const auto& dir : directories) {
+    const MergedSummary summary = read_merged_summary(dir / "summary.json");
+    const std::string& toml_text = summary.scene_toml;
+    if (scene_toml.empty()) {
+      scene_toml = toml_text;
+      merged.scene = md::resolve_scene(parse_scene(toml_text, {}, (dir / "summary.json").string()));
+      if (summary.A_d_source) merged.scene.A_d_source = *summary.A_d_source;
+      if (summary.particles) merged.scene.particle_count = static_cast<std::size_t>(*summary.particles);
+      if (summary.region_radius) merged.scene.region_radius = *summary.region_radius;
+    } else if (toml_text != scene_toml) {
+      throw std::invalid_argument("md merge: " + dir.string() + " ran a different scene than " +
+                                  directories.front().string());
+    }
+    merged.wall_seconds += summary.wall_seconds;
+    merged.resumed_realizations += summary.resumed_realizations;
+    merged.resumed_collisions += static_cast<std::uint64_t>(summary.resumed_collisions);
+    merged.threads = std::max(merged.threads, summary.threads);
+    for (auto& [b, s] : read_block_sums(dir, ObservableLayout(merged.scene))) {
+      if (merged.blocks.count(b))
+        throw std::invalid_argument("md merge: block " + std::to_string(b) + " appears twice (" + dir.string() + ")");
+      merged.blocks[b] = std::move(s);
+    }
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      const std::string name = entry.path().filename().string();
+      if (is_realization0_file(name)) merged.realization0_files.push_back({name, common::read_text(entry.path())});
+    }
+  }
+  return merged;
+}
+
+}  // namespace coldblast::run

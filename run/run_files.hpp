@@ -1,0 +1,80 @@
+#pragma once
+// Run directories (docs/md-output.md): a finished ensemble's block sums, the estimates and files
+// written from them (observables.csv, blocks.csv, accumulators.csv, block_totals.csv, profiles.csv,
+// p_imp.csv, summary.json), and the exact merge of shard directories. Any producer of per-realization
+// records laid out by md::ObservableLayout (run/ensemble.*, or the kinetic tracer, run/tracer_run.*)
+// writes through here:
+//   md::ObservableLayout layout(scene); BlastResult result{scene};
+//   for each realization r: md::add_realization(result.blocks[r / block_size], record, collisions, energy_error);
+//   write_blast_outputs(result, directory);
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/output.hpp"
+#include "md/blast_config.hpp"
+#include "md/block_sums.hpp"
+
+namespace coldblast::run {
+
+/// Files of single realizations (snapshot_<t>.csv, snapshots.extxyz, trajectories.csv): name → content.
+using NamedFiles = std::vector<std::pair<std::string, std::string>>;
+
+/// A finished (or merged) ensemble.
+struct BlastResult {
+  md::ResolvedScene scene;
+  std::map<long long, md::BlockSums> blocks;  ///< by block index
+  double wall_seconds = 0.0;
+  /// Realizations and collisions of blocks loaded from a checkpoint (`--resume`), not run in
+  /// wall_seconds: the cost figures of the summary leave them out.
+  long long resumed_realizations = 0;
+  std::uint64_t resumed_collisions = 0;
+  int threads = 1, shard_index = 0, shard_count = 1;
+  int ranks = 1;  ///< MPI ranks that ran the ensemble (run/mpi_ensemble.hpp), each with `threads` threads
+  /// Extra files of realization 0 (snapshot_<t>.csv, trajectories.csv): name → content.
+  NamedFiles realization0_files;
+
+  long long realizations() const;
+  std::uint64_t collisions() const;
+  double energy_error_max() const;
+};
+
+/// The block sums totalled in block order (identical for any threads/shards): per record entry.
+struct EnsembleTotals {
+  std::vector<double> sum, sum_squares;
+  long long count = 0;
+  /// Standard error of the mean of entry e, sqrt(s²/N); NaN for N < 2.
+  double standard_error(std::size_t e) const;
+};
+EnsembleTotals ensemble_totals(const BlastResult& result);
+
+/// One row of observables.csv.
+struct ObservableEstimate {
+  double t;
+  std::string observable;
+  double mean, stderr_;
+  long long count;
+};
+
+/// Empty when `merged` holds every block of its scene; otherwise a one-line note for stderr, e.g.
+/// "md merge: 2 of the scene's 4 realizations (blocks 1, 3 missing): a partial ensemble", so that a
+/// merge of some shards is not mistaken for the whole run (md merge accepts it: a progress check).
+std::string partial_merge_note(const BlastResult& merged);
+
+/// The ensemble estimates (mean, standard error) of the scalar observables, in output order, with
+/// the catalogue's transform (theory/observables.hpp; Eq. (38)'s square root by the delta method).
+std::vector<ObservableEstimate> estimate_observables(const BlastResult& result);
+/// Provenance header of every run file: the standard block, the scene's derived sizes, `extra`,
+/// then the resolved scene as commented TOML lines ("#   key = value").
+std::string run_file_header(const md::ResolvedScene& scene, const common::HeaderFields& extra = {});
+/// Summary document (the content of summary.json).
+common::Json blast_summary(const BlastResult& result);
+/// Writes every output file into `directory` (atomically, file by file).
+void write_blast_outputs(const BlastResult& result, const std::filesystem::path& directory);
+/// Reads shard directories written by write_blast_outputs and combines them exactly.
+BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& directories);
+
+}  // namespace coldblast::run

@@ -1,0 +1,150 @@
+// Checkpoints (md/checkpoint.hpp): block sums round-trip bit-exactly through their text (including
+// subnormals and extreme exponents), malformed files and a different scene are rejected naming
+// --resume, and a run resumed from a partial checkpoint equals the uninterrupted run.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <random>
+
+#include "common/interrupt.hpp"
+#include "md/observers.hpp"
+#include "run/checkpoint.hpp"
+#include "run/ensemble.hpp"
+#include "run/scene_file.hpp"
+#include "tests/temp_path.hpp"
+
+using namespace coldblast::md;
+using namespace coldblast::run;
+namespace fs = std::filesystem;
+
+namespace {
+bool same_bits(double x, double y) {
+  return std::memcmp(&x, &y, sizeof x) == 0;
+}
+
+BlockSums random_sums(std::size_t entries, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1070, 1020);
+  BlockSums s;
+  for (std::size_t e = 0; e < entries; ++e) {
+    s.sum.push_back(std::ldexp(mantissa(rng), exponent(rng)));
+    s.sum_squares.push_back(std::ldexp(std::abs(mantissa(rng)), exponent(rng)));
+  }
+  s.sum[0] = std::numeric_limits<double>::denorm_min();
+  s.sum[1] = std::numeric_limits<double>::max();
+  s.sum[2] = -0.0;
+  s.sum[3] = 0.1;
+  s.count = 16;
+  s.collisions = 18446744073709551615ULL;
+  s.energy_error_max = 3.3306690738754696e-16;
+  return s;
+}
+
+fs::path fresh_directory(const std::string& name) {
+  const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_checkpoint_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+}  // namespace
+
+TEST_CASE("checkpoint block text round-trips every bit", "[fast]") {
+  const std::uint64_t seed = 20261121;
+  INFO("seed " << seed);
+  const BlockSums s = random_sums(500, seed);
+  const BlockSums r = parse_checkpoint_block(checkpoint_block_text(7, s), 7, 500, 16, "test");
+  CHECK(r.count == s.count);
+  CHECK(r.collisions == s.collisions);
+  CHECK(same_bits(r.energy_error_max, s.energy_error_max));
+  REQUIRE(r.sum.size() == s.sum.size());
+  std::size_t differing = 0;
+  for (std::size_t e = 0; e < s.sum.size(); ++e)
+    differing += !same_bits(r.sum[e], s.sum[e]) + !same_bits(r.sum_squares[e], s.sum_squares[e]);
+  CHECK(differing == 0);
+}
+
+TEST_CASE("malformed checkpoint blocks are rejected naming --resume", "[fast]") {
+  const BlockSums s = random_sums(10, 1);
+  const std::string text = checkpoint_block_text(3, s);
+  CHECK_THROWS_WITH(parse_checkpoint_block(text, 4, 10, 16, "f"),
+                    Catch::Contains("--resume") && Catch::Contains("block index"));
+  CHECK_THROWS_WITH(parse_checkpoint_block(text, 3, 11, 16, "f"), Catch::Contains("entries"));
+  CHECK_THROWS_WITH(parse_checkpoint_block(text, 3, 10, 15, "f"), Catch::Contains("count = 16"));
+  CHECK_THROWS_WITH(parse_checkpoint_block(text.substr(0, text.size() / 2), 3, 10, 16, "f"),
+                    Catch::Contains("--resume: malformed"));
+  std::string corrupt = text;
+  corrupt.replace(corrupt.find("0x", corrupt.find("entries")), 2, "zz");
+  CHECK_THROWS_WITH(parse_checkpoint_block(corrupt, 3, 10, 16, "f"), Catch::Contains("not a finite number"));
+}
+
+TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run", "[slow]") {
+  const BlastConfig config =
+      parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2", "A_d=0.351935906848599",
+                                         R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
+  const fs::path dir = fresh_directory("resume");
+  RunOptions options;
+  options.threads = 2;
+  options.checkpoint = dir;
+  const BlastResult full = run_blast(config, options);
+  for (long long b = 0; b < 5; ++b) REQUIRE(fs::exists(dir / ("block_" + std::to_string(b) + ".txt")));
+  // Simulate a kill: blocks 1 and 4 never finished.
+  fs::remove(dir / "block_1.txt");
+  fs::remove(dir / "block_4.txt");
+  options.resume = true;
+  options.threads = 1;
+  long long ran = 0;
+  options.progress = [&](long long done, long long) { ran = done; };
+  const BlastResult resumed = run_blast(config, options);
+  CHECK(ran == 3);  // block 1 (2 realizations) and block 4 (1)
+  REQUIRE(resumed.blocks.size() == full.blocks.size());
+  for (const auto& [b, s] : full.blocks) {
+    const BlockSums& r = resumed.blocks.at(b);
+    CHECK(r.count == s.count);
+    CHECK(r.collisions == s.collisions);
+    CHECK(r.sum == s.sum);
+    CHECK(r.sum_squares == s.sum_squares);
+  }
+  CHECK(resumed.realization0_files == full.realization0_files);
+  CHECK(!full.realization0_files.empty());
+
+  // A different scene is refused, naming the key.
+  const BlastConfig other =
+      parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2", "E=11", "A_d=0.351935906848599",
+                                         R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
+  CHECK_THROWS_WITH(run_blast(other, options), Catch::Contains("--resume") && Catch::Contains("E = 10 there, 11 now"));
+  fs::remove_all(dir);
+  CHECK_THROWS_WITH(run_blast(config, options), Catch::Contains("no checkpoint"));
+}
+
+TEST_CASE("a stop request ends a run between realizations, and resuming it equals the uninterrupted run", "[slow]") {
+  const BlastConfig config = parse_scene(
+      default_scene_toml(),
+      {"t_max=40", "realizations=7", "block_size=2", "A_d=0.351935906848599", R"(observables=["R_imp","n0"])"});
+  RunOptions options;
+  const BlastResult full = run_blast(config, options);
+  const fs::path dir = fresh_directory("interrupt");
+  options.checkpoint = dir;
+  // The stop arrives after the third realization, inside block 1: blocks 0 is saved, block 1 is not.
+  options.progress = [](long long done, long long) {
+    if (done == 3) coldblast::common::request_stop(SIGINT);
+  };
+  CHECK_THROWS_AS(run_blast(config, options), coldblast::common::Interrupted);
+  CHECK(coldblast::common::stop_signal() == SIGINT);
+  coldblast::common::clear_stop();
+  CHECK(fs::exists(dir / "block_0.txt"));
+  CHECK_FALSE(fs::exists(dir / "block_1.txt"));
+  options.resume = true;
+  long long ran = 0;
+  options.progress = [&](long long done, long long) { ran = done; };
+  const BlastResult resumed = run_blast(config, options);
+  CHECK(ran == 5);  // blocks 1, 2 (2 realizations each) and 3 (1)
+  REQUIRE(resumed.blocks.size() == full.blocks.size());
+  for (const auto& [b, s] : full.blocks) {
+    CHECK(resumed.blocks.at(b).sum == s.sum);
+    CHECK(resumed.blocks.at(b).sum_squares == s.sum_squares);
+  }
+  fs::remove_all(dir);
+}
