@@ -1,5 +1,5 @@
-// md/states: the impurities' states at a recorded time are those of md run's realizations (their
-// R_imp, V_imp and C_imp reproduce the ensemble's to round-off), the same for any thread count, and
+// md states (run/impurity_states.*): the impurities' states at a recorded time are those of md run's realizations
+// (their R_imp, V_imp and C_imp reproduce the ensemble's to round-off), the same for any thread count, and
 // impurity_states.csv reads back bit for bit; bad input names the option.
 #include <catch2/catch.hpp>
 #include <cmath>
