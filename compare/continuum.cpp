@@ -6,7 +6,7 @@
 
 #include "common/output.hpp"
 #include "common/validate.hpp"
-#include "compare/verdict.hpp"
+#include "compare/run_data.hpp"
 #include "hydro/tvns.hpp"
 #include "theory/prefactors.hpp"
 

@@ -8,8 +8,7 @@
 
 #include "common/output.hpp"
 #include "common/validate.hpp"
-#include "compare/report.hpp"
-#include "compare/verdict.hpp"
+#include "compare/gnuplot.hpp"
 #include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
@@ -117,18 +116,22 @@ std::string lines_file(const BlastPanel& panel) {
 std::string gnuplot_script(const BlastFigure& figure, const RunData& run) {
   const std::size_t n = figure.panels.size();
   const int columns = n > 1 ? 2 : 1, rows = n > 2 ? 2 : 1;
-  const std::string what = run.d == 2 ? "" : ", slab |z| < " + common::format_number(figure.slab) + ", paths projected";
+  const std::string what =
+      run.d == 2 ? "" : " (slab |z| < " + common::format_significant(figure.slab, 4) + ", paths projected)";
   std::ostringstream s;
-  s << "set terminal pngcairo size " << 720 * columns << "," << 740 * rows << " font 'Sans,12'\n"
-    << "set output 'fig1.png'\nset multiplot layout " << rows << "," << columns
-    << " title 'Blast of realization 0 (d = " << run.d << what << "): moving (red) and resting (blue) particles, "
-    << "impurity paths (black)' font 'Sans,14'\n"
+  // the legend sits in a strip below the panels, never on the particles
+  s << figure_terminal("fig1", {720 * columns, 740 * rows + 80, 12}) << "set multiplot layout " << rows << ","
+    << columns << " margins 0.06,0.98," << 0.14 / rows << "," << 1 - 0.1 / rows << " spacing 0.08,0.1 title "
+    << gnuplot_quoted(scene_caption(run)) << " . \"\\nBlast of realization 0" << what
+    << ": moving (red) and resting (blue) particles, impurity paths (black)\" font 'Sans,14'\n"
     << "set size ratio -1\nset xrange [" << -figure.half_width << ":" << figure.half_width << "]\nset yrange ["
-    << -figure.half_width << ":" << figure.half_width << "]\nset xlabel 'x'\nset ylabel 'y'\n"
-    << "set style fill solid 1.0 noborder\nset key top right box opaque font 'Sans,10' samplen 2\n";
+    << -figure.half_width << ":" << figure.half_width << "]\nset xlabel 'x  [ℓ]'\nset ylabel 'y  [ℓ]'\n"
+    << "set style fill solid 1.0 noborder\nset key at screen 0.5," << 0.012 / rows
+    << " center bottom horizontal box font 'Sans,11' samplen 2\n";
   for (std::size_t i = 0; i < n; ++i) {
     const std::string tag = std::to_string(i), lines = "'fig1_lines_" + tag + ".dat'";
-    s << "set title '(" << static_cast<char>('A' + i) << ") t = " << common::format_number(figure.panels[i].t) << "'\n"
+    s << "set title '(" << static_cast<char>('A' + i) << ") t = " << common::format_significant(figure.panels[i].t, 4)
+      << "'\n"
       << (i == 0 ? "" : "unset key\n") << "plot 'fig1_particles_" << tag
       << ".dat' u 1:2:3:($4 > 0 ? 0xd62728 : 0x8fb0e8) w circles lc rgb variable notitle, "
       << "1/0 w p pt 7 ps 1.2 lc rgb '#d62728' t 'moving', 1/0 w p pt 7 ps 1.2 lc rgb '#8fb0e8' t 'resting', " << lines
@@ -188,7 +191,7 @@ BlastFigure blast_figure(const RunData& run, const fs::path& folder, bool draw) 
   }
   common::write_file_atomic(folder / "fig1.gp", gnuplot_script(figure, run));
   if (draw) run_gnuplot(folder, "fig1.gp");
-  figure.file = "fig1.png";
+  figure.file = "fig1.png";  // and fig1.pdf
   return figure;
 }
 

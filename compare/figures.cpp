@@ -10,7 +10,7 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/figure_blast.hpp"
-#include "compare/report.hpp"
+#include "compare/gnuplot.hpp"
 #include "theory/exponents.hpp"
 #include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
@@ -147,12 +147,14 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
   std::ostringstream data, script;
   data.precision(10);
   const std::string spread = "t^{" + theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time) + "}";
-  script << "set terminal pngcairo size 800,560 font 'Sans,12'\nset output 'p_imp.png'\n"
-         << "set xlabel 'r / " << spread << "'\n"
-         << "set ylabel '" << theory::observable_info("p_imp").label << "(r,t) " << spread << "'\nset key top right\n"
-         << "set title 'Impurity radial distribution (Fig. 3 style): fitted b = "
-         << common::format_measurement(fit.b_fit, fit.b_fit_error) << ", " << theory::observable_info("R_imp").label
-         << "/" << spread << " = " << common::format_significant(fit.b_direct, 4) << "'\n";
+  script << figure_terminal("p_imp", {1100, 640, 12}) << "set xlabel 'r / " << spread << "'\n"
+         << "set ylabel '" << theory::observable_info("p_imp").label << "(r,t) " << spread << "'\n"
+         << "set key below\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt 3\n"
+         << "set title " << gnuplot_quoted(scene_caption(run))
+         << " . \"\\nImpurity radial distribution (Fig. 3 style): "
+         << "fitted b = " << common::format_measurement(fit.b_fit, fit.b_fit_error) << ", "
+         << theory::observable_info("R_imp").label << "/" << spread << " = "
+         << common::format_significant(fit.b_direct, 4) << "\"\n";
   std::string plot = "plot ";
   for (std::size_t i = first; i < times.size(); ++i) {
     const double scale = std::pow(times[i], fit.spread);
@@ -160,7 +162,7 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
       data << bin.r / scale << ' ' << bin.p * scale << ' ' << bin.error * scale << '\n';
     data << "\n\n";
     plot += "'p_imp.dat' index " + std::to_string(i - first) +
-            " u 1:2:3 w yerrorbars pt 7 ps 0.6 t 't = " + common::format_number(std::round(times[i] * 10) / 10) + "', ";
+            " u 1:2:3 w yerrorbars pt 7 ps 0.6 t 't = " + common::format_significant(times[i], 4) + "', ";
   }
   // Eq. (39) / its d-dimensional form with R_imp = b t^spread, in scaled variables.
   std::ostringstream model;
@@ -180,7 +182,13 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
 // Ṙ = 2R/((d+2)t) from the MD's own R(t) (the Eq. (1) form). Bins reaching beyond the simulated
 // ball (region_radius, when the box margin is < 1.5 R) hold no particles by construction, not
 // vacuum: they are left out.
-std::pair<double, std::string> md_profile_data(const RunData& run, double t_profile) {
+struct MdProfile {
+  double t = 0;
+  std::string data;  ///< r/R, n/n∞, u/Ṙ, T/Ṙ², n's standard error
+  double n_max = 0, n_error_max = 0;
+};
+
+MdProfile md_profile_data(const RunData& run, double t_profile) {
   const CsvTable table = read_numeric_csv(run.directory / "profiles.csv");
   const auto& fields = theory::profile_fields();
   const std::size_t ct = table.column("t"), lo = table.column("r_over_R_lo"), hi = table.column("r_over_R_hi"),
@@ -197,17 +205,29 @@ std::pair<double, std::string> md_profile_data(const RunData& run, double t_prof
                             : INFINITY;
   std::ostringstream data;
   data.precision(10);
+  MdProfile profile;
+  profile.t = t_last;
   for (const auto& row : table.rows)
-    if (row[ct] == t_last && row[hi] <= region)
+    if (row[ct] == t_last && row[hi] <= region) {
+      const double error = std::isfinite(row[ce]) ? row[ce] : 0.0;
       data << 0.5 * (row[lo] + row[hi]) << ' ' << row[cn] << ' ' << row[cu] / Rdot << ' ' << row[cT] / (Rdot * Rdot)
-           << ' ' << (std::isfinite(row[ce]) ? row[ce] : 0.0) << '\n';
-  return {t_last, data.str()};
+           << ' ' << error << '\n';
+      profile.n_max = std::max(profile.n_max, row[cn]);
+      profile.n_error_max = std::max(profile.n_error_max, error);
+    }
+  profile.data = data.str();
+  return profile;
 }
 
 std::string profile_figure(const RunData& run, const std::vector<ProfileCurve>& continuum, double t_profile,
                            const fs::path& folder) {
-  const auto [t_last, md_data] = md_profile_data(run, t_profile);
-  common::write_file_atomic(folder / "profiles_md.dat", md_data);
+  const MdProfile md = md_profile_data(run, t_profile);
+  const double t_last = md.t;
+  common::write_file_atomic(folder / "profiles_md.dat", md.data);
+  // n's error bars are drawn; a bar shorter than the point (about 1 % of the panel) is hidden by it
+  const std::string md_legend = md.n_error_max > 0.01 * md.n_max
+                                    ? "MD (n with its ±1 standard-error bars)"
+                                    : "MD (n: standard errors < 1 % of its peak, within the points)";
   // Continuum curves as given, one data block each; styles by kind: ideal TvNS grey dotted, TvNS(φ)
   // blue dashed, dilute NS orange, the chosen (dense) NS model thick black.
   static const char* styles[] = {"lw 2 dt 3 lc rgb '#7f7f7f'", "lw 3 dt 2 lc rgb '#1f77b4'",
@@ -231,10 +251,10 @@ std::string profile_figure(const RunData& run, const std::vector<ProfileCurve>& 
   };
   const auto& fields = theory::profile_fields();  // n/n∞, u/Ṙ, T/Ṙ²
   std::ostringstream script;
-  script << "set terminal pngcairo size 1800,1000 font 'Sans,17'\nset output 'profiles.png'\n"
-         << "set multiplot title 'MD (d = " << run.d << ") at t = " << common::format_number(t_last)
-         << " against the continuum at the same R/{/Symbol l}'\n"
-         << "set xlabel 'r/R'\nset xrange [0:1.5]\nset grid\n"
+  script << figure_terminal("profiles", {1800, 1040, 17}) << "set multiplot title "
+         << gnuplot_quoted(scene_caption(run)) << " . \"\\nprofiles at t = " << common::format_significant(t_last, 4)
+         << " against the continuum at the same R/{/Symbol l}\"\n"
+         << "set xlabel 'r/R'\nset xrange [0:1.5]\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt 3\n"
          << "set size 0.5,0.47\nset origin 0,0.47\nunset key\nset ylabel '" << fields[0].label << "'\n"
          << plot(2, "1:2:5 w yerrorbars", false) << "set origin 0.5,0.47\nset ylabel '" << fields[1].label << "'\n"
          << plot(3, "1:3 w p", false) << "set origin 0,0\nset ylabel '" << fields[2].label
@@ -242,7 +262,7 @@ std::string profile_figure(const RunData& run, const std::vector<ProfileCurve>& 
          << plot(4, "1:($4>0?$4:1/0) w p", false) << "unset logscale y\nset yrange [*:*]\n"
          << "set origin 0.5,0\nunset border\nunset tics\nunset xlabel\nunset ylabel\nunset grid\n"
          << "set xrange [0:1]\nset yrange [0:1]\nset key at graph 0.05,0.95 left top Left reverse box spacing 1.3\n"
-         << "plot 2 w p pt 7 ps 1.3 lc rgb '#d62728' t 'MD (points; n with its standard error)'";
+         << "plot 2 w p pt 7 ps 1.3 lc rgb '#d62728' t " << gnuplot_quoted(md_legend);
   for (std::size_t i = 0; i < continuum.size(); ++i)
     script << ", 2 w l " << styles[static_cast<int>(continuum[i].kind)] << " t '" << continuum[i].label << "'";
   script << "\nunset multiplot\n";

@@ -14,6 +14,7 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/figures.hpp"
+#include "compare/gnuplot.hpp"
 #include "compare/tracer_md.hpp"
 #include "theory/observables.hpp"
 
@@ -120,6 +121,10 @@ common::Json verdict_json(const CompareResult& result) {
           {"verdict", verdict_word(result)}};
 }
 
+fs::path default_report_folder(const fs::path& run_dir, Reference against) {
+  return run_dir / ("compare-" + to_string(against));
+}
+
 std::string running_exponents_csv(const CompareResult& result) {
   std::ostringstream out;
   out << common::provenance_header({{"run_dir", result.run.directory.string()}, {"against", to_string(result.against)}},
@@ -130,19 +135,6 @@ std::string running_exponents_csv(const CompareResult& result) {
       out << format_number(r.t) << ',' << format_number(r.t_next) << ',' << v.name << ',' << format_number(r.alpha)
           << ',' << format_number(r.error) << ',' << format_number(v.alpha_theory) << '\n';
   return out.str();
-}
-
-void run_gnuplot(const fs::path& folder, const std::string& script_name) {
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-    throw std::runtime_error("gnuplot is not installed (apt-get install gnuplot-nox), or pass --no-figures");
-  const std::string command = "cd '" + folder.string() + "' && gnuplot '" + script_name + "' 2> gnuplot.log";
-  if (std::system(command.c_str()) != 0) {
-    std::ifstream log(folder / "gnuplot.log");
-    std::stringstream text;
-    text << log.rdbuf();
-    throw std::runtime_error("gnuplot failed on " + (folder / script_name).string() + ":\n" + text.str());
-  }
-  fs::remove(folder / "gnuplot.log");
 }
 
 namespace {
@@ -157,56 +149,64 @@ std::string label(const std::string& name) {
   return info && *info->label != '\0' ? info->label : name;
 }
 
-// Fig. 2 of the paper: log-log panels of the observables, the theory slope through the last
-// point, and an inset of the running exponent with jackknife error bars.
+/// Writes one observable's data files: t, A(t); and sqrt(t t'), the running exponent, its error.
+void write_observable_data(const ObservableVerdict& v, const BlockSeries& s, const fs::path& folder) {
+  const auto values = s.ensemble_values();
+  std::ostringstream data;
+  data.precision(12);
+  for (std::size_t k = 0; k < s.time_count(); ++k) data << s.t[k] << ' ' << values[k] << '\n';
+  common::write_file_atomic(folder / (v.name + ".dat"), data.str());
+  std::ostringstream running;
+  running.precision(12);
+  for (const auto& r : v.running) running << std::sqrt(r.t * r.t_next) << ' ' << r.alpha << ' ' << r.error << '\n';
+  common::write_file_atomic(folder / (v.name + "_alpha.dat"), running.str());
+}
+
+// Fig. 2 of the paper: per observable a log-log panel with the theory slope through the last point,
+// and below it, on the same time axis, the running exponent with its jackknife error bars. The
+// legends sit above the panels, never on the data; the title names the scene.
 void write_observable_figure(const CompareResult& result, const fs::path& folder) {
   std::ostringstream script;
   const std::size_t panels = result.observables.size();
   const int columns = panels > 4 ? 3 : 2;
   const int rows = static_cast<int>((panels + columns - 1) / columns);
-  script << "set terminal pngcairo size " << 520 * columns << "," << 430 * rows << " font 'Sans,11'\n"
-         << "set output 'observables.png'\n"
-         << "set multiplot\n";
+  const double top = 1.0 - 0.12 / rows;  // room for the two title lines
+  script << figure_terminal("observables", {560 * columns, 560 * rows + 60, 11}) << "set multiplot title "
+         << gnuplot_quoted(scene_caption(result.run)) << " . \"\\n"
+         << units_line << "\"\n";
   for (std::size_t i = 0; i < panels; ++i) {
     const auto& v = result.observables[i];
     const BlockSeries& s = result.run.series.at(v.name);
-    const auto values = s.ensemble_values();
-    // Data file: t, A, jackknife-free standard error of A is not needed for the panel (errors
-    // are below symbol size, as in the paper); the inset carries the exponent errors.
-    std::ostringstream data;
-    data.precision(12);
-    for (std::size_t k = 0; k < s.time_count(); ++k) data << s.t[k] << ' ' << values[k] << '\n';
-    common::write_file_atomic(folder / (v.name + ".dat"), data.str());
-    std::ostringstream running;
-    running.precision(12);
-    for (const auto& r : v.running) running << std::sqrt(r.t * r.t_next) << ' ' << r.alpha << ' ' << r.error << '\n';
-    common::write_file_atomic(folder / (v.name + "_alpha.dat"), running.str());
-
-    const double w = 1.0 / columns, h = 1.0 / rows;
+    write_observable_data(v, s, folder);
+    const double w = 1.0 / columns, h = top / rows;
     const double x0 = static_cast<double>(i % columns) * w;
-    const double y0 = 1.0 - static_cast<double>(i / columns + 1) * h;
-    const double t_last = s.t.back(), a_last = values.back();
-    script << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << h << "\n"
-           << "set logscale xy\nset format x '10^{%L}'\nset xlabel 't (units: m = 1, lengths as in the scene)'\n"
-           << "set ylabel '" << label(v.name) << "'\nset key " << (v.alpha_theory > 0 ? "bottom right" : "bottom left")
-           << " font ',9'\n"
-           << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name)
-           << ": {/Symbol a}_T = " << v.alpha_theory_rational << ", {/Symbol a}_S = "
-           << (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
-                   ? common::format_measurement(v.alpha_measured, v.alpha_error)
-                   : std::string("undefined (a mean <= 0)"))
-           << "'\n"
+    const double y0 = top - static_cast<double>(i / columns + 1) * h;
+    const double t_last = s.t.back(), a_last = s.ensemble_values().back();
+    const std::string xrange =
+        "set xrange [" + format_number(s.t.front() / 1.5) + ":" + format_number(t_last * 1.5) + "]\n";
+    const std::string alpha_S = std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
+                                    ? common::format_measurement(v.alpha_measured, v.alpha_error)
+                                    : std::string("undefined (a mean <= 0)");
+    script << "reset\nset origin " << x0 << "," << y0 + 0.36 * h << "\nset size " << w << "," << 0.64 * h << "\n"
+           << "set lmargin 12\nset rmargin 3\nset bmargin 0.5\n"
+           << xrange
+           << "set logscale xy\nset format x ''\nset format y '10^{%L}'\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt "
+              "3\nset ylabel '"
+           << label(v.name) << "'\n"
+           << "set key tmargin right horizontal samplen 2 font ',10'\n"
+           << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name) << ":  {/Symbol a}_S = " << alpha_S
+           << ",  {/Symbol a}_T = " << v.alpha_theory_rational << "'\n"
            << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t '" << run_label(result.run) << "', "
            << a_last << "*(x/" << t_last << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{"
-           << v.alpha_theory_rational << "}'\n";
-    // Inset: running exponent.
-    const bool rising = v.alpha_theory > 0;
-    // Rising curves leave the top left empty, falling ones the top right.
-    script << "reset\nset origin " << x0 + (rising ? 0.14 : 0.52) * w << "," << y0 + 0.52 * h << "\nset size "
-           << 0.42 * w << "," << 0.34 * h << "\nset logscale x\nset format x '10^{%L}'\nset tics font ',8'\n"
-           << "set ylabel '{/Symbol a}(t)' font ',9' offset 1.5,0\nunset key\n"
-           << "plot '" << v.name << "_alpha.dat' u 1:2:3 w yerrorbars pt 7 ps 0.4 lc rgb '#d62728', " << v.alpha_theory
-           << " w l dt 2 lc rgb 'black'\n";
+           << v.alpha_theory_rational << "}'\n"
+           << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << 0.36 * h << "\n"
+           << "set lmargin 12\nset rmargin 3\nset tmargin 0.5\n"
+           << xrange
+           << "set logscale x\nset format x '10^{%L}'\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt 3\nset xlabel '"
+           << time_axis_label << "'\n"
+           << "set ylabel '{/Symbol a}(t)'\n"
+           << "plot '" << v.name << "_alpha.dat' u 1:2:3 w yerrorbars pt 7 ps 0.5 lc rgb '#d62728' notitle, "
+           << v.alpha_theory << " w l dt 2 lc rgb 'black' notitle\n";
   }
   script << "unset multiplot\n";
   common::write_file_atomic(folder / "observables.gp", script.str());
@@ -461,7 +461,7 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
     if (config.figures) {
       write_observable_figure(result, staging / "figures");
       extra = write_extra_figures(result.run, fit, profile_curves(result), staging / "figures", result.until);
-      if (result.tracer_md) write_tracer_md_figures(*result.tracer_md, staging / "figures");
+      if (result.tracer_md) write_tracer_md_figures(*result.tracer_md, scene_caption(result.run), staging / "figures");
     }
     if (result.tracer_md) common::write_file_atomic(staging / "tracer_vs_md.csv", tracer_md_csv(*result.tracer_md));
     if (fit)

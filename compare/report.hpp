@@ -22,6 +22,10 @@ struct ReportConfig {
   bool figures = true;        ///< run gnuplot (Debian gnuplot-nox) to draw PNG figures
 };
 
+/// Where compare writes its report when no folder is given: RUN_DIR/compare-<against> (e.g.
+/// compare-theory), beside the run it judges.
+std::filesystem::path default_report_folder(const std::filesystem::path& run_dir, Reference against);
+
 /// The folder a report at `out` replaces, checked before any work: `out` itself if new, else the
 /// folder it is or points to (a symlink stays a link). It must be new, empty or a previous report
 /// (only report.md, verdict.json, exponents.csv, tracer_vs_md.csv, distribution_fit.json, figures/),
@@ -32,8 +36,5 @@ std::filesystem::path report_folder(const std::filesystem::path& out);
 /// Writes report.md, verdict.json, exponents.csv and (optionally) figures/*.png; returns the
 /// paths written. Throws std::runtime_error if gnuplot is needed but missing or fails.
 std::vector<std::filesystem::path> write_report(const CompareResult& result, const ReportConfig& config);
-
-/// Runs `gnuplot script` in `folder`; throws std::runtime_error with gnuplot's stderr on failure.
-void run_gnuplot(const std::filesystem::path& folder, const std::string& script_name);
 
 }  // namespace coldblast::compare

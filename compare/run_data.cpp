@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/input.hpp"
+#include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
 
@@ -138,6 +139,30 @@ RunData read_run(const std::filesystem::path& directory) {
   run.series = parse_blocks_csv(common::read_text(blocks_path, "RUN_DIR file"), blocks_path.string());
   if (run.series.empty()) throw std::invalid_argument(blocks_path.string() + ": no data rows");
   return run;
+}
+
+double md_R_over_lambda(const RunData& run, double t) {
+  // The MD's own shock radius (observable R, interpolated in ln t) over λ of the run's summary;
+  // without a recorded R, Eq. (1) with the run's E, n and A_d.
+  const auto number = [&](const char* key) {
+    if (!run.summary.contains(key) || !run.summary[key].is_number())
+      throw std::invalid_argument((run.directory / "summary.json").string() + ": no number '" + key + "'");
+    return run.summary[key].get<double>();
+  };
+  const double lambda = number("lambda");
+  const auto found = run.series.find("R");
+  if (found == run.series.end()) {
+    const theory::BlastParameters p{run.d, number("n"), number("a"), number("E"), number("A_d")};
+    return theory::shock_radius(p, t) / lambda;
+  }
+  const BlockSeries& R = found->second;
+  const auto values = R.ensemble_values();
+  if (t <= R.t.front()) return values.front() / lambda;
+  if (t >= R.t.back()) return values.back() / lambda;
+  const auto upper = std::upper_bound(R.t.begin(), R.t.end(), t);
+  const std::size_t k = static_cast<std::size_t>(upper - R.t.begin());
+  const double w = std::log(t / R.t[k - 1]) / std::log(R.t[k] / R.t[k - 1]);
+  return std::exp((1 - w) * std::log(values[k - 1]) + w * std::log(values[k])) / lambda;
 }
 
 }  // namespace coldblast::compare

@@ -52,6 +52,10 @@ bool is_tracer_run(const RunData& run);
 /// What made the run, for headings and legends: "tracer" (the kinetic Monte Carlo of Eq. (36)) or "MD".
 std::string run_label(const RunData& run);
 
+/// The MD's R/λ at time t: its recorded shock radius R (log-interpolated) over summary.json's
+/// lambda, or Eq. (1) with the run's E, n, a, A_d when R was not recorded.
+double md_R_over_lambda(const RunData& run, double t);
+
 /// Reads blocks.csv and summary.json from `directory`; throws std::invalid_argument naming the
 /// file (and line) when the directory, a file or a field is missing or malformed.
 RunData read_run(const std::filesystem::path& directory);

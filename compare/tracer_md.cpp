@@ -9,8 +9,8 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/figures.hpp"
+#include "compare/gnuplot.hpp"
 #include "compare/power_law.hpp"
-#include "compare/report.hpp"
 #include "theory/exponents.hpp"
 #include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
@@ -163,11 +163,12 @@ std::optional<TracerMdDistribution> compare_distribution(const RunData& tracer, 
   return out;
 }
 
-std::string observables_figure(const TracerMdComparison& c, const fs::path& folder) {
+std::string observables_figure(const TracerMdComparison& c, const std::string& caption, const fs::path& folder) {
   const std::size_t n = c.series.size();
   std::ostringstream script;
-  script << "set terminal pngcairo size " << 620 * n << ",900 font 'Sans,13'\nset output 'tracer_vs_md.png'\n"
-         << "set multiplot title 'Impurity in " << c.d << "D: kinetic tracer (Lorentz-Boltzmann, Eq. 36) against MD"
+  script << figure_terminal("tracer_vs_md", {620 * static_cast<int>(n), 940, 13}) << "set multiplot title "
+         << gnuplot_quoted(caption) << " . \"\\n\" . 'Impurity in " << c.d
+         << "D: kinetic tracer (Lorentz-Boltzmann, Eq. 36) against MD"
          << (c.tracer_from_md_states
                  ? ", tracer started at t = " + common::format_significant(c.start_time, 4) + " from the MD impurities"
                  : std::string())
@@ -189,10 +190,11 @@ std::string observables_figure(const TracerMdComparison& c, const fs::path& fold
     const double x0 = static_cast<double>(i) / n, w = 1.0 / n;
     const std::string xrange = "set xrange [" + format_number(s.points.front().t / 1.5) + ":" +
                                format_number(last.t * 1.5) + "]\n";  // the same in both panels
-    script << "reset\nset origin " << x0 << ",0.36\nset size " << w << ",0.6\n"
-           << "set logscale xy\nset format x '10^{%L}'\nset grid\n"
-           << xrange << "set xlabel 't'\nset ylabel '" << label << "'\n"
-           << "set key " << (s.alpha > 0 ? "top left" : "bottom left") << " font ',11'\n"
+    script << "reset\nset origin " << x0 << ",0.36\nset size " << w << ",0.55\n"
+           << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' "
+              "dt 3\n"
+           << xrange << "set format x ''\nset ylabel '" << label << "'\n"
+           << "set key tmargin right horizontal samplen 2 font ',11'\n"
            << "set title '" << label
            << ": tracer/MD - 1 = " << common::format_measurement(last.ratio, last.ratio_error, 1)
            << " at t = " << common::format_significant(last.t, 4) << "'\n"
@@ -201,8 +203,8 @@ std::string observables_figure(const TracerMdComparison& c, const fs::path& fold
            << last.t << ")**(" << s.alpha << ") w l dt 2 lw 2 lc rgb 'black' t 't^{" << s.alpha_rational
            << "} (paper)'\n"
            << "reset\nset origin " << x0 << ",0\nset size " << w << ",0.36\n"
-           << "set logscale x\nset format x '10^{%L}'\nset grid\n"
-           << xrange << "set xlabel 't'\nset ylabel 'tracer/MD - 1'\n"
+           << "set logscale x\nset format x '10^{%L}'\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt 3\n"
+           << xrange << "set xlabel '" << time_axis_label << "'\nset ylabel 'tracer/MD - 1'\n"
            << "unset key\nplot '" << file
            << "' u 1:6:7 w yerrorbars pt 6 ps 1.2 lw 1.5 lc rgb '#1f77b4', 0 w l lw 1 lc rgb 'black'\n";
   }
@@ -212,7 +214,7 @@ std::string observables_figure(const TracerMdComparison& c, const fs::path& fold
   return "tracer_vs_md.png";
 }
 
-std::string distribution_figure(const TracerMdComparison& c, const fs::path& folder) {
+std::string distribution_figure(const TracerMdComparison& c, const std::string& caption, const fs::path& folder) {
   const TracerMdDistribution& h = *c.distribution;
   std::ostringstream data;
   data.precision(12);
@@ -223,12 +225,13 @@ std::string distribution_figure(const TracerMdComparison& c, const fs::path& fol
   common::write_file_atomic(folder / "tracer_md_p_imp.dat", data.str());
   const std::string p = theory::observable_info("p_imp").label;
   std::ostringstream script;
-  script << "set terminal pngcairo size 1000,700 font 'Sans,13'\nset output 'tracer_p_imp.png'\n"
-         << "set title \"" << p << "(r) at t = " << common::format_significant(h.t, 4)
+  script << figure_terminal("tracer_p_imp", {1300, 760, 13}) << "set title " << gnuplot_quoted(caption) << " . \"\\n"
+         << p << "(r) at t = " << common::format_significant(h.t, 4)
          << ": <r^4>/<r^2>^2 = " << common::format_measurement(h.ratio_tracer, h.ratio_tracer_error, 1) << " (tracer), "
          << common::format_measurement(h.ratio_md, h.ratio_md_error, 1) << " (MD), " << format_number(h.ratio_gaussian)
          << " (Gaussian)\"\n"
-         << "set xlabel 'r (distance from the start)'\nset ylabel '" << p << "(r)'\nset grid\nset key top right\n"
+         << "set xlabel 'r  [ℓ], the distance from the start'\nset ylabel '" << p
+         << "(r)'\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt 3\nset key below\n"
          << "set xrange [0:*]\n"
          << "plot 'tracer_md_p_imp.dat' u 1:4:5 w yerrorbars pt 7 ps 1.0 lc rgb '#d62728' t 'MD', "
          << "'' u 1:2:3 w yerrorbars pt 6 ps 1.3 lw 1.5 lc rgb '#1f77b4' t 'tracer (Eq. 36)', "
@@ -286,10 +289,11 @@ std::string tracer_md_csv(const TracerMdComparison& c) {
   return out.str();
 }
 
-TracerMdFigures write_tracer_md_figures(const TracerMdComparison& comparison, const fs::path& folder) {
+TracerMdFigures write_tracer_md_figures(const TracerMdComparison& comparison, const std::string& caption,
+                                        const fs::path& folder) {
   TracerMdFigures figures;
-  figures.observables = observables_figure(comparison, folder);
-  if (comparison.distribution) figures.distribution = distribution_figure(comparison, folder);
+  figures.observables = observables_figure(comparison, caption, folder);
+  if (comparison.distribution) figures.distribution = distribution_figure(comparison, caption, folder);
   return figures;
 }
 

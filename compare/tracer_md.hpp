@@ -74,9 +74,11 @@ struct TracerMdFigures {
   std::string observables, distribution;
 };
 
-/// Draws tracer_vs_md.png (per observable: tracer and MD log–log with error bars and the paper's
-/// t^α through the MD's last point; below, tracer/MD − 1) and tracer_p_imp.png (p_imp at the last
-/// common time: tracer, MD, Gaussian) into `folder`, with their .dat and .gp files.
-TracerMdFigures write_tracer_md_figures(const TracerMdComparison& comparison, const std::filesystem::path& folder);
+/// Draws tracer_vs_md (per observable: tracer and MD log–log with error bars and the paper's t^α
+/// through the MD's last point; below, tracer/MD − 1) and tracer_p_imp (p_imp at the last common
+/// time: tracer, MD, Gaussian) into `folder` as PNG and PDF, with their .dat and .gp files; the
+/// titles open with `caption` (the scene: compare/gnuplot.hpp's scene_caption).
+TracerMdFigures write_tracer_md_figures(const TracerMdComparison& comparison, const std::string& caption,
+                                        const std::filesystem::path& folder);
 
 }  // namespace coldblast::compare

@@ -162,10 +162,6 @@ CompareResult run_compare(const CompareConfig& config, std::shared_ptr<const Con
 /// note (its thermal-noise bias, docs/verification.md); `paper` keeps u_imp and has no u_flow.
 std::vector<std::string> default_observables(const RunData& run, Reference against, std::vector<std::string>& notes);
 
-/// The MD's R/λ at time t: its recorded shock radius R (log-interpolated) over summary.json's
-/// lambda, or Eq. (1) with the run's E, n, a, A_d when R was not recorded.
-double md_R_over_lambda(const RunData& run, double t);
-
 /// Exponents predicted by another model at the MD's times, used for Reference::hydro.
 using ReferenceExponents = std::function<double(const std::string& observable, double t)>;
 /// As run_compare, with the reference exponents supplied by the caller (hydro only) and no

@@ -99,7 +99,7 @@ TEST_CASE("blast figure: nothing without snapshots, a clear error for a misnamed
   fs::remove_all(dir);
 }
 
-TEST_CASE("blast figure is drawn as a PNG of two panels side by side", "[fast]") {
+TEST_CASE("blast figure is drawn as a PNG and a PDF of two panels side by side", "[fast]") {
   if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
     WARN("gnuplot is not installed: the PNG is not checked");
     return;
@@ -113,7 +113,11 @@ TEST_CASE("blast figure is drawn as a PNG of two panels side by side", "[fast]")
   const auto be32 = [&](int k) {
     return (header[k] << 24) | (header[k + 1] << 16) | (header[k + 2] << 8) | header[k + 3];
   };
-  CHECK(be32(16) == 2 * 720);  // width: two columns
-  CHECK(be32(20) == 740);      // height: one row
+  CHECK(be32(16) == 2 * 720);   // width: two columns
+  CHECK(be32(20) == 740 + 80);  // height: one row and the legend's strip below it
+  std::ifstream pdf(dir / "fig1.pdf", std::ios::binary);
+  std::string magic(5, '\0');
+  REQUIRE(pdf.read(magic.data(), 5));
+  CHECK(magic == "%PDF-");
   fs::remove_all(dir);
 }

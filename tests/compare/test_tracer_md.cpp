@@ -141,11 +141,11 @@ TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_im
 
   // The figures' data files hold these numbers; the PNGs are drawn (size > 10 kB).
   const fs::path folder = root / "figures";
-  const TracerMdFigures figures = write_tracer_md_figures(c, folder);
+  const TracerMdFigures figures = write_tracer_md_figures(c, "the scene's caption", folder);
   CHECK(figures.observables == "tracer_vs_md.png");
   CHECK(figures.distribution == "tracer_p_imp.png");
-  CHECK(fs::file_size(folder / "tracer_vs_md.png") > 10000);
-  CHECK(fs::file_size(folder / "tracer_p_imp.png") > 10000);
+  for (const char* file : {"tracer_vs_md.png", "tracer_p_imp.png", "tracer_vs_md.pdf", "tracer_p_imp.pdf"})
+    CHECK(fs::file_size(folder / file) > 10000);
   for (const auto& s : c.series) {
     const auto rows = read_dat(folder / ("tracer_md_" + s.observable + ".dat"));
     REQUIRE(rows.size() == s.points.size());
@@ -190,7 +190,7 @@ TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_im
   CHECK(later.start_time == Approx(R.t[3]).epsilon(1e-12));
   CHECK_FALSE(c.tracer_from_md_states);
   // Its figure says so, and gnuplot draws it (a quote in the title once broke the script).
-  const TracerMdFigures later_figures = write_tracer_md_figures(later, root / "later");
+  const TracerMdFigures later_figures = write_tracer_md_figures(later, "a caption with a quote: it's", root / "later");
   CHECK(fs::file_size(root / "later" / later_figures.observables) > 10000);
   std::ifstream script(root / "later" / "tracer_vs_md.gp");
   std::stringstream script_text;
