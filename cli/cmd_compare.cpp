@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -23,6 +24,7 @@ struct CompareOptions {
   std::string against = "theory";
   std::string observables;
   std::string out;
+  bool no_report = false;
   bool no_figures = false;
   Format format = Format::table;
   compare::CompareConfig config;
@@ -143,9 +145,12 @@ compare::HydroModelOptions hydro_model(const CompareOptions& options) {
 }
 
 void run(CompareOptions& options) {
-  if (!options.out.empty()) compare::report_folder(options.out);  // before the work, not after
   options.config.run_dir = options.run_dir;
   options.config.against = compare::parse_reference(options.against);
+  // The report goes beside the run unless --out says where (or --no-report that it is not wanted).
+  if (options.out.empty() && !options.no_report && std::filesystem::is_directory(options.run_dir))
+    options.out = compare::default_report_folder(options.run_dir, options.config.against).string();
+  if (!options.out.empty()) compare::report_folder(options.out);  // before the work, not after
   options.config.observables = split_list(options.observables);
   if (options.config.observables.empty() && !options.observables.empty())
     throw std::invalid_argument("--observables = '" + options.observables + "' names no observable");
@@ -226,7 +231,11 @@ void add_compare_command(CLI::App& app) {
                           "NS ambient packing fraction (hard-particle EOS only); default: the run's phi");
   command->add_option("--hydro-transport", options->hydro_transport,
                       "NS transport: enskog (dense, needs a hard-particle EOS) or dilute; default enskog");
-  command->add_option("--out", options->out, "Report directory (report.md, verdict.json, exponents.csv, figures/)");
+  CLI::Option* out_option = command->add_option("--out", options->out,
+                                                "Report directory (report.md, verdict.json, exponents.csv, figures/ as "
+                                                "PNG and PDF); default: RUN_DIR/compare-AGAINST");
+  command->add_flag("--no-report", options->no_report, "Write no report: the summary on stdout only")
+      ->excludes(out_option);
   command->add_option("--md-run", options->config.md_run,
                       "MD run of the same scene for a tracer RUN_DIR: tracer against MD at every common time "
                       "(figures tracer_vs_md.png, tracer_p_imp.png; tracer_vs_md.csv)");

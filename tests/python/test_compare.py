@@ -11,7 +11,7 @@ FIXTURE = os.path.join(REPO, "tests", "cli", "data", "run_T0_wrong")
 
 @pytest.mark.parametrize("against", ["theory", "paper"])
 def test_verdict_equals_cli(against):
-    expected = cli_json("compare", FIXTURE, "--against", against, expect=3)
+    expected = cli_json("compare", "--no-report", FIXTURE, "--against", against, expect=3)
     verdict = coldblast.compare(FIXTURE, against=against)
     assert verdict == expected
     assert verdict["pass"] is False
@@ -19,7 +19,7 @@ def test_verdict_equals_cli(against):
 
 
 def test_subset_and_report(tmp_path):
-    expected = cli_json("compare", FIXTURE, "--observables", "R_imp,n0", "--until", 200)
+    expected = cli_json("compare", "--no-report", FIXTURE, "--observables", "R_imp,n0", "--until", 200)
     verdict = coldblast.compare(FIXTURE, observables=["R_imp", "n0"], until=200, out=tmp_path / "report",
                                 figures=False)
     assert verdict == expected and verdict["pass"] is True
@@ -38,13 +38,13 @@ def test_subset_and_report(tmp_path):
 def test_bad_input_is_the_cli_error(kwargs, flags):
     with pytest.raises(ValueError) as error:
         coldblast.compare(FIXTURE, **kwargs)
-    assert str(error.value) == cli_error("compare", FIXTURE, *flags)
+    assert str(error.value) == cli_error("compare", "--no-report", FIXTURE, *flags)
 
 
 def test_not_a_run(tmp_path):
     with pytest.raises(ValueError) as error:
         coldblast.compare(tmp_path)
-    assert str(error.value) == cli_error("compare", tmp_path)
+    assert str(error.value) == cli_error("compare", "--no-report", tmp_path)
 
 
 @pytest.mark.parametrize("what", ["file", "fifo", "folder of other files"])

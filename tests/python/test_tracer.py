@@ -57,7 +57,7 @@ def test_equilibrium_rate_is_the_exact_one():
 def test_compare_md_run_equals_cli(tmp_path):
     coldblast.tracer.run(background="tvns", trajectories=64, seed=3, out=tmp_path / "tracer", progress=False, **TINY)
     coldblast.md.run(realizations=4, seed=3, out=tmp_path / "md", progress=False, block_size=1, **TINY)
-    expected = cli_json("compare", tmp_path / "tracer", "--md-run", tmp_path / "md", "--sigma", 10, "--allowance", 1,
+    expected = cli_json("compare", "--no-report", tmp_path / "tracer", "--md-run", tmp_path / "md", "--sigma", 10, "--allowance", 1,
                         "--no-figures")
     verdict = coldblast.compare(tmp_path / "tracer", md_run=tmp_path / "md", sigma=10, allowance=1, figures=False)
     assert verdict == expected
@@ -84,7 +84,7 @@ def test_compare_md_run_missing(tmp_path):
     coldblast.tracer.run(background="tvns", trajectories=16, seed=3, out=tmp_path / "tracer", progress=False, **TINY)
     with pytest.raises(ValueError) as error:
         coldblast.compare(tmp_path / "tracer", md_run="/nonexistent", figures=False)
-    assert str(error.value) == cli_error("compare", tmp_path / "tracer", "--md-run", "/nonexistent", "--no-figures")
+    assert str(error.value) == cli_error("compare", "--no-report", tmp_path / "tracer", "--md-run", "/nonexistent", "--no-figures")
 
 
 def test_out_that_is_a_file_is_the_cli_error(tmp_path):
