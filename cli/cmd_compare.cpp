@@ -151,6 +151,7 @@ void run(CompareOptions& options) {
   if (options.out.empty() && !options.no_report && std::filesystem::is_directory(options.run_dir))
     options.out = compare::default_report_folder(options.run_dir, options.config.against).string();
   if (!options.out.empty()) compare::report_folder(options.out);  // before the work, not after
+  options.config.continuum_for_figures = !options.out.empty() && !options.no_figures;
   options.config.observables = split_list(options.observables);
   if (options.config.observables.empty() && !options.observables.empty())
     throw std::invalid_argument("--observables = '" + options.observables + "' names no observable");

@@ -416,24 +416,6 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
 
 }  // namespace
 
-namespace {
-
-// The continuum curves of the profile figure: the comparison's own solve when it has one, else
-// (theory, paper) one solve of the default model for the figure; none if the run cannot have one.
-std::vector<ProfileCurve> profile_curves(const CompareResult& result) {
-  if (result.continuum) return result.continuum->profiles;
-  if (!fs::exists(result.run.directory / "profiles.csv") || !result.run.summary.contains("lambda")) return {};
-  try {
-    const HydroModel model = resolve_hydro_model({}, result.d, run_packing_fraction(result.run));
-    return solve_continuum(result.run, model, 256)->profiles;
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "compare: no continuum curves in profiles.png: %s\n", e.what());
-    return {};
-  }
-}
-
-}  // namespace
-
 fs::path report_folder(const fs::path& out) {
   common::require_output_folder(out, "--out");
   if (!fs::exists(out)) return out;
@@ -460,7 +442,10 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
     ExtraFigures extra;
     if (config.figures) {
       write_observable_figure(result, staging / "figures");
-      extra = write_extra_figures(result.run, fit, profile_curves(result), staging / "figures", result.until);
+      // the continuum curves the analysis solved (compare/verdict.hpp: continuum_for_figures), if any
+      const std::vector<ProfileCurve> curves =
+          result.continuum ? result.continuum->profiles : std::vector<ProfileCurve>{};
+      extra = write_extra_figures(result.run, fit, curves, staging / "figures", result.until);
       if (result.tracer_md) write_tracer_md_figures(*result.tracer_md, scene_caption(result.run), staging / "figures");
     }
     if (result.tracer_md) common::write_file_atomic(staging / "tracer_vs_md.csv", tracer_md_csv(*result.tracer_md));

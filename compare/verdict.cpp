@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -77,10 +78,31 @@ void CompareConfig::validate() const {
   }
 }
 
+namespace {
+
+/// The continuum for the profile figure of a comparison whose verdicts need none: solved with the
+/// comparison's model when the run has profiles.csv and λ; a run it cannot be solved for gets a
+/// warning instead of curves.
+void add_figure_continuum(CompareResult& result, const CompareConfig& config, const CompareProgress& progress) {
+  const RunData& run = result.run;
+  if (!std::filesystem::exists(run.directory / "profiles.csv") || !run.summary.contains("lambda")) return;
+  try {
+    const HydroModel model = resolve_hydro_model(config.hydro_model, run.d, run_packing_fraction(run));
+    result.continuum = solve_continuum(run, model, config.hydro_cells, 0.0, progress.continuum);
+  } catch (const std::invalid_argument& e) {
+    result.warnings.push_back(std::string("no continuum curves in the profile figure: ") + e.what());
+  }
+}
+
+}  // namespace
+
 CompareResult run_compare(const CompareConfig& config, const CompareProgress& progress) {
   config.validate();
-  if (config.against == Reference::paper || (config.against == Reference::theory && config.allowance))
-    return run_compare(config, ReferenceExponents{});
+  if (config.against == Reference::paper || (config.against == Reference::theory && config.allowance)) {
+    CompareResult result = run_compare(config, ReferenceExponents{});
+    if (config.continuum_for_figures) add_figure_continuum(result, config, progress);
+    return result;
+  }
   // The Navier–Stokes blast at the MD's own R/λ (no fitted parameter), solved once: the hydro
   // reference, or (theory) where the finite-R/λ allowances come from.
   RunData run = read_run(config.run_dir);

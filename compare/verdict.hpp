@@ -58,6 +58,10 @@ struct CompareConfig {
   /// An MD run of the same scene for a tracer run_dir (--md-run; empty: none): the tracer against
   /// the MD (compare/tracer_md.hpp), as of `until` as well.
   std::filesystem::path md_run;
+  /// Solve the continuum for the report's profile figure as well when the verdicts need none
+  /// (paper, or theory with a given allowance) and the run has profiles.csv and λ: the report
+  /// draws the curves it is given and never runs a solver.
+  bool continuum_for_figures = false;
   void validate() const;
 };
 
@@ -108,7 +112,8 @@ struct CompareResult {
   /// errors, within the stated allowance or continuum bound): a measured deviation, exit 0
   bool miss = false;
   RunData run;
-  /// The continuum solved for this run (hydro: always; else when a report drew the profiles);
+  /// The continuum solved for this run (hydro: always; theory: unless --allowance is given; else
+  /// with CompareConfig::continuum_for_figures);
   /// shared so that the reports of one `reproduce` use one solve.
   std::shared_ptr<const ContinuumReference> continuum;
   /// With CompareConfig::md_run: the run (a tracer's) against that MD run.

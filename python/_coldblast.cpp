@@ -536,6 +536,7 @@ py::object compare_run(const std::string& run_dir, const std::string& against, d
     config.hydro_model.transport = hydro::transport_from_string(hydro_transport, "--hydro-transport");
   if (hydro_phi) config.hydro_model.phi = *hydro_phi;
   config.md_run = md_run;
+  config.continuum_for_figures = !out.empty() && figures;
   Progress progress(progress_callback);
   const std::function<compare::CompareResult()> work = [&] {
     compare::CompareResult result = compare::run_compare(config);

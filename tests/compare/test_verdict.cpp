@@ -517,3 +517,33 @@ TEST_CASE("a tracer run is labelled tracer, not MD, in the report and the figure
   fs::remove_all(out);
   fs::remove_all(dir);
 }
+
+TEST_CASE("the analysis solves the profile figure's continuum when asked; the verdicts stay the paper's", "[slow]") {
+  CompareConfig config;
+  config.run_dir = fs::path(COLDBLAST_SOURCE_DIR) / "data" / "paper-2d";
+  config.against = Reference::paper;
+  config.observables = {"R_imp", "T0"};
+  const CompareResult plain = run_compare(config);
+  CHECK_FALSE(plain.continuum);
+  config.continuum_for_figures = true;
+  const CompareResult with_curves = run_compare(config);
+  REQUIRE(with_curves.continuum);
+  CHECK(with_curves.continuum->profiles.size() == 4);  // ideal and hard-particle TvNS, dilute and dense NS
+  CHECK(with_curves.amplitudes.empty());               // the paper comparison judges no amplitude
+  REQUIRE(with_curves.observables.size() == plain.observables.size());
+  for (std::size_t i = 0; i < plain.observables.size(); ++i) {
+    CHECK(with_curves.observables[i].alpha_measured == plain.observables[i].alpha_measured);
+    CHECK(with_curves.observables[i].outcome == plain.observables[i].outcome);
+  }
+  CHECK(with_curves.pass == plain.pass);
+  // A run without λ or profiles.csv gets no curves and no warning.
+  config.run_dir = fs::path(COLDBLAST_SOURCE_DIR) / "tests" / "cli" / "data" / "run_T0_wrong";
+  const CompareResult fixture = run_compare(config);
+  CHECK_FALSE(fixture.continuum);
+  CHECK(fixture.warnings == run_compare([&] {
+                              CompareConfig c = config;
+                              c.continuum_for_figures = false;
+                              return c;
+                            }())
+                                .warnings);
+}
