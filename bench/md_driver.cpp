@@ -8,9 +8,9 @@
 //       one realization of the paper scene's physics (D = 2: n = 0.15, t_max 4000 by default,
 //       box_margin 1.6; D = 3: n = 0.225, t_max 1000, box_margin 2), calendar queue, the same
 //       steps as md/realization.cpp's run_realization without observers; CELL_WIDTH 0 = automatic
-//   md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS]
+//   md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS] [CELL_WIDTH]
 //       3D hard spheres in a periodic box from a lattice at T = 1 (defaults: realization 1,
-//       10^5 particles, 5 x 10^5 melt collisions, 10^6 timed collisions)
+//       10^5 particles, 5 x 10^5 melt collisions, 10^6 timed collisions, CELL_WIDTH 0 = automatic)
 //   md_driver setup REALIZATION KEY=VALUE...
 //       the set-up alone of `md run --set KEY=VALUE...` (the embedded scene): the steps of
 //       md/realization.cpp's blast_initial_state, RSA and the impurities' kick timed apart, with
@@ -95,13 +95,15 @@ int blast(int realization, double t_max, double width) {
   return 0;
 }
 
-int equilibrium(double phi, int realization, std::size_t count, std::uint64_t melt, std::uint64_t collisions) {
+int equilibrium(double phi, int realization, std::size_t count, std::uint64_t melt, std::uint64_t collisions,
+                double width) {
   auto rng = realization_rng(5, static_cast<std::uint64_t>(realization));
   const double side = std::cbrt(static_cast<double>(count) * (M_PI / 6.0) / phi);  // radius 1/2
   const InitialState<3> s = lattice_start<3>(rng, count, 0.5, Vec<3>::Constant(side), 1.0);
   EngineConfig<3> config;
   config.periodic = true;
   config.box = Vec<3>::Constant(side);
+  config.cell_width = width;
   Engine<3, CalendarEventQueue> engine(config, s);
   engine.run_collisions(melt);
   const double t1 = cpu_seconds();
@@ -165,7 +167,7 @@ int setup(const ResolvedScene& scene, int realization) {
 int usage() {
   std::fprintf(stderr,
                "usage: md_driver blast D REALIZATION [T_MAX] [CELL_WIDTH]\n"
-               "       md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS]\n"
+               "       md_driver equilibrium PHI [REALIZATION] [PARTICLES] [MELT] [COLLISIONS] [CELL_WIDTH]\n"
                "       md_driver setup REALIZATION KEY=VALUE...\n");
   return 2;
 }
@@ -189,7 +191,7 @@ int main(int argc, char** argv) {
       return 2;
     }
     return equilibrium(phi, static_cast<int>(arg(3, 1.0)), static_cast<std::size_t>(arg(4, 1e5)),
-                       static_cast<std::uint64_t>(arg(5, 5e5)), static_cast<std::uint64_t>(arg(6, 1e6)));
+                       static_cast<std::uint64_t>(arg(5, 5e5)), static_cast<std::uint64_t>(arg(6, 1e6)), arg(7, 0.0));
   }
   if (mode == "setup") {
     try {  // A_d must be given: the driver links md only, not hydro's amplitude policy

@@ -7,11 +7,43 @@
 #include <cstdint>
 #include <vector>
 
+#include "md/collision.hpp"
 #include "md/huge_pages.hpp"
 #include "md/multi_index.hpp"
+#include "md/pair_kernel.hpp"
 #include "md/particles.hpp"
 
 namespace coldblast::md {
+
+/// What sizes an engine's cell grid.
+struct CellDemand {
+  bool periodic = false;
+  double requested_width = 0.0;  ///< EngineConfig::cell_width (length; 0 = automatic)
+  double region_radius = 1.0;    ///< open: particles lie within this radius of the origin (length)
+  std::size_t particles = 0;
+  double host_radius = 0.5, impurity_radius = 0.5;  ///< (length)
+  std::size_t impurities = 0;
+  bool wide_cells_for_big = false;  ///< EngineConfig::wide_cells_for_big
+};
+
+/// The cell width (length) and the reach of the big particles' stencils (md/big_particles.hpp;
+/// 0: no big particles).
+struct CellPlan {
+  double width;
+  int big_reach;
+};
+
+/// Beyond this many impurities the list of big particles is not short: wide cells instead.
+inline constexpr std::size_t max_big_particles = 64;
+
+/// The cell scheme of an engine. Never below the largest contact distance, except in open geometry
+/// with impurities larger than the host (at most max_big_particles, and unless wide_cells_for_big):
+/// then cells are at least the host contact distance wide and the impurities are big. Automatic in
+/// open geometry (requested_width = 0): the width at which a full scan's 3^D cells hold 2.7
+/// particles on average, at most 2 sigma / sqrt(D). Periodic geometry uses the largest contact
+/// distance unless a width is requested.
+template <int D>
+CellPlan plan_cells(const CellDemand& demand);
 
 template <int D>
 class CellList {
@@ -72,6 +104,26 @@ class CellList {
   /// Raw arrays for hot loops: heads()[cell] = first(cell), links()[id] = next(id) (id >= -1).
   const std::int32_t* heads() const { return head_.data(); }
   const std::int32_t* links() const { return next_.data() + 1; }
+
+  /// Time at which a particle with stored state p leaves its cell p.cell, and the face it leaves by
+  /// (code = 2 axis + (v_axis > 0)); `never` at rest: the pair evaluator's crossing time
+  /// (md/collision.hpp), or with `simd` its SSE2 version, or with `avx2` (D = 3) its AVX2 version,
+  /// bitwise the same (md/pair_kernel.hpp).
+  double crossing_time(const Particle<D>& p, std::uint8_t& code, bool simd, bool avx2) const {
+    const auto c = coordinates(p.cell);
+    double lower[D], width[D];
+    for (int k = 0; k < D; ++k) {
+      lower[k] = lower_[k] + c[k] * width_[k];
+      width[k] = width_[k];
+    }
+    if constexpr (simd_built) {
+      if constexpr (D == 3)
+        if (avx2) return p.time + earliest_crossing(p.position, p.velocity, lower, width, code);
+      if (simd) return p.time + cell_crossing_time_sse2<D>(p.position, p.velocity, lower, width, code);
+    }
+    (void)avx2;
+    return p.time + cell_crossing_time<D>(p.position, p.velocity, lower, width, code);
+  }
 
   /// True if a neighbour of `cell` lies across a periodic face (needs an image shift).
   bool wraps(std::int32_t cell) const { return periodic_ && face_[cell] != interior_class; }

@@ -55,11 +55,19 @@ int ObservableLayout::scalar(const std::string& name, int k) const {
 
 template <int D, class Queue>
 BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout,
-                                       const Engine<D, Queue>& engine)
+                                       Engine<D, Queue>& engine, bool record_trajectories)
     : scene_(scene), layout_(layout), engine_(engine) {
   for (std::size_t i = 0; i < engine.size(); ++i)
     if (engine.species(static_cast<std::int32_t>(i)) == impurity_species)
       impurities_.push_back(static_cast<std::int32_t>(i));
+  if (scene.wants("C_re") || scene.wants("dE_first") || scene.wants("dE_re")) {
+    recollisions_ = std::make_unique<RecollisionCounter<D>>(impurities_);
+    engine.watch(*recollisions_);
+  }
+  if (record_trajectories) {
+    trajectories_ = std::make_unique<ImpurityTrajectories<D>>();
+    engine.watch(*trajectories_);
+  }
   for (const std::int32_t id : impurities_) {
     initial_position_.push_back(engine.position(id));
     if (scene.wants("u_imp") || scene.wants("u_flow"))
@@ -135,7 +143,7 @@ void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const 
     r2 += 0.5 * (x - initial_position_[m]).squaredNorm();
     v2 += 0.5 * engine_.velocity(id).squaredNorm();
     collisions += engine_.particle(id).collisions;
-    const auto partners = engine_.recollision_stats(id);  // zeros unless C_re, dE_first or dE_re is requested
+    const RecollisionStats partners = recollisions_ ? recollisions_->stats(id) : RecollisionStats{};
     recollisions += static_cast<double>(partners.recollisions);
     loss_first += partners.loss_first;
     loss_re += partners.loss_re;

@@ -3,6 +3,7 @@
 // R_imp, V_imp (Eq. (38) [eq:Rimp_comp], inner values |r|²/2 and |v|²/2), C_imp, u_imp, n0, T0,
 // the shock radius R, radial profiles in r/R, and the impurity radial histogram of Eq. (39) [eq:pr].
 // Each realization yields one flat record of "inner" values; ensembles only add records.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -52,16 +53,21 @@ class ObservableLayout {
 };
 
 /// Measures one realization. Construct at t = 0 (records initial impurity positions and the
-/// radii that hold 100 particles), then call measure(k, record) with the engine at times[k].
+/// radii that hold 100 particles, and sets the engine's collision observers watching: the
+/// impurities' recollisions if the scene asks for C_re, dE_first or dE_re, their trajectories if
+/// `record_trajectories`), then call measure(k, record) with the engine at times[k].
 template <int D, class Queue>
 class BlastObserver {
  public:
-  BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout, const Engine<D, Queue>& engine);
+  BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout, Engine<D, Queue>& engine,
+                bool record_trajectories = false);
   void measure(int k, std::vector<double>& record) const;
   /// Shock radius from the moving mass: R = (N_moving / (n∞ Ω_d))^(1/d).
   double shock_radius() const;
   const std::vector<std::int32_t>& impurities() const { return impurities_; }
   double core_radius() const { return core_radius_; }
+  /// The impurities' collision points (record_trajectories), else null.
+  const ImpurityTrajectories<D>* trajectories() const { return trajectories_.get(); }
 
  private:
   double radius_holding(const Vec<D>& centre, int others, std::int32_t exclude) const;
@@ -72,8 +78,10 @@ class BlastObserver {
   const Engine<D, Queue>& engine_;
   std::vector<std::int32_t> impurities_;
   std::vector<Vec<D>> initial_position_;
-  std::vector<double> local_radius_;  // around each impurity: holds 100 other particles at t = 0
-  double core_radius_ = 0.0;          // around the origin: holds 100 particles at t = 0
+  std::vector<double> local_radius_;                     // around each impurity: holds 100 other particles at t = 0
+  double core_radius_ = 0.0;                             // around the origin: holds 100 particles at t = 0
+  std::unique_ptr<RecollisionCounter<D>> recollisions_;  // C_re, dE_first, dE_re
+  std::unique_ptr<ImpurityTrajectories<D>> trajectories_;
 };
 
 }  // namespace coldblast::md

@@ -44,7 +44,8 @@ SnapshotFrame capture(const Engine<D, Queue>& engine, const SnapshotSelection& s
 /// Each impurity's start, its collisions and its end, by id (stable in time).
 template <int D, class Queue>
 std::vector<PathPoint> impurity_paths(const Engine<D, Queue>& engine, const std::vector<std::int32_t>& impurities,
-                                      const std::vector<Vec<D>>& start) {
+                                      const std::vector<Vec<D>>& start,
+                                      const std::vector<TrajectoryPoint<D>>& collisions) {
   std::vector<PathPoint> points;
   const auto add = [&points](std::int32_t id, double t, const Vec<D>& x) {
     PathPoint p;
@@ -54,7 +55,7 @@ std::vector<PathPoint> impurity_paths(const Engine<D, Queue>& engine, const std:
     points.push_back(p);
   };
   for (std::size_t m = 0; m < start.size(); ++m) add(impurities[m], 0.0, start[m]);
-  for (const auto& p : engine.trajectories()) add(p.id, p.t, p.position);
+  for (const auto& p : collisions) add(p.id, p.t, p.position);
   for (const std::int32_t id : impurities) add(id, engine.now(), engine.position(id));
   std::stable_sort(points.begin(), points.end(), [](const auto& x, const auto& y) { return x.id < y.id; });
   return points;
@@ -68,11 +69,9 @@ RealizationOutput run_realization_in(const ResolvedScene& scene, const Observabl
   if (realization_time) realization_time(index, 0.0);
   const InitialState<D> state = blast_initial_state<D>(scene, index);
 
-  EngineConfig<D> config = blast_engine_config<D>(scene);
-  config.record_impurity_trajectories = extras.paths;
-  config.count_impurity_recollisions = scene.wants("C_re") || scene.wants("dE_first") || scene.wants("dE_re");
+  const EngineConfig<D> config = blast_engine_config<D>(scene);
   Engine<D, Queue> engine(config, state);
-  BlastObserver<D, Queue> observer(scene, layout, engine);
+  BlastObserver<D, Queue> observer(scene, layout, engine, extras.paths);
 
   RealizationOutput out;
   out.record.assign(layout.size(), 0.0);
@@ -93,7 +92,8 @@ RealizationOutput run_realization_in(const ResolvedScene& scene, const Observabl
   engine.run_until(c.t_max);
   out.collisions = engine.collision_count();
   out.energy_error = std::abs(engine.kinetic_energy() - c.E) / c.E;
-  if (extras.paths) out.paths = impurity_paths(engine, observer.impurities(), start);
+  if (observer.trajectories())
+    out.paths = impurity_paths(engine, observer.impurities(), start, observer.trajectories()->points());
   for (const double v : out.record)
     if (!std::isfinite(v)) throw std::runtime_error("non-finite observable in realization " + std::to_string(index));
   return out;

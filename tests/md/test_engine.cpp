@@ -75,34 +75,6 @@ TEST_CASE("a heavy impurity hits a resting host: 1D elastic formula", "[fast]") 
   CHECK(engine.particle(0).collisions == 1);
 }
 
-TEST_CASE("recollisions: an impurity and one host in a periodic box meet again and again", "[fast]") {
-  // Equal discs on one line in a periodic box of side 10: the impurity moves at v = 1 towards the
-  // resting host 4 away; equal masses exchange velocities, the host runs round the box (gap 8) and
-  // hits it from behind, and so on: collisions at t = 3, 11, 19, ...; every one after the first is
-  // a recollision. The count is kept only when asked for.
-  for (const bool count : {true, false}) {
-    InitialState<2> s = empty_state<2>();
-    add<2>(s, Vec<2>(2.0, 5.0), Vec<2>(1.0, 0.0), impurity_species);
-    add<2>(s, Vec<2>(6.0, 5.0), Vec<2>::Zero());
-    EngineConfig<2> config;
-    config.periodic = true;
-    config.box = Vec<2>::Constant(10.0);
-    config.count_impurity_recollisions = count;
-    Engine<2, CalendarEventQueue> engine(config, s);
-    engine.run_until(60.0);  // collisions at 3, 11, ..., 59
-    REQUIRE(engine.collision_count() == 8);
-    CHECK(engine.particle(0).collisions == 8);
-    const auto stats = engine.recollision_stats(0);
-    CHECK(stats.recollisions == (count ? 7u : 0u));
-    // The impurity gives its energy 1/2 away in the first collision, then gets it back and gives it
-    // away in turn: +1/2 -1/2 +1/2 -1/2 +1/2 -1/2 +1/2 after it, and it moves at 1 again at t = 60.
-    CHECK(stats.loss_first == (count ? 0.5 : 0.0));
-    CHECK_THAT(stats.loss_re, WithinAbs(count ? -0.5 : 0.0, 1e-15));
-    CHECK_THAT(engine.velocity(0)[0], WithinAbs(1.0, 1e-15));
-    CHECK(engine.recollision_stats(1).recollisions == 0);  // a host: never counted
-  }
-}
-
 TEST_CASE("recollisions off: a pair with an impurity collides once, then passes through", "[fast]") {
   // Equal discs on the line y = 5 of a periodic box of side 10: impurity A at x = 1 moving at +1,
   // a resting host at 4 and a resting impurity B at 8. A hits the host (t = 2), the host hits B
@@ -120,16 +92,17 @@ TEST_CASE("recollisions off: a pair with an impurity collides once, then passes 
       config.box = Vec<2>::Constant(10.0);
       config.simd = simd;
       config.overlap_check = true;  // the passes overlap, and must not be reported
-      config.count_impurity_recollisions = true;
       config.impurity_recollisions = recollide;
       Engine<2, CalendarEventQueue> engine(config, s);
+      RecollisionCounter<2> recollisions({0, 2});
+      engine.watch(recollisions);
       engine.run_until(11.0);
       CHECK(engine.collision_count() == 3);
       engine.run_until(60.0);
       INFO("recollide " << recollide << ", simd " << simd);
       if (recollide) {
         CHECK(engine.collision_count() > 3);
-        CHECK(engine.recollision_stats(0).recollisions > 0);
+        CHECK(recollisions.stats(0).recollisions > 0);
         continue;
       }
       CHECK(engine.collision_count() == 3);
@@ -138,8 +111,8 @@ TEST_CASE("recollisions off: a pair with an impurity collides once, then passes 
       CHECK_THAT(engine.position(1)[0], WithinAbs(7.0, 1e-12));
       CHECK_THAT(engine.position(2)[0], WithinAbs(2.0, 1e-12));
       CHECK(engine.velocity(0) == Vec<2>(1.0, 0.0));
-      CHECK(engine.recollision_stats(0).recollisions == 0);
-      CHECK(engine.recollision_stats(2).recollisions == 0);
+      CHECK(recollisions.stats(0).recollisions == 0);
+      CHECK(recollisions.stats(2).recollisions == 0);
       CHECK_THAT(engine.kinetic_energy(), WithinRel(0.5, 1e-14));
       CHECK_NOTHROW(engine.check_all_overlaps());
     }
