@@ -220,8 +220,8 @@ template <bool Shifted>
     j = links[j];
     take(j, m);
     for (j = links[j]; j >= 0; j = links[j]) {
+      if (n == gather_capacity) flush();  // before the take: the two above may have filled it
       take(j, m);
-      if (n == gather_capacity) flush();
     }
   }
   flush();

@@ -147,6 +147,19 @@ TEST_CASE("engines with and without the SIMD pair kernel give bit-identical traj
     require_kernel_invariant(
         s, config, [](auto& engine) { engine.run_collisions(200000); }, 200000);
   }
+  SECTION("wide periodic cells: scans of more candidates than one gathered batch holds") {
+    // Cells 2 sigma wide at phi = 0.2 hold up to 8 lattice sites each, so a full scan's 27 cells
+    // gather more than gather_capacity candidates and the batches must be flushed in between.
+    auto rng = realization_rng(5, 0);
+    const std::size_t count = 4000;
+    EngineConfig<3> config;
+    config.periodic = true;
+    config.box = Vec<3>::Constant(std::cbrt(count * (M_PI / 6.0) / 0.2));
+    config.cell_width = 2.0;
+    const InitialState<3> s = lattice_start<3>(rng, count, 0.5, config.box, 1.0);
+    require_kernel_invariant(
+        s, config, [](auto& engine) { engine.run_collisions(50000); }, 50000);
+  }
   SECTION("blast (open geometry, mostly resting candidates)") {
     auto rng = realization_rng(4, 0);
     const double radius = 22.0;
