@@ -292,13 +292,15 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
   cells_.insert(id, p.cell);
   check_guard(id);
   if (config_.overlap_check) check_overlaps_of(id);
-  Prediction& prediction = predictions_[id];
-  const bool stale =
-      prediction.partner >= 0 && particles_[prediction.partner].collisions != prediction.partner_collisions;
+  // A prediction gone stale (its partner changed course since) is kept as it is: it is only an
+  // upper bound, and its event, when it comes, finds the partner's counter moved on and predicts
+  // afresh (process()). Nothing is missed meanwhile: a pair that will touch is predicted by the
+  // one of the two that changed course last (it scanned in full then) or, if both were apart,
+  // by the one whose crossing brought them into adjacent cells. Checking the partner's counter
+  // here cost a random load per crossing: 20 % of the paper 2D realization's time
+  // (docs/benchmarks.md, issue 31).
   if (is_big(id)) [[unlikely]] {
-    cross_big(id, axis, direction, stale);
-  } else if (stale) {
-    full_scan(id);
+    cross_big(id, axis, direction);
   } else if (ghosts_ && ghost_involved(id)) [[unlikely]] {
     ghost_scan(id);
   } else if (!cells_.wraps(p.cell)) {
@@ -318,10 +320,10 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
 }
 
 template <int D, class Queue>
-[[gnu::noinline]] void Engine<D, Queue>::cross_big(std::int32_t id, int axis, int direction, bool stale) {
+[[gnu::noinline]] void Engine<D, Queue>::cross_big(std::int32_t id, int axis, int direction) {
   const std::int32_t cell = particles_[id].cell;
   big_.moved(cell, axis, direction, cells_.stride(axis));
-  if (stale || ghost_involved(id)) {
+  if (ghost_involved(id)) {
     full_scan(id);
   } else {
     const auto& incoming = big_.incoming(axis, direction);

@@ -141,8 +141,8 @@ class Engine {
   [[gnu::noinline]] void ghost_scan(std::int32_t id);
   // Big particles (open geometry, impurities larger than the host: md/big_particles.hpp).
   bool is_big(std::int32_t id) const { return big_.any() && species_[id] != host_species; }
-  [[gnu::noinline]] void scan_bigs(std::int32_t id);                     // pair tests against every big particle
-  void cross_big(std::int32_t id, int axis, int direction, bool stale);  // a big particle's crossing
+  [[gnu::noinline]] void scan_bigs(std::int32_t id);         // pair tests against every big particle
+  void cross_big(std::int32_t id, int axis, int direction);  // a big particle's crossing
   void schedule(std::int32_t id);
   void start_moving(std::int32_t id);
   void check_guard(std::int32_t id) const {
