@@ -41,9 +41,16 @@ CellPlan plan_cells(const CellDemand& demand) {
   const double requested = automatic_width<D>(demand);
   const bool big = !demand.periodic && !demand.wide_cells_for_big && impurity > host && requested < largest_contact &&
                    demand.impurities > 0 && demand.impurities <= max_big_particles;
-  if (!big) return {std::max(requested, largest_contact), 0};
+  if (!big) {
+    const double width = std::max(requested, largest_contact);
+    // The overlap: what the width leaves beyond the contact distance, less a hair so that the
+    // round-off of the crossing times never lets two particles in non-neighbour cells touch.
+    // Periodic grids keep disjoint cells (a face crossing there rounds the stored position).
+    const double margin = demand.periodic ? 0.0 : 0.5 * (width - largest_contact) * (1.0 - 1e-9);
+    return {width, 0, margin};
+  }
   const double width = std::max(requested, 2.0 * host);
-  return {width, static_cast<int>(std::ceil((impurity + host) / width))};
+  return {width, static_cast<int>(std::ceil((impurity + host) / width)), 0.0};
 }
 template CellPlan plan_cells<2>(const CellDemand&);
 template CellPlan plan_cells<3>(const CellDemand&);

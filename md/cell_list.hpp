@@ -26,11 +26,12 @@ struct CellDemand {
   bool wide_cells_for_big = false;  ///< EngineConfig::wide_cells_for_big
 };
 
-/// The cell width (length) and the reach of the big particles' stencils (md/big_particles.hpp;
-/// 0: no big particles).
+/// The cell width (length), the reach of the big particles' stencils (md/big_particles.hpp;
+/// 0: no big particles) and the cells' overlap (length; see CellList::margin).
 struct CellPlan {
   double width;
   int big_reach;
+  double margin = 0.0;
 };
 
 /// Beyond this many impurities the list of big particles is not short: wide cells instead.
@@ -41,7 +42,8 @@ inline constexpr std::size_t max_big_particles = 64;
 /// then cells are at least the host contact distance wide and the impurities are big. Automatic in
 /// open geometry (requested_width = 0): the width at which a full scan's 3^D cells hold 2.7
 /// particles on average, at most 2 sigma / sqrt(D). Periodic geometry uses the largest contact
-/// distance unless a width is requested.
+/// distance unless a width is requested. Open grids without big particles overlap their cells by
+/// all the width leaves beyond the contact distance (CellList::margin).
 template <int D>
 CellPlan plan_cells(const CellDemand& demand);
 
@@ -105,16 +107,23 @@ class CellList {
   const std::int32_t* heads() const { return head_.data(); }
   const std::int32_t* links() const { return next_.data() + 1; }
 
-  /// Time at which a particle with stored state p leaves its cell p.cell, and the face it leaves by
-  /// (code = 2 axis + (v_axis > 0)); `never` at rest: the pair evaluator's crossing time
-  /// (md/collision.hpp), or with `simd` its SSE2 version, or with `avx2` (D = 3) its AVX2 version,
+  /// Overlapping cells (DynamO's idea, against rattling between two cells): a particle stays in
+  /// its cell until it is `margin` beyond one of its faces, and then moves to the neighbour across
+  /// that face. Two particles in cells that are not neighbours are still more than a contact
+  /// distance apart as long as width >= contact distance + 2 margin, so the 3^D neighbour cells
+  /// still hold every possible partner; a particle turning back near a face crosses nothing.
+  double margin() const { return margin_; }
+  void set_margin(double margin) { margin_ = margin; }
+  /// Time at which a particle with stored state p leaves its cell p.cell (widened by the margin on
+  /// every side), and the face it leaves by (code = 2 axis + (v_axis > 0)); `never` at rest: the pair evaluator's
+  /// crossing time (md/collision.hpp), or with `simd` its SSE2 version, or with `avx2` (D = 3) its AVX2 version,
   /// bitwise the same (md/pair_kernel.hpp).
   double crossing_time(const Particle<D>& p, std::uint8_t& code, bool simd, bool avx2) const {
     const auto c = coordinates(p.cell);
     double lower[D], width[D];
     for (int k = 0; k < D; ++k) {
-      lower[k] = lower_[k] + c[k] * width_[k];
-      width[k] = width_[k];
+      lower[k] = lower_[k] + c[k] * width_[k] - margin_;
+      width[k] = width_[k] + 2.0 * margin_;
     }
     if constexpr (simd_built) {
       if constexpr (D == 3)
@@ -177,6 +186,7 @@ class CellList {
   void remove_further(std::int32_t id, std::int32_t cell);
   void set_up(std::size_t particle_count);
   bool periodic_ = false;
+  double margin_ = 0.0;
   Vec<D> lower_ = Vec<D>::Zero(), box_ = Vec<D>::Zero(), width_ = Vec<D>::Zero();
   std::array<std::int32_t, D> count_{}, stride_{};
   std::array<double, D> inverse_stride_{};

@@ -25,8 +25,10 @@ CellDemand cell_demand(const EngineConfig<D>& config, const InitialState<D>& sta
 
 template <int D>
 CellList<D> make_cells(const EngineConfig<D>& config, const CellPlan& plan, std::size_t count) {
-  if (config.periodic) return CellList<D>::periodic(config.box, plan.width, count);
-  return CellList<D>::open(config.region_radius, plan.width, count, plan.big_reach + 1);
+  CellList<D> cells = config.periodic ? CellList<D>::periodic(config.box, plan.width, count)
+                                      : CellList<D>::open(config.region_radius, plan.width, count, plan.big_reach + 1);
+  cells.set_margin(plan.margin);
+  return cells;
 }
 }  // namespace
 
@@ -70,9 +72,10 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
   if (!config.periodic) {
     // Positions are checked at every event of a moving particle, and a particle has an event at
     // least once per cell it crosses, so checking |x| against guard_radius minus one cell diagonal
-    // keeps every moving particle inside guard_radius (and its neighbour cells inside the grid).
+    // (of the cell widened by its margin) keeps every moving particle inside guard_radius (and its
+    // neighbour cells inside the grid).
     double diagonal = 0.0;
-    for (int k = 0; k < D; ++k) diagonal += cells_.width(k) * cells_.width(k);
+    for (int k = 0; k < D; ++k) diagonal += std::pow(cells_.width(k) + 2.0 * cells_.margin(), 2);
     const double trigger = std::max(0.0, config.guard_radius - std::sqrt(diagonal));
     guard_trigger2_ = trigger * trigger;
   }

@@ -182,10 +182,11 @@ void Engine<D, Queue>::for_each_in_ball(const Vec<D>& centre, double radius, F&&
   std::array<std::int32_t, D> lo, hi, c;
   const auto last = cells_.coordinates(cells_.cell_count() - 1);
   for (int k = 0; k < D; ++k) {
-    const double w = cells_.width(k);
-    lo[k] = static_cast<std::int32_t>(std::max(0.0, std::floor((centre[k] - radius - cells_.lower()[k]) / w)));
+    // A particle may lie up to the margin outside its cell (md/cell_list.hpp).
+    const double w = cells_.width(k), reach = radius + cells_.margin();
+    lo[k] = static_cast<std::int32_t>(std::max(0.0, std::floor((centre[k] - reach - cells_.lower()[k]) / w)));
     hi[k] =
-        static_cast<std::int32_t>(std::min<double>(last[k], std::floor((centre[k] + radius - cells_.lower()[k]) / w)));
+        static_cast<std::int32_t>(std::min<double>(last[k], std::floor((centre[k] + reach - cells_.lower()[k]) / w)));
     if (hi[k] < lo[k]) return;
   }
   c = lo;

@@ -2,8 +2,10 @@
 // conservation over 10^6 collisions, no overlaps with the overlap check on, the heap and the
 // bucketed calendar producing bit-identical trajectories, and so does any cell width in open geometry,
 // and large impurities with host-sized cells and a wide stencil (bit-identical to wide cells).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
 
 #include "md/engine.hpp"
 #include "md/initial_state.hpp"
@@ -140,9 +142,9 @@ TEST_CASE("the guard stops a particle that approaches the region's edge", "[fast
   Engine<2, HeapEventQueue> engine(open_config<2>(20.0), s);
   CHECK_THROWS_WITH(engine.run_until(100.0), Catch::Contains("raise the test region"));
   // Disc 1 (x = -5 - t) reaches the guard radius 18 at t = 13; the check trips at most one
-  // cell diagonal (sqrt(2) w) earlier.
+  // diagonal of a cell widened by its margin (sqrt(2) (w + 2 margin)) earlier.
   CHECK(engine.now() <= 13.0);
-  CHECK(engine.now() >= 13.0 - std::sqrt(2.0) * engine.cells().width(0));
+  CHECK(engine.now() >= 13.0 - std::sqrt(2.0) * (engine.cells().width(0) + 2.0 * engine.cells().margin()));
   CHECK(engine.cells().width(0) <= std::sqrt(2.0) * (1.0 + 1e-15));  // the automatic width's cap
 }
 
@@ -247,7 +249,8 @@ void require_identical_runs(const InitialState<D>& s, const EngineConfig<D>& a, 
 
 TEST_CASE("trajectories are bit-identical for any cell width (2D blast, open geometry)", "[fast]") {
   // Cell crossings never touch a particle's stored state, and pair predictions do not depend on
-  // when they are made, so the cell grid only changes which events are bookkeeping.
+  // when they are made, so the cell grid only changes which events are bookkeeping. Width 1 has
+  // disjoint cells; the others overlap by (width - sigma) / 2 (md/cell_list.hpp, margin).
   const InitialState<2> s = blast_state<2>(11, 110.0, {0.5, 1.0});
   EngineConfig<2> automatic = open_config<2>(140.0), narrow = automatic, wide = automatic, wider = automatic;
   narrow.cell_width = 1.0;
@@ -256,6 +259,38 @@ TEST_CASE("trajectories are bit-identical for any cell width (2D blast, open geo
   require_identical_runs<2>(s, automatic, narrow, 400.0, 10000);
   require_identical_runs<2>(s, automatic, wide, 400.0, 10000);
   require_identical_runs<2>(s, automatic, wider, 400.0, 10000);
+}
+
+TEST_CASE("for_each_in_ball finds exactly the particles in the ball, also those outside their cell by the margin",
+          "[fast]") {
+  const InitialState<2> s = blast_state<2>(16, 60.0, {0.5, 1.0});
+  EngineConfig<2> config = open_config<2>(90.0);
+  config.cell_width = 2.5;  // overlap 0.75: many moving particles lie beyond a face of their cell
+  Engine<2, CalendarEventQueue> engine(config, s);
+  REQUIRE(engine.cells().margin() > 0.7);
+  engine.run_until(150.0);
+  REQUIRE(engine.collision_count() > 2000);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-40.0, 40.0);
+  int outside_their_cell = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec<2> centre(u(rng), u(rng));
+    const double radius = 1.0 + 0.05 * trial;
+    std::vector<std::int32_t> found, expected;
+    engine.for_each_in_ball(centre, radius, [&](std::int32_t id, const Vec<2>&) { found.push_back(id); });
+    for (std::size_t i = 0; i < engine.size(); ++i) {
+      const auto id = static_cast<std::int32_t>(i);
+      if ((engine.position(id) - centre).squaredNorm() <= radius * radius) expected.push_back(id);
+    }
+    std::sort(found.begin(), found.end());
+    INFO("trial " << trial);
+    REQUIRE(found == expected);
+  }
+  for (std::size_t i = 0; i < engine.size(); ++i) {
+    const auto id = static_cast<std::int32_t>(i);
+    outside_their_cell += engine.cells().cell_of(engine.position(id)) != engine.particle(id).cell;
+  }
+  CHECK(outside_their_cell > 100);
 }
 
 TEST_CASE("the automatic open-grid cell width puts 2.7 particles in a full scan's 3^D cells, never below sigma",
