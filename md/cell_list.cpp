@@ -8,24 +8,29 @@
 namespace coldblast::md {
 
 namespace {
-// Automatic cell width in open geometry: the width at which a full scan's 3^D cells hold about
-// this many particles on average (never below the contact distance). A wider cell means fewer
-// crossing events (a crossing costs about as much as a pair scan of the new slab) but more
-// candidates per scan. Callgrind (instructions, simulated mispredicts and D1 misses; docs/
-// benchmarks.md "Cell width") of one blast realization: in the dilute 2D paper scene (n = 0.15,
-// a = 1/2) the optimum is near 1.4 sigma, i.e. 2.7 candidates (-7 % instructions against sigma);
-// in the 3D paper scene (n = 0.225) sigma already gives 6 candidates and any wider cell costs more
-// (1.05 sigma +4 %, 1.1 sigma +8 %), so the rule keeps sigma there. Trajectories do not depend on
-// the width in open geometry (crossings never touch the stored state): this only changes the cost.
-constexpr double auto_scan_candidates = 2.7;
+// Automatic cell width: the width at which a full scan's 3^D cells hold about this many particles
+// on average (never below the contact distance). A wider cell means fewer crossing events (each a
+// calendar round trip, a cell-list move and a slab scan) but more candidates per scan.
+//  - 2D, one candidate at a time (the SSE2 pair test): in the paper scene (n = 0.15, a = 1/2) the
+//    optimum was near 1.4 sigma, i.e. 2.7 candidates (docs/benchmarks.md "Cell width").
+//  - 3D, candidates gathered and tested four at a time (the AVX2 kernel): about 10 candidates;
+//    paired loop times of 3D equilibria (N = 32000) at cell widths 1 to 2 sigma put the optimum
+//    near 1.5 sigma at phi = 0.05 and 1.3 sigma at phi = 0.1, and at sigma from phi = 0.2 on
+//    (docs/benchmarks.md, issue 31).
+// In open geometry trajectories do not depend on the width (crossings never touch the stored
+// state): it only changes the cost. Periodic trajectories differ by round-off between widths.
+constexpr double auto_scan_candidates[2] = {2.7, 10.0};
 
 template <int D>
 double automatic_width(const CellDemand& demand) {
-  if (demand.periodic || demand.requested_width > 0.0 || demand.particles == 0) return demand.requested_width;
-  const double ball = D == 2 ? M_PI * demand.region_radius * demand.region_radius
-                             : 4.0 / 3.0 * M_PI * std::pow(demand.region_radius, 3);
-  const double density = static_cast<double>(demand.particles) / ball;
-  const double width = std::pow(auto_scan_candidates / (std::pow(3.0, D) * density), 1.0 / D);
+  if (demand.requested_width > 0.0 || demand.particles == 0) return demand.requested_width;
+  double volume = demand.periodic_volume;
+  if (!demand.periodic)
+    volume = D == 2 ? M_PI * demand.region_radius * demand.region_radius
+                    : 4.0 / 3.0 * M_PI * std::pow(demand.region_radius, 3);
+  const double density = static_cast<double>(demand.particles) / volume;
+  const double width = std::pow(auto_scan_candidates[D - 2] / (std::pow(3.0, D) * density), 1.0 / D);
+  if (demand.periodic) return std::min(width, demand.periodic_side / 3.0);  // at least 3 cells per axis
   // The guard trips up to one cell diagonal early (see the engine's constructor), and a scene
   // leaves two contact distances between the shock's allowance and the guard radius (scenes.cpp):
   // a wider automatic cell would stop runs the scene allows. 2 sigma / sqrt(D) is 1.41 sigma in 2D.
@@ -41,16 +46,9 @@ CellPlan plan_cells(const CellDemand& demand) {
   const double requested = automatic_width<D>(demand);
   const bool big = !demand.periodic && !demand.wide_cells_for_big && impurity > host && requested < largest_contact &&
                    demand.impurities > 0 && demand.impurities <= max_big_particles;
-  if (!big) {
-    const double width = std::max(requested, largest_contact);
-    // The overlap: what the width leaves beyond the contact distance, less a hair so that the
-    // round-off of the crossing times never lets two particles in non-neighbour cells touch.
-    // Periodic grids keep disjoint cells (a face crossing there rounds the stored position).
-    const double margin = demand.periodic ? 0.0 : 0.5 * (width - largest_contact) * (1.0 - 1e-9);
-    return {width, 0, margin};
-  }
+  if (!big) return {std::max(requested, largest_contact), 0, true};
   const double width = std::max(requested, 2.0 * host);
-  return {width, static_cast<int>(std::ceil((impurity + host) / width)), 0.0};
+  return {width, static_cast<int>(std::ceil((impurity + host) / width)), false};
 }
 template CellPlan plan_cells<2>(const CellDemand&);
 template CellPlan plan_cells<3>(const CellDemand&);

@@ -20,18 +20,21 @@ struct CellDemand {
   bool periodic = false;
   double requested_width = 0.0;  ///< EngineConfig::cell_width (length; 0 = automatic)
   double region_radius = 1.0;    ///< open: particles lie within this radius of the origin (length)
+  double periodic_volume = 1.0;  ///< periodic: the box volume (length^D)
+  double periodic_side = 1.0;    ///< periodic: the box's shortest side (length)
   std::size_t particles = 0;
   double host_radius = 0.5, impurity_radius = 0.5;  ///< (length)
   std::size_t impurities = 0;
   bool wide_cells_for_big = false;  ///< EngineConfig::wide_cells_for_big
 };
 
-/// The cell width (length), the reach of the big particles' stencils (md/big_particles.hpp;
-/// 0: no big particles) and the cells' overlap (length; see CellList::margin).
+/// The cell width (length; a periodic box rounds it up to fit a whole number of cells), the reach
+/// of the big particles' stencils (md/big_particles.hpp; 0: no big particles), and whether the
+/// cells overlap by all the width leaves beyond the contact distance (CellList::margin).
 struct CellPlan {
   double width;
   int big_reach;
-  double margin = 0.0;
+  bool overlap;
 };
 
 /// Beyond this many impurities the list of big particles is not short: wide cells instead.
@@ -39,11 +42,10 @@ inline constexpr std::size_t max_big_particles = 64;
 
 /// The cell scheme of an engine. Never below the largest contact distance, except in open geometry
 /// with impurities larger than the host (at most max_big_particles, and unless wide_cells_for_big):
-/// then cells are at least the host contact distance wide and the impurities are big. Automatic in
-/// open geometry (requested_width = 0): the width at which a full scan's 3^D cells hold 2.7
-/// particles on average, at most 2 sigma / sqrt(D). Periodic geometry uses the largest contact
-/// distance unless a width is requested. Open grids without big particles overlap their cells by
-/// all the width leaves beyond the contact distance (CellList::margin).
+/// then cells are at least the host contact distance wide and the impurities are big. Automatic
+/// (requested_width = 0): the width at which a full scan's 3^D cells hold 2.7 particles on average
+/// in 2D and 10 in 3D, at most 2 sigma / sqrt(D) in open geometry (the guard) and a third of the
+/// box in periodic geometry. Grids without big particles overlap their cells (CellList::margin).
 template <int D>
 CellPlan plan_cells(const CellDemand& demand);
 

@@ -15,6 +15,8 @@ CellDemand cell_demand(const EngineConfig<D>& config, const InitialState<D>& sta
   demand.periodic = config.periodic;
   demand.requested_width = config.cell_width;
   demand.region_radius = config.region_radius;
+  demand.periodic_volume = config.box.prod();
+  demand.periodic_side = config.box.minCoeff();
   demand.particles = state.size();
   demand.host_radius = state.host.radius;
   demand.impurity_radius = state.impurity.radius;
@@ -24,10 +26,16 @@ CellDemand cell_demand(const EngineConfig<D>& config, const InitialState<D>& sta
 }
 
 template <int D>
-CellList<D> make_cells(const EngineConfig<D>& config, const CellPlan& plan, std::size_t count) {
+CellList<D> make_cells(const EngineConfig<D>& config, const CellPlan& plan, std::size_t count, double largest_contact) {
   CellList<D> cells = config.periodic ? CellList<D>::periodic(config.box, plan.width, count)
                                       : CellList<D>::open(config.region_radius, plan.width, count, plan.big_reach + 1);
-  cells.set_margin(plan.margin);
+  if (plan.overlap) {
+    // What the width leaves beyond the contact distance, less a hair so that the round-off of the
+    // crossing times never lets two particles in cells that are not neighbours touch.
+    double spare = cells.width(0);
+    for (int k = 1; k < D; ++k) spare = std::min(spare, cells.width(k));
+    cells.set_margin(0.5 * (spare - largest_contact) * (1.0 - 1e-9));
+  }
   return cells;
 }
 }  // namespace
@@ -45,7 +53,8 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       same_radius_(state.host.radius == state.impurity.radius),
       simd_crossing_(D == 3 && config.simd && pair_kernel_available()),
       use_kernel_(simd_crossing_ && same_radius_),
-      cells_(make_cells(config, plan_cells<D>(cell_demand(config, state)), state.size())),
+      cells_(make_cells(config, plan_cells<D>(cell_demand(config, state)), state.size(),
+                        2.0 * std::max(state.host.radius, state.impurity.radius))),
       queue_(state.size()) {
   if (state.velocity.size() != state.size() || state.species.size() != state.size())
     throw std::invalid_argument("initial state: position, velocity and species sizes differ");

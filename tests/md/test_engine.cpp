@@ -293,7 +293,7 @@ TEST_CASE("for_each_in_ball finds exactly the particles in the ball, also those 
   CHECK(outside_their_cell > 100);
 }
 
-TEST_CASE("the automatic open-grid cell width puts 2.7 particles in a full scan's 3^D cells, never below sigma",
+TEST_CASE("the automatic cell width puts 2.7 (2D) or 10 (3D) particles in a full scan's 3^D cells, never below sigma",
           "[fast]") {
   // 2D at n = 0.2: 9 n w^2 = 2.7 gives w = sqrt(0.3 / n) = 1.22 (in units of sigma = 1); at the
   // paper's n = 0.15 the rule gives 1.4144 and the cap below, sqrt(2), takes over.
@@ -306,14 +306,42 @@ TEST_CASE("the automatic open-grid cell width puts 2.7 particles in a full scan'
   Engine<2, CalendarEventQueue> e2(open_config<2>(60.0), s2);
   CHECK_THAT(e2.cells().width(0), WithinRel(std::sqrt(0.3 / n2), 1e-12));
   CHECK_THAT(e2.cells().width(0), WithinRel(std::sqrt(1.5), 1e-3));
-  // 3D at the paper-3d density n = 0.225: 27 n sigma^3 = 6.1 > 2.7 already, so sigma.
+  // 3D at the paper-3d density n = 0.225: 27 n w^3 = 10 gives w = 1.18, above the cap
+  // 2 sigma / sqrt(3) = 1.155 that keeps the guard within what a scene allows.
   InitialState<3> s3 = empty_state<3>();
   const auto count = static_cast<std::size_t>(0.225 * 4.0 / 3.0 * M_PI * 12.0 * 12.0 * 12.0);
   s3.position = random_sequential_addition<3>(rng, count, 0.5, 12.0);
   s3.velocity.assign(count, Vec<3>::Zero());
   s3.species.assign(count, host_species);
   Engine<3, CalendarEventQueue> e3(open_config<3>(12.0), s3);
-  CHECK(e3.cells().width(0) == 1.0);
+  CHECK_THAT(e3.cells().width(0), WithinRel(2.0 / std::sqrt(3.0), 1e-15));
+  // A periodic 3D box at phi = 0.05 (n = 0.0955): 27 n w^3 = 10 gives w = 1.57; the box of side
+  // 34.9 holds 22 cells of width 1.59 (whole cells: at least the rule's width). At phi = 0.3 the
+  // rule gives 0.86, below sigma: cells as wide as sigma allows (34 in the box of side 34.7).
+  for (const double phi : {0.05, 0.3}) {
+    const std::size_t n_periodic = 4000;
+    EngineConfig<3> box;
+    box.periodic = true;
+    box.box = Vec<3>::Constant(std::cbrt(n_periodic * (M_PI / 6.0) / phi));
+    const InitialState<3> lattice = lattice_start<3>(rng, n_periodic, 0.5, box.box, 1.0);
+    const double n = static_cast<double>(n_periodic) / box.box.prod();
+    const double rule = std::max(1.0, std::cbrt(10.0 / (27.0 * n)));
+    const Engine<3, CalendarEventQueue> periodic(box, lattice);
+    INFO("phi " << phi);
+    CHECK(periodic.cells().width(0) >= rule);
+    CHECK(periodic.cells().count(0) == static_cast<std::int32_t>(std::floor(box.box[0] / rule)));
+    // The overlap: half of what the width leaves beyond sigma, less a hair.
+    CHECK(periodic.cells().margin() < 0.5 * (periodic.cells().width(0) - 1.0));
+    CHECK_THAT(periodic.cells().margin(), WithinRel(0.5 * (periodic.cells().width(0) - 1.0), 1e-8));
+  }
+  // A periodic box too small for three cells of the rule's width gets three cells.
+  InitialState<2> pair = empty_state<2>();
+  add<2>(pair, Vec<2>(2.0, 5.0), Vec<2>(1.0, 0.0));
+  add<2>(pair, Vec<2>(6.0, 5.0), Vec<2>::Zero());
+  EngineConfig<2> small;
+  small.periodic = true;
+  small.box = Vec<2>::Constant(10.0);
+  CHECK(Engine<2, CalendarEventQueue>(small, pair).cells().count(0) == 3);
   // A dilute gas: capped at 2 sigma / sqrt(D), so the guard never trips inside what a scene allows.
   InitialState<2> dilute = empty_state<2>();
   add<2>(dilute, Vec<2>(0.0, 0.0), Vec<2>(1.0, 0.0));
