@@ -195,7 +195,9 @@ template <bool Shifted>
   // Addresses as integers: a missing particle (-1) prefetches the line before the array, which
   // a prefetch may do (it never faults), without out-of-range pointer arithmetic.
   const std::uintptr_t lines = reinterpret_cast<std::uintptr_t>(particles_);
-  const auto take = [&](std::int32_t j, int m) {
+  // Always inlined, as flush below: g++ called it out of line in the wrapped scan after the engine
+  // was split by concept (+9 % instructions in the 3D equilibrium loop at phi = 0.3).
+  const auto take = [&](std::int32_t j, int m) __attribute__((always_inline)) {
     ids[n] = j;
     if constexpr (Shifted) {
       sx[n] = shifts[m][0];
