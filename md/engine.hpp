@@ -35,8 +35,8 @@ struct EngineConfig {
   std::function<std::string(double now)> guard_advice_at;
   /// Cell side (length); 0 = automatic. Never below the largest contact distance, except in open
   /// geometry with impurities larger than the host: then cells are as narrow as the host contact
-  /// distance and the impurities are "big" (a wider stencil: md/big_particles.hpp). Periodic
-  /// geometry uses the largest contact distance unless a width is given (md/cell_list.hpp, plan_cells).
+  /// distance and the impurities are "big" (a wider stencil: md/big_particles.hpp). Automatic: the
+  /// width at which a full scan holds 2.7 (2D) or 10 (3D) particles (md/cell_list.hpp, plan_cells).
   double cell_width = 0.0;
   /// Open geometry: keep cells as wide as the largest contact distance even for large impurities
   /// (the plain scheme; same trajectories bit for bit, much slower for radius ratios >> 1).
