@@ -133,32 +133,31 @@ void require_kernel_invariant(const InitialState<3>& s, EngineConfig<3> config, 
   testing::require_same_trajectory(scalar, simd, min_collisions);
   REQUIRE(scalar.stale_count() == simd.stale_count());  // the same events, too
 }
+
+// A periodic box of `count` spheres (radius 1/2) at packing fraction phi, from a lattice at T = 1,
+// run `collisions` collisions with and without the kernel (cell_width 0 = automatic).
+void require_kernel_invariant_in_box(std::uint64_t seed, std::size_t count, double phi, double cell_width,
+                                     std::uint64_t collisions) {
+  auto rng = realization_rng(seed, 0);
+  EngineConfig<3> config;
+  config.periodic = true;
+  config.box = Vec<3>::Constant(std::cbrt(count * (M_PI / 6.0) / phi));
+  config.cell_width = cell_width;
+  const InitialState<3> s = lattice_start<3>(rng, count, 0.5, config.box, 1.0);
+  require_kernel_invariant(
+      s, config, [collisions](auto& engine) { engine.run_collisions(collisions); }, collisions);
+}
 }  // namespace
 
 TEST_CASE("engines with and without the SIMD pair kernel give bit-identical trajectories (3D)", "[fast]") {
   has_avx2_or_warn("both engines run the scalar pair test");
   SECTION("periodic fluid at phi = 0.3 (boundary cells scan with image shifts)") {
-    auto rng = realization_rng(3, 0);
-    const std::size_t count = 2000;
-    EngineConfig<3> config;
-    config.periodic = true;
-    config.box = Vec<3>::Constant(std::cbrt(count * (M_PI / 6.0) / 0.3));
-    const InitialState<3> s = lattice_start<3>(rng, count, 0.5, config.box, 1.0);
-    require_kernel_invariant(
-        s, config, [](auto& engine) { engine.run_collisions(200000); }, 200000);
+    require_kernel_invariant_in_box(3, 2000, 0.3, 0.0, 200000);
   }
   SECTION("wide periodic cells: scans of more candidates than one gathered batch holds") {
     // Cells 2 sigma wide at phi = 0.2 hold up to 8 lattice sites each, so a full scan's 27 cells
     // gather more than gather_capacity candidates and the batches must be flushed in between.
-    auto rng = realization_rng(5, 0);
-    const std::size_t count = 4000;
-    EngineConfig<3> config;
-    config.periodic = true;
-    config.box = Vec<3>::Constant(std::cbrt(count * (M_PI / 6.0) / 0.2));
-    config.cell_width = 2.0;
-    const InitialState<3> s = lattice_start<3>(rng, count, 0.5, config.box, 1.0);
-    require_kernel_invariant(
-        s, config, [](auto& engine) { engine.run_collisions(50000); }, 50000);
+    require_kernel_invariant_in_box(5, 4000, 0.2, 2.0, 50000);
   }
   SECTION("blast (open geometry, mostly resting candidates)") {
     auto rng = realization_rng(4, 0);
