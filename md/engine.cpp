@@ -304,13 +304,13 @@ void Engine<D, Queue>::cross(std::int32_t id, double t) {
   cells_.insert(id, p.cell);
   check_guard(id);
   if (config_.overlap_check) check_overlaps_of(id);
-  // A prediction gone stale (its partner changed course since) is kept as it is: it is only an
-  // upper bound, and its event, when it comes, finds the partner's counter moved on and predicts
-  // afresh (process()). Nothing is missed meanwhile: a pair that will touch is predicted by the
-  // one of the two that changed course last (it scanned in full then) or, if both were apart,
-  // by the one whose crossing brought them into adjacent cells. Checking the partner's counter
-  // here cost a random load per crossing: 20 % of the paper 2D realization's time
-  // (docs/benchmarks.md, issue 31).
+  // A prediction gone stale (its partner changed course since) is kept as it is: its time is no
+  // later than any contact this particle still has to predict, and its event, when it comes,
+  // finds the partner's counter moved on and predicts afresh (process()). Nothing is missed
+  // meanwhile: a pair that will touch is predicted by the one of the two that changed course
+  // last (it scanned in full then) or, if both were apart, by the one whose crossing brought them
+  // into adjacent cells. Checking the partner's counter here cost a random load per crossing
+  // (docs/benchmarks.md, issue 31's section).
   if (is_big(id)) [[unlikely]] {
     cross_big(id, axis, direction);
   } else if (ghosts_ && ghost_involved(id)) [[unlikely]] {
