@@ -137,8 +137,9 @@ void add_tracer_command(CLI::App& app) {
       ->capture_default_str();
   c->add_option("--cells", o->config.cells, "ns: Navier-Stokes cells")->capture_default_str();
   c->add_option("--kernel", o->config.kernel,
-                "auto (the 8-lane AVX-512 kernel where the CPU has it, for ns and tvns; else scalar), avx512 or "
-                "scalar: the same process with other deviates, so other sample paths (summary.json records it)")
+                "auto (the widest vector kernel this CPU runs, for ns and tvns; else scalar); avx512, avx2, sse4 or "
+                "neon forces that vector kernel (avx512 and avx2 give the same paths); scalar one trajectory at a "
+                "time: the same process with other deviates, so other sample paths (summary.json records it)")
       ->capture_default_str();
   add_format_option(*c, o->format);
   c->callback([o] { run(*o); });

@@ -132,12 +132,11 @@ TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progr
     result.chi = ambient.chi;
   }
   x.layout = std::make_unique<md::ObservableLayout>(scene);
-  const GridBackground* batch =
-      config.kernel != "scalar" && batch_available() ? batch_background(*x.background) : nullptr;
-  result.kernel = batch != nullptr ? "avx512" : "scalar";
-  x.run = std::make_unique<TracerContext>(TracerContext{result.config, scene, *x.layout, *x.background, impurity,
-                                                        result.start_time,
-                                                        config.start == "states" ? &x.states : nullptr, batch});
+  const GridBackground* grid = batch_background(*x.background);
+  result.kernel = resolve_kernel(config.kernel, grid != nullptr);
+  x.run = std::make_unique<TracerContext>(TracerContext{
+      result.config, scene, *x.layout, *x.background, impurity, result.start_time,
+      config.start == "states" ? &x.states : nullptr, result.kernel != "scalar" ? grid : nullptr, result.kernel});
   const long long block_count = (trajectories + scene.config.block_size - 1) / scene.config.block_size;
   for (long long b = config.shard_index; b < block_count; b += config.shard_count) blocks_.push_back(b);
 }

@@ -24,7 +24,7 @@ struct TracerRunInfo {
   md::ResolvedScene scene;  ///< A_d, φ, λ, radii and recording times (no particle region)
   std::string background_description;
   std::size_t background_frames = 0;
-  std::string kernel = "scalar";  ///< the kernel that runs: "avx512" or "scalar"
+  std::string kernel = "scalar";  ///< the kernel that runs: "scalar" or a vector kernel ("avx512", ...)
   double n = 0.0, chi = 1.0;      ///< ambient (equilibrium: bath) density and its contact value
   double start_time = 0.0;
 };

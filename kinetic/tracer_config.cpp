@@ -58,14 +58,7 @@ void TracerConfig::validate() const {
   common::require_in_range("--start-time", start_time, 0.0, scene.t_max, Bound::closed, Bound::open);
   common::require_integer_in_range("--frames-per-decade", frames_per_decade, 4, 400);
   common::require_integer_in_range("--cells", cells, 64, 4096);
-  if (kernel != "auto" && kernel != "avx512" && kernel != "scalar")
-    throw std::invalid_argument("--kernel = " + kernel + " is not one of: auto, avx512, scalar");
-  if (kernel == "avx512" && !batch_available())
-    throw std::invalid_argument(
-        "--kernel = avx512: this CPU (or build) has no AVX-512 F and DQ; allowed here: auto, scalar");
-  if (kernel == "avx512" && background == "equilibrium")
-    throw std::invalid_argument(
-        "--kernel = avx512 is for the grid backgrounds ns and tvns; allowed with equilibrium: auto, scalar");
+  resolve_kernel(kernel, background != "equilibrium");
 }
 
 double TracerConfig::resolved_start_time() const {

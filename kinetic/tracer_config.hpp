@@ -33,9 +33,10 @@ struct TracerConfig {
   std::shared_ptr<const md::ImpurityStates> states;
   int frames_per_decade = 40;  ///< ns: stored background frames per decade of R/λ, [4, 400]
   int cells = 256;             ///< ns: finite-volume cells, [64, 4096]; tvns: x samples = 8 × cells
-  /// "auto" (the 8-lane AVX-512 kernel of kinetic/batch.hpp where the CPU has it and the background
-  /// is a grid, else the scalar loop), "avx512" or "scalar". The kernels sample the same process
-  /// with different deviates: the same laws, other sample paths (a run records its kernel).
+  /// "auto" (the widest vector kernel of kinetic/batch.hpp this CPU runs where the background is a
+  /// grid, else the scalar loop), "avx512", "avx2", "sse4", "neon" or "scalar" (resolve_kernel). The
+  /// kernels sample the same process with different deviates: the same laws, other sample paths (a
+  /// run records its kernel).
   std::string kernel = "auto";
   /// Throws std::invalid_argument naming the option, its value and the allowed range.
   void validate() const;

@@ -149,7 +149,7 @@ void run_scalar(const TracerContext& ctx, long long first, long long count, cons
   }
 }
 
-/// The same trajectories in the 8-lane kernel (kinetic/batch.hpp): a lane that reaches a
+/// The same trajectories in the vector lanes (kinetic/batch.hpp): a lane that reaches a
 /// recording time is recorded and sent on at once, and a finished lane takes the next trajectory,
 /// so no lane waits for another. Finished trajectories enter the block's sums in index order, as
 /// in run_scalar, so the sums do not depend on the lanes' timing; the sample paths are the kernel's.
@@ -164,7 +164,7 @@ void run_batched(const TracerContext& ctx, long long first, long long count, con
   const std::vector<double>& times = ctx.scene.times;
   const double t_max = ctx.scene.config.t_max;
   const auto target = [&](const Flight& f) { return f.next < times.size() ? times[f.next] : t_max; };
-  Batch<D> batch(*ctx.batch, ctx.impurity);
+  Batch<D> batch(*ctx.batch, ctx.impurity, ctx.kernel);
   TracerCounters counters;
   std::vector<std::unique_ptr<Flight>> lanes(batch_lanes);
   std::map<long long, std::unique_ptr<Flight>> finished;  // waiting for an earlier trajectory

@@ -1,10 +1,11 @@
 #pragma once
 // The drivers of a tracer block: trajectories [first, first + count) of a block, each from its own
 // stream (seed, index), recorded at the scene's times into md's record layout and the tracer's
-// sums, either one after the other (the scalar loop of kinetic::advance) or eight at a time in the
-// lanes of the AVX-512 kernel (kinetic/batch.hpp). Both add finished trajectories in index order,
+// sums, either one after the other (the scalar loop of kinetic::advance) or 16 at a time in the
+// vector lanes of kinetic/batch.hpp. Both add finished trajectories in index order,
 // so a block's sums do not depend on the lanes' timing.
 #include <atomic>
+#include <string>
 #include <vector>
 
 #include "kinetic/background.hpp"
@@ -26,7 +27,8 @@ struct TracerContext {
   ImpurityModel impurity;
   double start_time;
   const std::vector<md::ImpurityState>* states;  ///< start = "states": trajectory i starts from states[i]
-  const GridBackground* batch;                   ///< the 8-lane kernel's background, or nullptr (scalar loop)
+  const GridBackground* batch;                   ///< the vector lanes' background, or nullptr (scalar loop)
+  std::string kernel;                            ///< the vector kernel of the lanes (kinetic/batch.hpp)
 };
 
 /// Runs the trajectories of block `block` in index order on the calling thread, with the lanes'

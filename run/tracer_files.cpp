@@ -168,7 +168,7 @@ common::Json read_tracer_summary(const std::filesystem::path& path) {
   if (s.contains("kernel"))
     take("kernel", false);
   else
-    keys["kernel"] = "scalar";  // runs before the 8-lane kernel
+    keys["kernel"] = "scalar";  // runs before the vector kernels
   return keys;
 }
 

@@ -21,7 +21,7 @@ struct TracerResult {
   kinetic::TracerBlocks blocks;
   std::string background_description;
   std::size_t background_frames = 0;
-  std::string kernel = "scalar";  ///< the kernel that ran: "avx512" or "scalar"
+  std::string kernel = "scalar";  ///< the kernel that ran: "scalar" or a vector kernel ("avx512", ...)
   double n = 0.0, chi = 1.0;      ///< ambient (equilibrium: bath) density and its contact value
   double start_time = 0.0;
   double wall_seconds = 0.0;

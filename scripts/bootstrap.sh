@@ -7,7 +7,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${COLDBLAST_BUILD_DIR:-$here/build}
 
 packages=(build-essential cmake git pkg-config
-          libsundials-dev libgsl-dev libeigen3-dev libboost-dev
+          libsundials-dev libgsl-dev libeigen3-dev libboost-dev libhwy-dev
           catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
           libbenchmark-dev gnuplot-nox poppler-utils openmpi-bin libopenmpi-dev clang-format
           python3-dev pybind11-dev python3-numpy python3-pandas python3-pytest python3-matplotlib python3-ase

@@ -5,7 +5,8 @@
 namespace coldblast::theory {
 
 // Made on 2026-11-25 with the commands below (docs/verification.md, "Beyond the paper"), 10⁵
-// trajectories each with the 8-lane kernel (kinetic/batch.hpp); the rows are
+// trajectories each with the 8-lane AVX-512 kernel of that date (kinetic/batch.hpp before the Highway
+// kernel: other sample paths now; docs/kinetic.md says how to repeat them bit for bit); the rows are
 // `scripts/tracer_prefactors.py RUN_DIR 34.25 100 1000 10000 100000 1000000 --cxx SOURCE` of the runs'
 // prefactors.csv. (The table of 2026-11-24, from 400 to 10⁴ trajectories, agrees within its errors.)
 const std::vector<PrefactorSource>& prefactor_sources() {

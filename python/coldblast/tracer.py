@@ -45,9 +45,9 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
     frames_per_decade, cells : int
         ns background: stored frames per decade of R/lambda [4, 400] and Navier-Stokes cells [64, 4096].
     kernel : str
-        "auto" (the 8-lane AVX-512 kernel where the CPU has it, for ns and tvns; else the scalar loop),
-        "avx512" or "scalar": the same process with other deviates, so other sample paths; the summary's
-        "kernel" says which ran.
+        "auto" (the widest vector kernel the CPU runs, for ns and tvns; else the scalar loop), "avx512",
+        "avx2", "sse4", "neon" or "scalar": the same process with other deviates, so other sample paths;
+        the summary's "kernel" says which ran.
     progress : bool or callable
         True: blocks done and ETA on stderr; False: silent; callable(done, total).
     **overrides

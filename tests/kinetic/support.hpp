@@ -78,11 +78,11 @@ struct MaxwellianCheck {
   }
 };
 
-/// A dilute 2D grid background (host radius 0.5, n∞ = 0.5 beyond x = 1) on 120 centres refined at
-/// the centre like the Navier–Stokes grid, frames at t = 1, 2, 4, 8 with s = t^(1/2), and the
-/// fields (n, u, T) = fields(x, t) at the nodes.
+/// A dilute grid background in d dimensions (host radius 0.5, n∞ = 0.5 beyond x = 1) on 120 centres
+/// refined at the centre like the Navier–Stokes grid, frames at t = 1, 2, 4, 8 with s = t^(1/2),
+/// and the fields (n, u, T) = fields(x, t) at the nodes.
 template <class Fields>
-inline GridBackground evolving_background(const Fields& fields) {
+inline GridBackground evolving_background(const Fields& fields, int d = 2) {
   std::vector<double> x;
   for (int i = 0; i < 120; ++i) x.push_back(0.01 + 0.98 * std::pow(i / 119.0, 1.5));
   std::vector<BackgroundFrame> frames;
@@ -96,7 +96,7 @@ inline GridBackground evolving_background(const Fields& fields) {
     }
     frames.push_back(f);
   }
-  return GridBackground(2, x, 1.0, frames, 0.5, ContactModel{2, 0.5, 0.5, false}, false);
+  return GridBackground(d, x, 1.0, frames, 0.5, ContactModel{d, 0.5, 0.5, false}, false);
 }
 
 /// The cold, steep, inflowing background of the heavy-impurity tests and the mean collision count

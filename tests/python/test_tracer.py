@@ -36,8 +36,8 @@ def test_kernel_is_passed_on_and_recorded():
     scalar = coldblast.tracer.run(background="tvns", kernel="scalar", trajectories=16, seed=3, progress=False, **TINY)
     assert scalar.summary["kernel"] == "scalar"
     auto = coldblast.tracer.run(background="tvns", trajectories=16, seed=3, progress=False, **TINY)
-    assert auto.summary["kernel"] in ("avx512", "scalar")
-    if auto.summary["kernel"] == "avx512":  # other deviates: other trajectories of the same law
+    assert auto.summary["kernel"] in ("avx512", "avx2", "sse4", "neon", "scalar")
+    if auto.summary["kernel"] != "scalar":  # other deviates: other trajectories of the same law
         assert auto.summary["collision_rate"] != scalar.summary["collision_rate"]
 
 
