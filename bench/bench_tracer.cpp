@@ -94,8 +94,8 @@ void late_core(benchmark::State& state) {
   report(state, counters);
 }
 
-/// late_core with eight trajectories at once in the vector lanes of `kernel` (kinetic/batch.hpp);
-/// per iteration 8 × the trajectories of late_core.
+/// late_core with batch_lanes (16) trajectories at once in the vector lanes of `kernel`
+/// (kinetic/batch.hpp); per iteration 16 × the trajectories of late_core.
 template <int D>
 void late_core_batch(benchmark::State& state, const std::string& kernel) {
   const LateScene& scene = late_scene(D);
