@@ -1,6 +1,7 @@
 // coldblast md: event-driven MD of the cold-gas blast (paper Sec. V). `md run` maps flags onto a
 // BlastConfig and calls run::run_blast; `md merge` combines shard directories exactly; `md
 // equilibrium` runs periodic hard spheres (md::run_equilibrium). Output formats: docs/md-output.md.
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,9 +17,12 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "md/equilibrium.hpp"
+#include "run/checkpoint.hpp"
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
 #include "run/md_run.hpp"
+#include "run/progress.hpp"
+#include "run/run_directory.hpp"
 #include "run/tracer_files.hpp"
 #if COLDBLAST_HAVE_MPI
 #include "run/mpi_ensemble.hpp"
@@ -38,8 +42,10 @@ struct MdRunOptions {
   CLI::Option* seed_option = nullptr;
   std::string out = "md-output";
   std::string shard = "0/1";
+  CLI::Option* shard_option = nullptr;
   std::string resume;      // --resume DIR: continue the checkpoint in DIR/checkpoint
   bool out_given = false;  // --out on the command line (must then equal --resume)
+  bool overwrite = false;  // --overwrite: replace another run's files in --out
   Format format = Format::table;
 };
 
@@ -47,11 +53,14 @@ struct MdStatesOptions {
   MdRunOptions run;  // scene, --set, --realizations, --seed, --threads (no shards or checkpoints)
   double time = 0.0;
   std::string out = "md-states";
+  bool overwrite = false;
+  Format format = Format::table;
 };
 
 struct MdMergeOptions {
   std::vector<std::string> inputs;
   std::string out;
+  bool overwrite = false;
   Format format = Format::table;
 };
 
@@ -60,51 +69,32 @@ struct MdEquilibriumOptions {
   Format format = Format::table;
 };
 
-/// The status line of md run on stderr: realizations done with an ETA, at most every 0.5 s; while
-/// none finishes for 2 s (a 3D paper-scene realization runs for minutes), the simulated time a
-/// running realization has reached.
+/// md run's progress (run/progress.hpp): realizations done with an ETA; while none finishes (a 3D
+/// paper-scene realization runs for minutes), the simulated time a running realization has reached.
 class Progress {
  public:
-  explicit Progress(double t_max, const char* label = "md run") : t_max_(t_max), label_(label) {}
+  explicit Progress(double t_max, const char* label = "md run") : t_max_(t_max), lines_(label, "realizations") {}
   void operator()(long long done, long long total) {
-    std::lock_guard<std::mutex> lock(mutex_);
     done_ = done;
     total_ = total;
-    const auto now = std::chrono::steady_clock::now();
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    if (done < total && std::chrono::duration<double>(now - last_).count() < 0.5) return;
-    last_ = now;
-    shown_ = true;
-    const double eta = done > 0 ? elapsed * (total - done) / done : 0.0;
-    std::fprintf(stderr, "\r%s: %lld/%lld realizations, %.1f s elapsed, ETA %.1f s   ", label_, done, total, elapsed,
-                 eta);
-    if (done == total) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
+    lines_.update(done, total);
   }
   void at(long long realization, double t) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const auto now = std::chrono::steady_clock::now();
-    if (shown_ && std::chrono::duration<double>(now - last_).count() < 2.0) return;
-    last_ = now;
-    shown_ = true;
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const std::string done = std::to_string(done_) + (total_ > 0 ? "/" + std::to_string(total_) : "");
+    const std::string done = std::to_string(done_) + (total_ > 0 ? "/" + std::to_string(total_.load()) : "");
+    char text[160];
     if (t == 0.0)  // a realization starts: its initial state (random sequential addition) comes first
-      std::fprintf(stderr, "\r%s: %s realizations done; realization %lld: placing the particles, %.1f s elapsed   ",
-                   label_, done.c_str(), realization, elapsed);
+      std::snprintf(text, sizeof text, "%s realizations done; realization %lld: placing the particles", done.c_str(),
+                    realization);
     else
-      std::fprintf(stderr, "\r%s: %s realizations done; realization %lld at t = %.4g of %.4g, %.1f s elapsed   ",
-                   label_, done.c_str(), realization, t, t_max_, elapsed);
-    std::fflush(stderr);
+      std::snprintf(text, sizeof text, "%s realizations done; realization %lld at t = %.4g of %.4g", done.c_str(),
+                    realization, t, t_max_);
+    lines_.status(text);
   }
 
  private:
-  std::mutex mutex_;  // at() comes from the worker threads
   double t_max_;
-  const char* label_;
-  long long done_ = 0, total_ = 0;
-  bool shown_ = false;  // a line was printed
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
+  std::atomic<long long> done_{0}, total_{0};  // at() comes from the worker threads
+  run::Progress lines_;
 };
 
 void print_summary(const run::BlastResult& result, const std::string& out, Format format) {
@@ -142,7 +132,7 @@ void print_final_estimates(const run::BlastResult& ensemble) {
 namespace {
 
 // The ensemble (over MPI ranks when built with MPI); a SIGINT/SIGTERM stop says how to resume.
-run::BlastResult run_ensemble(const md::BlastConfig& config, const run::RunOptions& options, const std::string& out) {
+run::BlastResult run_ensemble(const md::BlastConfig& config, const run::RunOptions& options) {
   try {
 #if COLDBLAST_HAVE_MPI
     return run::run_blast_mpi(config, options);
@@ -150,9 +140,8 @@ run::BlastResult run_ensemble(const md::BlastConfig& config, const run::RunOptio
     return run::run_blast(config, options);
 #endif
   } catch (const common::Interrupted&) {
-    std::cerr << "\ncoldblast: the finished blocks are saved in "
-              << (std::filesystem::path(out) / "checkpoint").string()
-              << "; continue with the same command and --resume " << out << '\n';
+    std::cerr << "\ncoldblast: every finished realization is saved in " << run::checkpoint_folder(options.out).string()
+              << "; continue with `" << options.resume_hint << "`\n";
     throw;
   }
 }
@@ -164,41 +153,40 @@ void run_md(const MdRunOptions& o) {
   if (o.realizations_option->count() > 0) request.realizations = o.realizations;
   if (o.seed_option->count() > 0) request.seed = o.seed;
   request.threads = o.threads;
-  const auto [shard_index, shard_count] = run::parse_shard(o.shard);
-  run::MdRunPlan plan = run::plan_md_run(request);
-  const md::BlastConfig& config = plan.config;
-  run::RunOptions& options = plan.options;
-  options.shard_index = shard_index;
-  options.shard_count = shard_count;
-  Progress progress(config.t_max);
-  options.progress = [&progress](long long done, long long total) { progress(done, total); };
-  options.realization_time = [&progress](long long realization, double t) { progress.at(realization, t); };
-  // Every finished block is checkpointed in OUT/checkpoint (removed once the outputs are written);
-  // --resume DIR continues there (DIR is the output directory).
+  if (o.shard_option->count() > 0) request.shard = o.shard;
+  // Every finished realization is checkpointed in OUT/checkpoint (removed once the outputs are
+  // written); --resume DIR continues there (DIR is the output directory) with its scene and shard.
   std::string out = o.out;
   if (!o.resume.empty()) {
     if (o.out_given &&
         std::filesystem::path(o.out).lexically_normal() != std::filesystem::path(o.resume).lexically_normal())
       throw std::invalid_argument("--resume = " + o.resume + " must be the output directory (--out = " + o.out + ")");
     out = o.resume;
-    options.resume = true;
+    request.resume = true;
   }
   common::require_output_folder(out, o.resume.empty() ? "--out" : "--resume");
-  options.checkpoint = std::filesystem::path(out) / "checkpoint";
+  request.out = out;
+  request.overwrite = o.overwrite;
+  request.resume_hint = "coldblast md run --resume " + out;
+  run::MdRunPlan plan = run::plan_md_run(request);
+  const md::BlastConfig& config = plan.config;
+  run::RunOptions& options = plan.options;
+  Progress progress(config.t_max);
+  options.progress = [&progress](long long done, long long total) { progress(done, total); };
+  options.realization_time = [&progress](long long realization, double t) { progress.at(realization, t); };
+  options.warning = [](const std::string& warning) { std::cerr << "md run: " << warning << '\n'; };
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks; rank 0 alone reports progress and writes the outputs.
   if (run::MpiSession::rank() != 0) {
     options.progress = nullptr;
     options.realization_time = nullptr;
   }
-  run::BlastResult result = run_ensemble(config, options, out);
+  run::BlastResult result = run_ensemble(config, options);
   if (run::MpiSession::rank() != 0) return;
 #else
-  run::BlastResult result = run_ensemble(config, options, out);
+  run::BlastResult result = run_ensemble(config, options);
 #endif
-  run::write_blast_outputs(result, out);
-  std::error_code ignored;
-  std::filesystem::remove_all(options.checkpoint, ignored);
+  run::finish_md_run(result, out);
   print_summary(result, out, o.format);
 }
 
@@ -212,12 +200,26 @@ void states_md(const MdStatesOptions& o) {
   request.threads = o.run.threads;
   const run::MdRunPlan plan = run::plan_md_run(request);
   common::require_output_folder(o.out, "--out");
+  run::claim_output_folder(o.out, "--out", o.overwrite, "coldblast md run --resume " + o.out);
   const md::ResolvedScene scene = run::resolve_blast_scene(plan.config);
   Progress progress(o.time, "md states");
   const auto states = run::impurity_states(scene, o.time, plan.config.realizations, o.run.threads,
                                            [&progress](long long done, long long total) { progress(done, total); });
-  const std::filesystem::path file = std::filesystem::path(o.out) / "impurity_states.csv";
-  common::write_file_atomic(file, run::impurity_states_csv(states, plan.config, o.time));
+  const std::filesystem::path file = run::write_impurity_states(o.out, states, plan.config, o.time);
+  if (o.format == Format::json) {
+    common::Json j;
+    j["impurities"] = states.size();
+    j["realizations"] = plan.config.realizations;
+    j["scene"] = plan.config.name;
+    j["d"] = plan.config.d;
+    j["t"] = o.time;
+    j["seed"] = plan.config.seed;
+    j["file"] = file.string();
+    j["run_id"] = run::recorded_run_id(file);
+    j["out"] = o.out;
+    print_json(j);
+    return;
+  }
   std::printf("md states: %zu impurities of %lld realizations of scene %s at t = %s; written to %s\n", states.size(),
               plan.config.realizations, plan.config.name.c_str(), common::format_number(o.time).c_str(),
               file.string().c_str());
@@ -226,6 +228,11 @@ void states_md(const MdStatesOptions& o) {
 void merge_md(const MdMergeOptions& o) {
   common::require_output_folder(o.out, "--out");
   std::vector<std::filesystem::path> inputs(o.inputs.begin(), o.inputs.end());
+  for (const auto& input : inputs)
+    if (std::filesystem::weakly_canonical(input) == std::filesystem::weakly_canonical(o.out))
+      throw std::invalid_argument("--out = " + o.out +
+                                  " is one of the shard directories DIR; merge into another folder");
+  run::claim_output_folder(o.out, "--out", o.overwrite, "");
   if (run::is_tracer_run(inputs.front())) {  // tracer shards: also moments.csv and the tracer's keys
     const run::TracerResult result = run::merge_tracer_outputs(inputs);
     if (const std::string note = run::partial_merge_note(result.ensemble); !note.empty()) std::cerr << note << '\n';
@@ -324,13 +331,18 @@ void add_md_command(CLI::App& app) {
   CLI::Option* out_option =
       run_command
           ->add_option("--out", run->out,
-                       "Output directory (finished blocks are checkpointed in OUT/checkpoint until the run ends)")
+                       "Output directory: one run (files with its run id, manifest.json); finished realizations are "
+                       "checkpointed in OUT/checkpoint until the run ends")
           ->capture_default_str();
-  run_command->add_option("--shard", run->shard, "Run only blocks i, i+n, ... of the ensemble: i/n")
-      ->capture_default_str();
+  run->shard_option =
+      run_command->add_option("--shard", run->shard, "Run only blocks i, i+n, ... of the ensemble: i/n (default 0/1)");
   run_command->add_option("--resume", run->resume,
-                          "Continue a killed run in output directory DIR: load its checkpoint (same scene required) "
-                          "and run only the missing blocks");
+                          "Continue a stopped or killed run in output directory DIR with the scene, options and run id "
+                          "of its checkpoint, running only the missing realizations (an option given again must "
+                          "agree with the checkpoint)");
+  run_command->add_flag("--overwrite", run->overwrite,
+                        "Replace the files of another run (or an unfinished run's checkpoint) in --out: exactly "
+                        "those of its manifest.json");
   add_format_option(*run_command, run->format);
   run_command->callback([run, out_option] {
     run->out_given = out_option->count() > 0;
@@ -351,7 +363,11 @@ void add_md_command(CLI::App& app) {
   states_command->add_option("--threads", states->run.threads, "Worker threads (results are identical for any count)")
       ->capture_default_str();
   states_command->add_option("--time", states->time, "Time of the states, in (0, t_max] of the scene")->required();
-  states_command->add_option("--out", states->out, "Output directory (impurity_states.csv)")->capture_default_str();
+  states_command->add_option("--out", states->out, "Output directory (impurity_states.csv, manifest.json)")
+      ->capture_default_str();
+  states_command->add_flag("--overwrite", states->overwrite,
+                           "Replace the files of another run in --out (exactly those of its manifest.json)");
+  add_format_option(*states_command, states->format);
   states_command->callback([states] {
     common::install_stop_handlers();
     states_md(*states);
@@ -360,7 +376,9 @@ void add_md_command(CLI::App& app) {
   auto merge = std::make_shared<MdMergeOptions>();
   CLI::App* merge_command = md->add_subcommand("merge", "Combine the output directories of shards exactly");
   merge_command->add_option("DIR", merge->inputs, "Shard output directories")->required();
-  merge_command->add_option("--out", merge->out, "Output directory")->required();
+  merge_command->add_option("--out", merge->out, "Output directory (a new run: its own run id)")->required();
+  merge_command->add_flag("--overwrite", merge->overwrite,
+                          "Replace the files of another run in --out (exactly those of its manifest.json)");
   add_format_option(*merge_command, merge->format);
   merge_command->callback([merge] { merge_md(*merge); });
 

@@ -4,13 +4,18 @@
 // (docs/kinetic.md), over MPI ranks under mpirun (MPI build). Shards are combined with `coldblast md merge`.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <iostream>
 
 #include "cli/commands.hpp"
 #include "common/input.hpp"
+#include "common/interrupt.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "kinetic/tracer_config.hpp"
+#include "run/checkpoint.hpp"
 #include "run/ensemble.hpp"
+#include "run/progress.hpp"
 #include "run/scene_file.hpp"
 #include "run/tracer_files.hpp"
 #include "run/tracer_run.hpp"
@@ -32,11 +37,40 @@ struct TracerOptions {
   std::optional<double> phi;
   std::string shard = "0/1";
   std::string out = "tracer-output";
+  bool out_given = false;
+  std::string resume;  // --resume DIR: continue the checkpoint in DIR/checkpoint
+  bool overwrite = false;
+  std::vector<std::string> given;  // the options on the command line (for --resume's checks)
   Format format = Format::table;
 };
 
+// The run (over MPI ranks when built with MPI); a SIGINT/SIGTERM stop says how to resume.
+run::TracerResult run_tracer_blocks(const kinetic::TracerConfig& config, const run::TracerProgress& progress,
+                                    const run::TracerRunFiles& files) {
+  try {
+#if COLDBLAST_HAVE_MPI
+    return run::run_tracer_mpi(config, progress, files);
+#else
+    return run::run_tracer(config, progress, files);
+#endif
+  } catch (const common::Interrupted&) {
+    std::cerr << "\ncoldblast: every finished block is saved in " << run::checkpoint_folder(files.out).string()
+              << "; continue with `" << files.resume_hint << "`\n";
+    throw;
+  }
+}
+
 void run(TracerOptions& o) {
-  common::require_output_folder(o.out, "--out");
+  std::string out = o.out;
+  if (!o.resume.empty()) {
+    if (o.out_given &&
+        std::filesystem::path(o.out).lexically_normal() != std::filesystem::path(o.resume).lexically_normal())
+      throw std::invalid_argument("--resume = " + o.resume + " must be the output directory (--out = " + o.out + ")");
+    if (o.overwrite)
+      throw std::invalid_argument("--overwrite starts a new run; --resume continues the one in the folder: give one");
+    out = o.resume;
+  }
+  common::require_output_folder(out, o.resume.empty() ? "--out" : "--resume");
   run::SceneRequest scene;
   scene.file = o.scene_file;
   scene.overrides = o.set;
@@ -46,25 +80,26 @@ void run(TracerOptions& o) {
   config.scene = run::load_scene(scene);
   config.phi = o.phi;
   std::tie(config.shard_index, config.shard_count) = run::parse_shard(o.shard);
+  if (!o.resume.empty()) config = run::resume_tracer_config(out, config, o.given);
+  run::TracerRunFiles files{out, "--out", !o.resume.empty(), o.overwrite, "coldblast tracer --resume " + out};
   run::TracerProgress progress;
   ProgressPacer pacer;
   progress.background = [&pacer](double R_over_lambda) {
     if (!pacer.due_at(R_over_lambda)) return;
     std::fprintf(stderr, "tracer: Navier-Stokes background, R/lambda = %.4g\n", R_over_lambda);
   };
-  progress.blocks = [](long long done, long long total) {
-    if (done == total || done % 16 == 0) std::fprintf(stderr, "\rtracer: %lld/%lld blocks   ", done, total);
-    if (done == total) std::fprintf(stderr, "\n");
-  };
+  run::Progress blocks("tracer", "blocks");
+  progress.blocks = [&blocks](long long done, long long total) { blocks.update(done, total); };
 #if COLDBLAST_HAVE_MPI
   // Under mpirun: blocks spread over ranks (md's launcher); rank 0 alone reports and writes.
   if (run::MpiSession::rank() != 0) progress = {};
-  const run::TracerResult result = run::run_tracer_mpi(config, progress);
+  const run::TracerResult result = run_tracer_blocks(config, progress, files);
   if (run::MpiSession::rank() != 0) return;
 #else
-  const run::TracerResult result = run::run_tracer(config, progress);
+  const run::TracerResult result = run_tracer_blocks(config, progress, files);
 #endif
-  write_tracer_run(result, o.out, o.format);
+  write_tracer_run(result, out, o.format);
+  run::remove_checkpoint(out);
 }
 
 }  // namespace
@@ -120,7 +155,17 @@ void add_tracer_command(CLI::App& app) {
   o->seed_option = c->add_option("--seed", o->seed, "Master seed (overrides the scene; >= 0)");
   c->add_option("--shard", o->shard, "Run only blocks i, i+n, ... (combine with coldblast md merge): i/n")
       ->capture_default_str();
-  c->add_option("--out", o->out, "Output directory")->capture_default_str();
+  CLI::Option* out_option =
+      c->add_option("--out", o->out,
+                    "Output directory: one run (files with its run id, manifest.json); finished blocks are "
+                    "checkpointed in OUT/checkpoint until the run ends")
+          ->capture_default_str();
+  c->add_option("--resume", o->resume,
+                "Continue a stopped or killed run in output directory DIR with the scene, options and run id of its "
+                "checkpoint, running only the missing blocks (an option given again must agree with the checkpoint)");
+  c->add_flag("--overwrite", o->overwrite,
+              "Replace the files of another run (or an unfinished run's checkpoint) in --out: exactly those of its "
+              "manifest.json");
   c->add_option("--T", o->config.T, "Equilibrium background: bath temperature (> 0)")->capture_default_str();
   c->add_option("--phi", o->phi, "Equilibrium background: packing fraction (default: the scene's)");
   c->add_option("--start", o->config.start,
@@ -142,7 +187,14 @@ void add_tracer_command(CLI::App& app) {
                 "time: the same process with other deviates, so other sample paths (summary.json records it)")
       ->capture_default_str();
   add_format_option(*c, o->format);
-  c->callback([o] { run(*o); });
+  c->callback([o, c, out_option] {
+    o->out_given = out_option->count() > 0;
+    o->given.clear();
+    for (const CLI::Option* option : c->get_options())
+      if (option->count() > 0) o->given.push_back(option->get_name());
+    common::install_stop_handlers();  // SIGINT/SIGTERM end the run between blocks, blocks saved
+    run(*o);
+  });
 }
 
 }  // namespace coldblast::cli

@@ -26,12 +26,15 @@ double summary_number(const RunData& run, const char* key) {
   return run.summary[key].get<double>();
 }
 
-// snapshot_<t>.csv files of the run, by time.
+// snapshot_<t>.csv files of the run (realization 0's; other realizations' are
+// snapshot_<t>_realization_<k>.csv), by time.
 std::map<double, fs::path> snapshot_files(const RunData& run) {
   std::map<double, fs::path> files;
   for (const auto& entry : fs::directory_iterator(run.directory)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind("snapshot_", 0) != 0 || entry.path().extension() != ".csv") continue;
+    if (name.rfind("snapshot_", 0) != 0 || entry.path().extension() != ".csv" ||
+        name.find("_realization_") != std::string::npos)
+      continue;
     try {
       files[std::stod(name.substr(9, name.size() - 13))] = entry.path();
     } catch (const std::exception&) {

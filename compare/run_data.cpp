@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/input.hpp"
+#include "run/run_directory.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
@@ -117,6 +118,7 @@ std::string run_label(const RunData& run) {
 RunData read_run(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory))
     throw std::invalid_argument("RUN_DIR = " + directory.string() + " is not a directory");
+  run::require_one_run(directory, "RUN_DIR");  // a folder that mixes two runs' files is refused
   RunData run;
   run.directory = directory;
   const auto summary_path = directory / "summary.json";

@@ -57,7 +57,8 @@ std::string run_label(const RunData& run);
 double md_R_over_lambda(const RunData& run, double t);
 
 /// Reads blocks.csv and summary.json from `directory`; throws std::invalid_argument naming the
-/// file (and line) when the directory, a file or a field is missing or malformed.
+/// file (and line) when the directory, a file or a field is missing or malformed, or when the
+/// folder's files belong to different runs (run/run_directory.hpp).
 RunData read_run(const std::filesystem::path& directory);
 
 /// Drops every recorded time later than `until` (relative tolerance 1e-9) from every series of

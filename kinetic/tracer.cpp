@@ -108,6 +108,7 @@ TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progr
   Context& x = *context_;
   TracerRunInfo& result = x.info;
   result.config = config;
+  result.input_scene = config.scene;
   md::BlastConfig scene_config = config.scene;
   double states_time = 0.0;
   if (config.start == "states") x.states = start_states(config, config.trajectories, states_time);

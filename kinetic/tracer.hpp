@@ -20,8 +20,9 @@ namespace coldblast::kinetic {
 
 /// What a prepared run knows before any block runs, and what its run directory records.
 struct TracerRunInfo {
-  TracerConfig config;      ///< validated, with the scene as run (realizations = trajectories, block size)
-  md::ResolvedScene scene;  ///< A_d, φ, λ, radii and recording times (no particle region)
+  TracerConfig config;          ///< validated, with the scene as run (realizations = trajectories, block size)
+  md::BlastConfig input_scene;  ///< the scene as given (A_d = 0 left to the policy)
+  md::ResolvedScene scene;      ///< A_d, φ, λ, radii and recording times (no particle region)
   std::string background_description;
   std::size_t background_frames = 0;
   std::string kernel = "scalar";  ///< the kernel that runs: "scalar" or a vector kernel ("avx512", ...)

@@ -91,6 +91,23 @@ void BlastConfig::validate() const {
                                   ")");
   for (const double t : snapshot_times)
     require_in_range("snapshot_times", t, 0.0, t_max, Bound::open, Bound::closed, " (within (0, t_max])");
+  for (const double f : snapshot_fractions)
+    require_in_range("snapshot_fractions", f, 0.0, 1.0, Bound::open, Bound::closed, " (fractions of t_max)");
+  if (!snapshot_times.empty() && !snapshot_fractions.empty())
+    throw std::invalid_argument(
+        "snapshot_times and snapshot_fractions are both given; give one (fractions of t_max follow a changed t_max)");
+  if (snapshot_particles != "front" && snapshot_particles != "all")
+    throw std::invalid_argument("snapshot_particles = " + snapshot_particles + " is not one of: front, all");
+  require_in_range("snapshot_margin", snapshot_margin, 0.0, inf, Bound::closed, Bound::open, " (host diameters)");
+  require_integer_in_range("snapshot_stride", snapshot_stride, 1, 1000000000);
+  for (std::size_t i = 0; i < snapshot_realizations.size(); ++i) {
+    require_integer_in_range("snapshot_realizations", snapshot_realizations[i], 0, realizations - 1,
+                             " (realizations = " + std::to_string(realizations) + ")");
+    for (std::size_t j = 0; j < i; ++j)
+      if (snapshot_realizations[j] == snapshot_realizations[i])
+        throw std::invalid_argument("snapshot_realizations: " + std::to_string(snapshot_realizations[i]) +
+                                    " is given twice");
+  }
 }
 
 bool ResolvedScene::wants(const std::string& observable) const {
@@ -151,6 +168,7 @@ ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& am
     s.times.push_back(t);
   }
   s.snapshot_times = c.snapshot_times;
+  for (const double f : c.snapshot_fractions) s.snapshot_times.push_back(f * c.t_max);
   if (s.snapshot_times.empty()) s.snapshot_times = {0.25 * c.t_max, 0.5 * c.t_max, 0.75 * c.t_max, c.t_max};
   std::sort(s.snapshot_times.begin(), s.snapshot_times.end());
   return s;

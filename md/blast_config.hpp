@@ -39,12 +39,22 @@ struct BlastConfig {
   int block_size = 16;          ///< realizations per block for jackknife errors (compare/)
   std::vector<std::string> observables{"R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"};
   double box_margin = 3.0;  ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25 (3: safe for small blasts)
-  double cell_width = 0.0;             ///< cell side (length); 0 = automatic
-  std::string queue = "calendar";      ///< event calendar: "calendar" (bucketed) or "heap"
-  std::vector<double> snapshot_times;  ///< times of snapshot_<t>.csv (realization 0); empty = t_max/4, /2, 3/4, 1
-  int profile_bins = 30;               ///< bins of r/R in [0, 1.5) for profiles.csv
-  int p_imp_bins = 60;                 ///< bins of r in [0, R(t)) for p_imp.csv
-  bool overlap_check = false;          ///< check for overlaps after every event (slow; for tests)
+  double cell_width = 0.0;         ///< cell side (length); 0 = automatic
+  std::string queue = "calendar";  ///< event calendar: "calendar" (bucketed) or "heap"
+  /// Snapshots (observable "snapshots"; docs/md-output.md): their times (time), in (0, t_max], or
+  /// as fractions of t_max, in (0, 1] (one of the two; both empty: t_max/4, /2, 3/4, 1).
+  std::vector<double> snapshot_times, snapshot_fractions;
+  /// Which particles a snapshot holds: "front" (the moving ones and the resting ones within
+  /// snapshot_margin of the farthest moving one) or "all" (the whole region).
+  std::string snapshot_particles = "front";
+  double snapshot_margin = 5.0;  ///< front: the margin beyond the farthest moving particle, in host diameters 2a, >= 0
+  int snapshot_stride = 1;       ///< keep every stride-th particle of the selection (by index), >= 1
+  /// Realizations that record snapshots and trajectories (observable "trajectories"), each in
+  /// [0, realizations), none twice.
+  std::vector<long long> snapshot_realizations{0};
+  int profile_bins = 30;       ///< bins of r/R in [0, 1.5) for profiles.csv
+  int p_imp_bins = 60;         ///< bins of r in [0, R(t)) for p_imp.csv
+  bool overlap_check = false;  ///< check for overlaps after every event (slow; for tests)
 
   /// Throws std::invalid_argument naming the first key out of its allowed range.
   void validate() const;

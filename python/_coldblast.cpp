@@ -33,7 +33,9 @@
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
 #include "run/md_run.hpp"
+#include "run/run_directory.hpp"
 #include "run/scene_file.hpp"
+#include "run/snapshot_files.hpp"
 #include "run/tracer_files.hpp"
 #include "run/tracer_run.hpp"
 #include "theory/computed_prefactors.hpp"
@@ -372,31 +374,43 @@ py::dict estimate_dict(const run::BlastResult& result) {
 
 py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
                 std::optional<long long> realizations, std::optional<long long> seed, int threads,
-                const std::string& out, const py::object& progress_callback) {
-  if (!out.empty()) common::require_output_folder(out, "--out");
-  const run::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
+                const std::string& out, bool resume, bool overwrite, const py::object& progress_callback) {
+  if (!out.empty()) common::require_output_folder(out, resume ? "--resume" : "--out");
+  run::MdRunRequest request;
+  request.scene_file = scene_file;
+  request.scene_text = scene_text;
+  request.overrides = overrides;
+  request.realizations = realizations;
+  request.seed = seed;
+  request.threads = threads;
+  // As `md run --out DIR`: every finished realization is checkpointed in DIR/checkpoint until the
+  // outputs are written (an interrupted run keeps them; resume=DIR or `coldblast md run --resume
+  // DIR` continues).
+  request.out = out;
+  request.resume = resume;
+  request.overwrite = overwrite;
+  request.resume_hint = "coldblast.md.run(resume=\"" + out + "\")";
   run::MdRunPlan plan = run::plan_md_run(request);
   run::RunOptions& options = plan.options;
+  if (const std::string warning = run::snapshot_size_warning(run::resolve_blast_scene(plan.config)); !warning.empty())
+    py::module_::import("sys").attr("stderr").attr("write")("md.run: " + warning + "\n");
   Progress progress(progress_callback);
   options.progress = [&progress](long long done, long long total) {
     progress.set(static_cast<double>(done), static_cast<double>(total));
   };
-  // As `md run --out DIR`: finished blocks are checkpointed in DIR/checkpoint until the outputs
-  // are written (an interrupted run keeps them; `coldblast md run --resume DIR` continues).
-  if (!out.empty()) options.checkpoint = std::filesystem::path(out) / "checkpoint";
   const std::function<run::BlastResult()> work = [&] { return run::run_blast(plan.config, options); };
   run::BlastResult result = run_interruptible(work, progress);
-  if (!out.empty()) {
-    run::write_blast_outputs(result, out);
-    std::error_code ignored;
-    std::filesystem::remove_all(options.checkpoint, ignored);
+  if (!out.empty()) run::finish_md_run(result, out);
+  py::dict files, files0;
+  for (const auto& [name, content] : result.realization_files) {
+    files[py::str(name)] = content;
+    if (name.find("_realization_") == std::string::npos) files0[py::str(name)] = content;
   }
-  py::dict files;
-  for (const auto& [name, content] : result.realization0_files) files[py::str(name)] = content;
   py::dict output;
   output["estimates"] = estimate_dict(result);
   output["summary"] = json_to_python(run::blast_summary(result));
-  output["realization0_files"] = files;
+  output["realization_files"] = files;
+  output["realization0_files"] = files0;
   return output;
 }
 
@@ -404,10 +418,19 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
 /// `out`, also out/impurity_states.csv (for tracer --start states).
 py::dict md_states(const std::string& scene_file, const std::string& scene_text,
                    const std::vector<std::string>& overrides, std::optional<long long> realizations,
-                   std::optional<long long> seed, int threads, double time, const std::string& out,
+                   std::optional<long long> seed, int threads, double time, const std::string& out, bool overwrite,
                    const py::object& progress_callback) {
-  if (!out.empty()) common::require_output_folder(out, "--out");
-  const run::MdRunRequest request{scene_file, scene_text, overrides, realizations, seed, threads};
+  if (!out.empty()) {
+    common::require_output_folder(out, "--out");
+    run::claim_output_folder(out, "--out", overwrite, "coldblast.md.run(resume=\"" + out + "\")");
+  }
+  run::MdRunRequest request;
+  request.scene_file = scene_file;
+  request.scene_text = scene_text;
+  request.overrides = overrides;
+  request.realizations = realizations;
+  request.seed = seed;
+  request.threads = threads;
   const run::MdRunPlan plan = run::plan_md_run(request);
   const md::ResolvedScene scene = run::resolve_blast_scene(plan.config);
   Progress progress(progress_callback);
@@ -417,9 +440,7 @@ py::dict md_states(const std::string& scene_file, const std::string& scene_text,
         [&progress](long long done, long long n) { progress.set(static_cast<double>(done), static_cast<double>(n)); });
   };
   const std::vector<md::ImpurityState> states = run_interruptible(work, progress);
-  if (!out.empty())
-    common::write_file_atomic(std::filesystem::path(out) / "impurity_states.csv",
-                              run::impurity_states_csv(states, plan.config, time));
+  if (!out.empty()) run::write_impurity_states(out, states, plan.config, time);
   const int d = plan.config.d;
   const auto matrix = [&](auto member) {
     py::array_t<double> a({static_cast<py::ssize_t>(states.size()), static_cast<py::ssize_t>(d)});
@@ -456,7 +477,7 @@ struct TracerOptions {
 };
 
 py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
-                    std::optional<long long> seed, const TracerOptions& o, const std::string& out,
+                    std::optional<long long> seed, const TracerOptions& o, const std::string& out, bool overwrite,
                     const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, "--out");
   run::SceneRequest scene;
@@ -485,10 +506,12 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
     report.blocks = [&progress](long long done, long long total) {
       progress.set(static_cast<double>(done), static_cast<double>(total));
     };
-    return run::run_tracer(config, report);
+    // As `tracer --out DIR`: every finished block is checkpointed in DIR/checkpoint.
+    const run::TracerRunFiles files{out, "--out", false, overwrite, "coldblast tracer --resume " + out};
+    return run::run_tracer(config, report, files);
   };
   const run::TracerResult result = run_interruptible(work, progress);
-  if (!out.empty()) run::write_tracer_outputs(result, out);
+  if (!out.empty()) run::finish_tracer_run(result, out);
   py::dict moments;
   const std::vector<kinetic::MomentRow> rows = kinetic::moment_rows(result.ensemble.scene.times, result.blocks);
   const auto add = [&](const char* name, double kinetic::MomentRow::*field) {
@@ -615,10 +638,11 @@ PYBIND11_MODULE(_coldblast, m) {
         py::arg("viscosity"), py::arg("kappa_prefactor"), py::arg("eos"), py::arg("phi"), py::arg("transport"),
         py::arg("progress"));
   m.def("md_run", &md_run, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("realizations"),
-        py::arg("seed"), py::arg("threads"), py::arg("out"), py::arg("progress"));
+        py::arg("seed"), py::arg("threads"), py::arg("out"), py::arg("resume"), py::arg("overwrite"),
+        py::arg("progress"));
   m.def("md_states", &md_states, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"),
         py::arg("realizations"), py::arg("seed"), py::arg("threads"), py::arg("time"), py::arg("out"),
-        py::arg("progress"));
+        py::arg("overwrite"), py::arg("progress"));
   m.def("default_scene_toml", [] { return run::default_scene_toml(); });
   m.def("read_run_summary", &read_run_summary, py::arg("directory"));
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
@@ -634,13 +658,13 @@ PYBIND11_MODULE(_coldblast, m) {
          std::optional<long long> seed, const std::string& background, const std::string& transport,
          const std::string& start, long long trajectories, int threads, double T, std::optional<double> phi,
          double start_time, int frames_per_decade, int cells, const std::string& start_states,
-         const std::string& kernel, const std::string& out, const py::object& progress) {
+         const std::string& kernel, const std::string& out, bool overwrite, const py::object& progress) {
         const TracerOptions options{background, transport,         start, trajectories, threads, T, phi,
                                     start_time, frames_per_decade, cells, start_states, kernel};
-        return tracer_run(scene_file, scene_text, overrides, seed, options, out, progress);
+        return tracer_run(scene_file, scene_text, overrides, seed, options, out, overwrite, progress);
       },
       py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("seed"), py::arg("background"),
       py::arg("transport"), py::arg("start"), py::arg("trajectories"), py::arg("threads"), py::arg("T"), py::arg("phi"),
       py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("kernel"),
-      py::arg("out"), py::arg("progress"));
+      py::arg("out"), py::arg("overwrite"), py::arg("progress"));
 }

@@ -1,6 +1,7 @@
 #include "run/checkpoint.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -8,11 +9,14 @@
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
+#include <tuple>
 #include <vector>
 
 #include "common/input.hpp"
 #include "common/output.hpp"
 #include "md/observers.hpp"
+#include "run/ensemble.hpp"
+#include "run/run_directory.hpp"
 #include "run/scene_file.hpp"
 
 namespace coldblast::run {
@@ -23,6 +27,7 @@ namespace fs = std::filesystem;
 
 namespace {
 const char* block_file_comment = "# coldblast checkpoint: one block's sums (hex floats, exact)";
+const char* extra_end = "extra end";
 
 std::string hex(double value) {
   char buffer[64];
@@ -53,7 +58,7 @@ std::map<std::string, std::string> toml_entries(const std::string& toml) {
 }
 }  // namespace
 
-std::string checkpoint_block_text(long long block, const BlockSums& sums) {
+std::string checkpoint_block_text(long long block, const BlockSums& sums, const std::string& extra) {
   std::ostringstream out;
   out << block_file_comment << '\n'
       << "block " << block << '\n'
@@ -63,11 +68,12 @@ std::string checkpoint_block_text(long long block, const BlockSums& sums) {
       << "entries " << sums.sum.size() << '\n';
   for (std::size_t e = 0; e < sums.sum.size(); ++e) out << hex(sums.sum[e]) << ' ' << hex(sums.sum_squares[e]) << '\n';
   out << "end\n";
+  if (!extra.empty()) out << extra << (extra.back() == '\n' ? "" : "\n") << extra_end << '\n';
   return out.str();
 }
 
 BlockSums parse_checkpoint_block(const std::string& text, long long block, std::size_t entries, long long count,
-                                 const std::string& source) {
+                                 const std::string& source, std::string* extra) {
   const auto bad = [&](const std::string& what) {
     return std::invalid_argument("--resume: malformed checkpoint " + source + ": " + what +
                                  " (delete the file to rerun its block)");
@@ -98,7 +104,7 @@ BlockSums parse_checkpoint_block(const std::string& text, long long block, std::
   BlockSums s;
   if (static_cast<long long>(integer("block")) != block) throw bad("block index differs from the file name");
   s.count = static_cast<long long>(integer("count"));
-  if (s.count != count)
+  if (s.count < 1 || s.count > count)
     throw bad("count = " + std::to_string(s.count) + ", the scene's block has " + std::to_string(count));
   s.collisions = integer("collisions");
   s.energy_error_max = number(field("energy_error_max"), "energy_error_max");
@@ -107,71 +113,107 @@ BlockSums parse_checkpoint_block(const std::string& text, long long block, std::
   s.sum.resize(entries);
   s.sum_squares.resize(entries);
   for (std::size_t e = 0; e < entries; ++e) {
-    std::string a, b, extra;
+    std::string a, b, more;
     if (!std::getline(in, line)) throw bad("ends at entry " + std::to_string(e));
     std::istringstream ls(line);
-    if (!(ls >> a >> b) || (ls >> extra)) throw bad("entry " + std::to_string(e) + " is '" + line + "'");
+    if (!(ls >> a >> b) || (ls >> more)) throw bad("entry " + std::to_string(e) + " is '" + line + "'");
     s.sum[e] = number(a, "sum");
     s.sum_squares[e] = number(b, "sum_squares");
   }
   if (!std::getline(in, line) || line != "end") throw bad("no end line (truncated)");
+  std::string rest, tail;
+  while (std::getline(in, line)) {
+    tail = line;
+    if (line != extra_end) rest += line + "\n";
+  }
+  if (!rest.empty() && tail != extra_end) throw bad("no end line of its extra sums (truncated)");
+  if (extra) *extra = rest;
   return s;
 }
 
-void start_checkpoint(const fs::path& directory, const md::ResolvedScene& scene) {
-  std::error_code ec;
-  if (fs::exists(directory, ec))
-    for (const auto& entry : fs::directory_iterator(directory)) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("block_", 0) == 0 || name.rfind("scene.toml", 0) == 0 || name == "realization0")
-        fs::remove_all(entry.path());
-    }
-  common::write_file_atomic(directory / "scene.toml", scene_toml(scene.config));
+fs::path checkpoint_folder(const fs::path& out) {
+  return out / "checkpoint";
 }
 
-void save_checkpoint_block(const fs::path& directory, long long block, const BlockSums& sums,
-                           const NamedFiles* realization0_files) {
-  if (realization0_files)
-    for (const auto& [name, content] : *realization0_files)
-      common::write_file_atomic(directory / "realization0" / name, content);
-  common::write_file_atomic(block_path(directory, block), checkpoint_block_text(block, sums));
+void start_checkpoint(const fs::path& directory, const md::ResolvedScene& scene, const CheckpointRun& run) {
+  common::Json j;
+  j["run_id"] = run.run_id;
+  j["kind"] = run.kind;
+  j["shard"] = std::to_string(run.shard_index) + "/" + std::to_string(run.shard_count);
+  j["scene"] = run.scene_toml;
+  j["options"] = run.options;
+  common::write_file_atomic(directory / "scene.toml", scene_toml(scene.config));
+  common::write_file_atomic(directory / "run.json", j.dump(2) + "\n");
+}
+
+void save_checkpoint_block(const fs::path& directory, long long block, const BlockSums& sums, const NamedFiles& files,
+                           const std::string& extra) {
+  for (const auto& [name, content] : files) common::write_file_atomic(directory / "files" / name, content);
+  common::write_file_atomic(block_path(directory, block), checkpoint_block_text(block, sums, extra));
+}
+
+std::string checkpoint_scene_text(const fs::path& directory) {
+  const fs::path scene_path = directory / "scene.toml";
+  if (!fs::exists(scene_path)) {
+    // The checkpoint is removed once a run's outputs are written: a finished run has nothing left.
+    const fs::path out = directory.parent_path();
+    const bool finished = fs::exists(out / "summary.json");
+    throw std::invalid_argument("--resume: no checkpoint in " + directory.string() + " (scene.toml missing); " +
+                                (finished ? out.string() + " holds a finished run (summary.json): nothing to resume"
+                                          : std::string("run without --resume to start")));
+  }
+  return common::read_text(scene_path, "--resume", common::text_size_limit);
+}
+
+CheckpointRun checkpoint_run(const fs::path& directory) {
+  const fs::path path = directory / "run.json";
+  CheckpointRun run;
+  if (!fs::exists(path)) {  // a checkpoint of a run before run ids: it becomes a run of its own
+    run.run_id = new_run_id();
+    return run;
+  }
+  const auto bad = [&](const std::string& what) {
+    return std::invalid_argument("--resume: malformed checkpoint " + path.string() + ": " + what);
+  };
+  try {
+    const common::Json j = common::Json::parse(common::read_text(path, "--resume"));
+    if (!j.is_object() || !j.contains("run_id") || !j.at("run_id").is_string() || !j.contains("shard") ||
+        !j.at("shard").is_string())
+      throw bad("no 'run_id' and 'shard' strings");
+    run.run_id = j.at("run_id").get<std::string>();
+    if (j.contains("kind") && j.at("kind").is_string()) run.kind = j.at("kind").get<std::string>();
+    std::tie(run.shard_index, run.shard_count) = parse_shard(j.at("shard").get<std::string>());
+    if (j.contains("scene") && j.at("scene").is_string()) run.scene_toml = j.at("scene").get<std::string>();
+    if (j.contains("options") && j.at("options").is_object()) run.options = j.at("options");
+  } catch (const common::Json::exception& e) {
+    throw bad(e.what());
+  }
+  return run;
+}
+
+std::string scene_difference(const std::string& there, const std::string& now) {
+  if (there == now) return "";
+  const auto a = toml_entries(there), b = toml_entries(now);
+  for (const auto& [k, v] : b) {
+    const auto it = a.find(k);
+    if (it == a.end() || it->second != v)
+      return k + " = " + (it == a.end() ? "(missing)" : it->second) + " there, " + v + " now";
+  }
+  for (const auto& [k, v] : a)
+    if (!b.count(k)) return k + " = " + v + " there, (missing) now";
+  return "(formatting) differs";
 }
 
 Checkpoint load_checkpoint(const fs::path& directory, const md::ResolvedScene& scene) {
   common::remove_stale_temporaries(directory);  // writes of a killed run
-  common::remove_stale_temporaries(directory / "realization0");
-  const fs::path scene_path = directory / "scene.toml";
-  if (!fs::exists(scene_path)) {
-    // The checkpoint is removed once a run's outputs are written: a finished run has nothing left.
-    const bool finished = fs::exists(directory.parent_path() / "summary.json");
-    throw std::invalid_argument(
-        "--resume: no checkpoint in " + directory.string() + " (scene.toml missing); " +
-        (finished ? directory.parent_path().string() + " holds a finished run (summary.json): nothing to resume"
-                  : std::string("run without --resume to start")));
-  }
-  const std::string saved = common::read_text(scene_path, "--resume", common::text_size_limit),
-                    current = scene_toml(scene.config);
-  if (saved != current) {
-    const auto a = toml_entries(saved), b = toml_entries(current);
-    std::string key = "(formatting)", was = "", now = "";
-    for (const auto& [k, v] : b) {
-      const auto it = a.find(k);
-      if (it == a.end() || it->second != v) {
-        key = k, was = it == a.end() ? "(missing)" : it->second, now = v;
-        break;
-      }
-    }
-    if (key == "(formatting)")
-      for (const auto& [k, v] : a)
-        if (!b.count(k)) {
-          key = k, was = v, now = "(missing)";
-          break;
-        }
-    throw std::invalid_argument("--resume: the checkpoint in " + directory.string() + " ran a different scene: " + key +
-                                " = " + was + " there, " + now + " now");
-  }
+  common::remove_stale_temporaries(directory / "files");
+  const std::string saved = checkpoint_scene_text(directory), current = scene_toml(scene.config);
+  if (saved != current)
+    throw std::invalid_argument("--resume: the checkpoint in " + directory.string() +
+                                " ran a different scene: " + scene_difference(saved, current));
   const md::ObservableLayout layout(scene);
   Checkpoint checkpoint;
+  checkpoint.run = checkpoint_run(directory);
   for (const auto& entry : fs::directory_iterator(directory)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("block_", 0) != 0 || name.size() <= 10 || name.substr(name.size() - 4) != ".txt") continue;
@@ -180,17 +222,27 @@ Checkpoint load_checkpoint(const fs::path& directory, const md::ResolvedScene& s
     const long long block = std::stoll(digits);
     const long long count = md::block_realizations(scene.config, block);
     if (count == 0) throw std::invalid_argument("--resume: " + entry.path().string() + " is beyond the scene's blocks");
-    checkpoint.blocks[block] = parse_checkpoint_block(common::read_text(entry.path(), "--resume"), block, layout.size(),
-                                                      count, entry.path().string());
+    std::string extra;
+    BlockSums sums = parse_checkpoint_block(common::read_text(entry.path(), "--resume"), block, layout.size(), count,
+                                            entry.path().string(), &extra);
+    (sums.count == count ? checkpoint.blocks : checkpoint.partial)[block] = std::move(sums);
+    if (!extra.empty()) checkpoint.extra[block] = std::move(extra);
   }
-  if (checkpoint.blocks.count(0) && fs::exists(directory / "realization0"))
-    for (const auto& entry : fs::directory_iterator(directory / "realization0")) {
-      const std::string name = entry.path().filename().string();
-      if (name.find(".tmp.") == std::string::npos)
-        checkpoint.realization0_files.push_back({name, common::read_text(entry.path(), "--resume")});
-    }
-  std::sort(checkpoint.realization0_files.begin(), checkpoint.realization0_files.end());
+  // The files of single realizations; a run before run ids kept realization 0's in realization0/.
+  for (const char* folder : {"files", "realization0"})
+    if (fs::exists(directory / folder))
+      for (const auto& entry : fs::directory_iterator(directory / folder)) {
+        const std::string name = entry.path().filename().string();
+        if (name.find(".tmp.") == std::string::npos)
+          checkpoint.files.push_back({name, common::read_text(entry.path(), "--resume")});
+      }
+  std::sort(checkpoint.files.begin(), checkpoint.files.end());
   return checkpoint;
+}
+
+void remove_checkpoint(const fs::path& out) {
+  std::error_code ignored;
+  fs::remove_all(checkpoint_folder(out), ignored);
 }
 
 }  // namespace coldblast::run

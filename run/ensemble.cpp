@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <mutex>
 #include <stdexcept>
 
@@ -12,6 +13,8 @@
 #include "md/observers.hpp"
 #include "md/realization.hpp"
 #include "run/checkpoint.hpp"
+#include "run/run_directory.hpp"
+#include "run/scene_file.hpp"
 #include "run/snapshot_files.hpp"
 #include "run/worker_pool.hpp"
 
@@ -38,52 +41,112 @@ std::pair<int, int> parse_shard(const std::string& text) {
   return {i, n};
 }
 
-md::BlockSums run_block(const md::ResolvedScene& scene, long long block, NamedFiles* realization0_files,
-                        const std::function<void()>& realization_done, const std::atomic<bool>* stop,
-                        const std::function<void(long long, double)>& realization_time) {
+void add_files(NamedFiles& files, const NamedFiles& more) {
+  std::map<std::string, std::string> by_name(files.begin(), files.end());
+  for (const auto& [name, content] : more) by_name[name] = content;  // a rerun realization's files are the same
+  files.assign(by_name.begin(), by_name.end());
+}
+
+BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_id, long long block, BlockProgress start,
+                        const std::atomic<bool>* stop, const BlockCallbacks& callbacks) {
   const md::ObservableLayout layout(scene);
-  const long long B = scene.config.block_size;
-  md::BlockSums s;
-  s.sum.assign(layout.size(), 0.0);
-  s.sum_squares.assign(layout.size(), 0.0);
-  for (long long r = block * B; r < block * B + md::block_realizations(scene.config, block); ++r) {
-    if (stop && *stop) break;
-    common::throw_if_stop_requested();  // SIGINT/SIGTERM or a host's Ctrl-C: finished blocks stay saved
-    const md::RealizationExtras extras = realization_extras(scene, r);
-    const md::RealizationOutput out = md::run_realization(scene, layout, r, extras, realization_time);
-    md::add_realization(s, out.record, out.collisions, out.energy_error);
-    if (r == 0 && realization0_files) *realization0_files = realization_files(scene, r, out);
-    if (realization_done) realization_done();
+  const long long first = block * scene.config.block_size, count = md::block_realizations(scene.config, block);
+  BlockProgress progress = std::move(start);
+  md::BlockSums& s = progress.sums;
+  if (s.sum.empty()) {
+    s.sum.assign(layout.size(), 0.0);
+    s.sum_squares.assign(layout.size(), 0.0);
   }
-  return s;
+  long long saved = s.count;
+  auto last_save = std::chrono::steady_clock::now();
+  const auto save = [&] {
+    if (!callbacks.save || s.count == saved) return;
+    callbacks.save(progress);
+    saved = s.count;
+    last_save = std::chrono::steady_clock::now();
+  };
+  try {
+    for (long long r = first + s.count; r < first + count; ++r) {
+      if (stop && *stop) break;
+      common::throw_if_stop_requested();  // SIGINT/SIGTERM or a host's Ctrl-C: what is done is saved
+      const md::RealizationOutput out =
+          md::run_realization(scene, layout, r, realization_extras(scene, r), callbacks.realization_time);
+      md::add_realization(s, out.record, out.collisions, out.energy_error);
+      const NamedFiles files = realization_files(scene, run_id, r, out);
+      progress.files.insert(progress.files.end(), files.begin(), files.end());
+      if (callbacks.realization_done) callbacks.realization_done();
+      if (s.count < count &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - last_save).count() >= callbacks.save_seconds)
+        save();
+    }
+  } catch (...) {
+    save();  // the realizations finished before the stop or the failure are kept
+    throw;
+  }
+  if (s.count < count) save();  // stopped early by another thread's failure
+  return progress;
 }
 
 EnsemblePlan plan_ensemble(const md::BlastConfig& config, const RunOptions& options) {
+  common::require_in_range("checkpoint_seconds", options.checkpoint_seconds, 0.0, 1e9, common::Bound::closed,
+                           common::Bound::closed);
   EnsemblePlan plan;
   BlastResult& result = plan.result;
   result.scene = resolve_blast_scene(config);
+  result.run_id = options.run_id.empty() ? new_run_id() : options.run_id;
+  if (options.warning)
+    if (const std::string warning = snapshot_size_warning(result.scene); !warning.empty()) options.warning(warning);
   result.threads = options.threads;
   result.shard_index = options.shard_index;
   result.shard_count = options.shard_count;
   const long long block_count = (config.realizations + config.block_size - 1) / config.block_size;
-  if (!options.checkpoint.empty()) {
+  if (!options.out.empty()) {
+    const std::filesystem::path checkpoint = checkpoint_folder(options.out);
     if (options.resume) {
-      Checkpoint saved = load_checkpoint(options.checkpoint, result.scene);
-      for (auto& [b, s] : saved.blocks)
-        if (b % options.shard_count == options.shard_index) {
+      Checkpoint saved = load_checkpoint(checkpoint, result.scene);
+      if (saved.run.shard_index != options.shard_index || saved.run.shard_count != options.shard_count)
+        throw std::invalid_argument("--shard = " + std::to_string(options.shard_index) + "/" +
+                                    std::to_string(options.shard_count) + " contradicts the checkpoint in " +
+                                    checkpoint.string() + ", which runs shard " +
+                                    std::to_string(saved.run.shard_index) + "/" +
+                                    std::to_string(saved.run.shard_count) + "; leave --shard out to resume it");
+      result.run_id = saved.run.run_id;
+      require_own_files(options.out, "--resume", result.run_id);
+      for (auto* blocks : {&saved.blocks, &saved.partial})
+        for (const auto& [b, s] : *blocks) {
           result.resumed_realizations += s.count;
           result.resumed_collisions += s.collisions;
-          result.blocks[b] = std::move(s);
         }
-      if (result.blocks.count(0)) result.realization0_files = std::move(saved.realization0_files);
+      result.blocks = std::move(saved.blocks);
+      plan.partial = std::move(saved.partial);
+      result.realization_files = std::move(saved.files);
     } else {
-      start_checkpoint(options.checkpoint, result.scene);
+      claim_output_folder(options.out, options.out_option, options.overwrite,
+                          options.resume_hint.empty() ? "--resume " + options.out.string() : options.resume_hint);
+      start_checkpoint(checkpoint, result.scene,
+                       {result.run_id, "md run", options.shard_index, options.shard_count, scene_toml(config)});
     }
   }
   for (long long b = options.shard_index; b < block_count; b += options.shard_count)
     if (!result.blocks.count(b)) plan.pending.push_back(b);
-  for (const long long b : plan.pending) plan.pending_realizations += md::block_realizations(config, b);
+  for (const long long b : plan.pending)
+    plan.pending_realizations +=
+        md::block_realizations(config, b) - (plan.partial.count(b) ? plan.partial.at(b).count : 0);
   return plan;
+}
+
+BlockCallbacks checkpoint_callbacks(const RunOptions& options, long long block) {
+  BlockCallbacks callbacks;
+  callbacks.realization_time = options.realization_time;
+  callbacks.save_seconds = options.checkpoint_seconds;
+  if (!options.out.empty())
+    callbacks.save = [folder = checkpoint_folder(options.out), block](BlockProgress& progress) {
+      const NamedFiles unsaved(progress.files.begin() + static_cast<std::ptrdiff_t>(progress.files_saved),
+                               progress.files.end());
+      save_checkpoint_block(folder, block, progress.sums, unsaved);
+      progress.files_saved = progress.files.size();
+    };
+  return callbacks;
 }
 
 BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options) {
@@ -97,26 +160,32 @@ BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options) 
   const std::vector<long long>& owned = plan.pending;  // blocks still to run
   const long long total = plan.pending_realizations;
 
-  std::vector<md::BlockSums> sums(owned.size());
+  std::vector<BlockProgress> blocks(owned.size());
   std::mutex mutex;
   long long done = 0;
-  const auto realization_done = [&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    ++done;
-    if (options.progress) options.progress(done, total);
-  };
   run_slots_in_parallel(owned.size(), options.threads, [&](std::size_t slot, const std::atomic<bool>& stop) {
-    NamedFiles files;
-    sums[slot] = run_block(scene, owned[slot], &files, realization_done, &stop, options.realization_time);
-    if (stop) return;
-    if (!options.checkpoint.empty())
-      save_checkpoint_block(options.checkpoint, owned[slot], sums[slot], owned[slot] == 0 ? &files : nullptr);
-    if (owned[slot] == 0) {
+    const long long b = owned[slot];
+    BlockCallbacks callbacks = checkpoint_callbacks(options, b);
+    callbacks.realization_done = [&] {
       std::lock_guard<std::mutex> lock(mutex);
-      result.realization0_files = std::move(files);
+      ++done;
+      if (options.progress) options.progress(done, total);
+    };
+    BlockProgress start;
+    if (plan.partial.count(b)) start.sums = plan.partial.at(b);
+    blocks[slot] = run_block(scene, result.run_id, b, std::move(start), &stop, callbacks);
+    if (stop || blocks[slot].sums.count < md::block_realizations(config, b)) return;
+    if (!options.out.empty()) {
+      BlockProgress& finished = blocks[slot];
+      save_checkpoint_block(
+          checkpoint_folder(options.out), b, finished.sums,
+          NamedFiles(finished.files.begin() + static_cast<std::ptrdiff_t>(finished.files_saved), finished.files.end()));
     }
   });
-  for (std::size_t slot = 0; slot < owned.size(); ++slot) result.blocks[owned[slot]] = std::move(sums[slot]);
+  for (std::size_t slot = 0; slot < owned.size(); ++slot) {
+    result.blocks[owned[slot]] = std::move(blocks[slot].sums);
+    add_files(result.realization_files, blocks[slot].files);
+  }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return std::move(plan.result);
 }

@@ -20,7 +20,7 @@
 
 namespace coldblast::run {
 
-/// How to run an ensemble (numerics only; the physics is in BlastConfig).
+/// How to run an ensemble (numerics and files; the physics is in md::BlastConfig).
 struct RunOptions {
   int threads = 1;      ///< worker threads, >= 1
   int shard_index = 0;  ///< this shard runs blocks shard_index, shard_index + shard_count, ...
@@ -32,12 +32,27 @@ struct RunOptions {
   /// empty. Called from the worker threads, concurrently: a 3D paper-scene realization runs for
   /// minutes, and this is its progress.
   std::function<void(long long, double)> realization_time;
-  /// Folder where every finished block is saved at once (run/checkpoint.hpp); empty = no checkpoint.
-  /// A fresh run clears the folder's old blocks.
-  std::filesystem::path checkpoint;
-  /// Load the blocks already saved in `checkpoint` (same resolved scene required, else
-  /// std::invalid_argument naming --resume) and run only the missing ones.
+  /// The run's output folder: claimed for this run before any work (run/run_directory.hpp), and its
+  /// checkpoint, OUT/checkpoint (run/checkpoint.hpp), keeps every block as it ends and a block in
+  /// progress with its finished realizations at a stop and every `checkpoint_seconds`. Empty: no
+  /// files, no checkpoint (the caller writes the outputs with write_blast_outputs).
+  std::filesystem::path out;
+  std::string out_option = "--out";  ///< how errors name `out`
+  /// Continue the checkpoint in OUT (same resolved scene required, else std::invalid_argument
+  /// naming --resume) and run only the missing realizations.
   bool resume = false;
+  /// A fresh run may replace another run's files in OUT (exactly those: run/run_directory.hpp).
+  bool overwrite = false;
+  /// How to continue a stopped run, for the error when OUT holds a checkpoint and the run is fresh.
+  std::string resume_hint;
+  /// Seconds between saves of a block in progress, besides the saves when it ends and at a stop;
+  /// 0 saves after every realization. >= 0.
+  double checkpoint_seconds = 60.0;
+  /// The run id (run/run_directory.hpp); empty = a new one, or the checkpoint's when resuming.
+  std::string run_id;
+  /// Called before any work with a warning for stderr (snapshots above ~100 MB:
+  /// run/snapshot_files.hpp); may be empty.
+  std::function<void(const std::string&)> warning;
 };
 
 /// The scene resolved with the project's A_d policy (hydro::md_amplitude for A_d = 0).
@@ -51,22 +66,45 @@ BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options =
 /// drivers): the resolved scene and options, the blocks loaded from a checkpoint when resuming,
 /// and the blocks of this shard still to run.
 struct EnsemblePlan {
-  BlastResult result;                  ///< scene, thread/shard settings, already finished blocks
-  std::vector<long long> pending;      ///< blocks still to run, ascending
-  long long pending_realizations = 0;  ///< realizations in `pending`
+  BlastResult result;                          ///< run id, scene, thread/shard settings, finished blocks
+  std::map<long long, md::BlockSums> partial;  ///< blocks in progress in the checkpoint
+  std::vector<long long> pending;              ///< blocks still to run (finished or not), ascending
+  long long pending_realizations = 0;          ///< realizations still to run in `pending`
 };
-/// Resolves the scene, loads (resume) or starts the checkpoint in options.checkpoint, and lists
-/// the pending blocks. Throws std::invalid_argument for a bad scene or checkpoint.
+/// Resolves the scene; with options.out, claims the folder and starts the checkpoint, or loads it
+/// (resume); lists the pending blocks. Throws std::invalid_argument for a bad scene, folder or
+/// checkpoint.
 EnsemblePlan plan_ensemble(const md::BlastConfig& config, const RunOptions& options);
-/// Runs the realizations of one block in index order on the calling thread: the unit of work of
-/// threads, shards and MPI ranks. Fills `realization0_files` (if given) when the block holds
-/// realization 0; calls `realization_done` after each realization (and `realization_time` at each
-/// recorded time within one); stops early when `*stop` becomes true (the partial sums must then be
-/// discarded). Throws like run_blast.
-md::BlockSums run_block(const md::ResolvedScene& scene, long long block, NamedFiles* realization0_files = nullptr,
-                        const std::function<void()>& realization_done = {}, const std::atomic<bool>* stop = nullptr,
-                        const std::function<void(long long, double)>& realization_time = {});
+
+/// A block in progress: the sums of its first `sums.count` realizations and their files.
+struct BlockProgress {
+  md::BlockSums sums;
+  NamedFiles files;             ///< the single realizations' files of those realizations
+  std::size_t files_saved = 0;  ///< files[0, files_saved) are in the checkpoint
+};
+/// What a block reports as it runs; each may be empty.
+struct BlockCallbacks {
+  std::function<void()> realization_done;                   ///< after each realization
+  std::function<void(long long, double)> realization_time;  ///< RunOptions::realization_time
+  /// Saves the block's progress (the checkpoint): every `save_seconds`, and when the block stops
+  /// early (a stop request, another thread's failure, its own failure) with realizations done.
+  std::function<void(BlockProgress&)> save;
+  double save_seconds = 60.0;
+};
+/// Runs the realizations of block `block` from `start` (its first start.sums.count realizations
+/// done: a block in progress from a checkpoint; empty: from its first) in index order on the
+/// calling thread: the unit of work of threads, shards and MPI ranks. Stops early, returning the
+/// realizations done, when `*stop` becomes true; throws common::Interrupted at a stop request, and
+/// like run_blast when a realization fails, after saving what it has (callbacks.save).
+BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_id, long long block,
+                        BlockProgress start = {}, const std::atomic<bool>* stop = nullptr,
+                        const BlockCallbacks& callbacks = {});
+/// The callbacks of block `block` of a run with `options`: its progress saved to OUT/checkpoint
+/// (none without options.out) and options.realization_time; realization_done is the caller's.
+BlockCallbacks checkpoint_callbacks(const RunOptions& options, long long block);
 /// Parses "i/n" (0 <= i < n); throws std::invalid_argument naming --shard otherwise.
 std::pair<int, int> parse_shard(const std::string& text);
+/// Adds the single realizations' files of `more` to `files`, keeping name order, one file per name.
+void add_files(NamedFiles& files, const NamedFiles& more);
 
 }  // namespace coldblast::run

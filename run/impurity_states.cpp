@@ -10,6 +10,7 @@
 
 #include "common/output.hpp"
 #include "common/validate.hpp"
+#include "run/run_directory.hpp"
 #include "run/worker_pool.hpp"
 
 namespace coldblast::run {
@@ -40,11 +41,12 @@ std::vector<ImpurityState> impurity_states(const md::ResolvedScene& scene, doubl
   return states;
 }
 
-std::string impurity_states_csv(const std::vector<ImpurityState>& states, const BlastConfig& config, double t) {
+std::string impurity_states_csv(const std::vector<ImpurityState>& states, const BlastConfig& config, double t,
+                                const std::string& run_id) {
   std::ostringstream t_text;  // 17 digits, as the rows and md::states_scene_keys
   t_text.precision(17);
   t_text << t;
-  common::HeaderFields fields{{"t", t_text.str()}};
+  common::HeaderFields fields{{"run_id", run_id}, {"t", t_text.str()}};
   for (const auto& [key, value] : md::states_scene_keys(config)) fields.push_back({key, value});
   std::ostringstream out;
   out << common::provenance_header(fields, "m = 1 (host), lengths and times of the scene; r from the blast centre");
@@ -64,11 +66,21 @@ std::string impurity_states_csv(const std::vector<ImpurityState>& states, const 
   return out.str();
 }
 
+std::filesystem::path write_impurity_states(const std::filesystem::path& out, const std::vector<ImpurityState>& states,
+                                            const BlastConfig& config, double t) {
+  const std::string run_id = new_run_id();
+  const std::filesystem::path file = out / "impurity_states.csv";
+  common::write_file_atomic(file, impurity_states_csv(states, config, t, run_id));
+  write_manifest(out, {run_id, "md states", {"impurity_states.csv"}});
+  return file;
+}
+
 md::ImpurityStates read_impurity_states(const std::filesystem::path& path, int d, const std::string& option) {
   const std::string named = option + " = " + path.string();
   std::error_code error;
   // md states' output directory stands for the file in it.
   const std::filesystem::path file = std::filesystem::is_directory(path, error) ? path / "impurity_states.csv" : path;
+  require_one_run(file.parent_path().empty() ? "." : file.parent_path(), option);
   std::ifstream in(file);
   if (!in)
     throw std::invalid_argument(named + ": cannot read the file (an impurity_states.csv of `coldblast md states`)");

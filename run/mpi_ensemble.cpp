@@ -276,6 +276,14 @@ BlockSums get_block_sums(ByteReader& r, NamedFiles* files) {
   return s;
 }
 
+std::string broadcast_from_rank0(std::string text) {
+  auto size = static_cast<std::uint64_t>(text.size());
+  check(MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  text.resize(size);
+  check(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  return text;
+}
+
 void run_blocks_mpi(const MpiBlockWork& work) {
   common::require_integer_in_range("threads", work.threads, 1, 1024);
   const int ranks = MpiSession::size();
@@ -295,12 +303,14 @@ BlastResult run_blast_mpi(const md::BlastConfig& config, const RunOptions& optio
   MpiBlockWork work;
   work.threads = options.threads;
   if (MpiSession::rank() != 0) {
+    // A block in progress in rank 0's checkpoint is run here from its first realization: the sums
+    // are added in the same order, so they are the same (rank 0's threads start it where it stopped).
     const md::ResolvedScene scene = resolve_blast_scene(config);
-    work.run = [&](long long b, const std::atomic<bool>&) {
-      NamedFiles files;
-      const BlockSums s = run_block(scene, b, &files);
+    const std::string run_id = broadcast_from_rank0("");
+    work.run = [&](long long b, const std::atomic<bool>& stop) {
+      const BlockProgress block = run_block(scene, run_id, b, {}, &stop);
       ByteWriter w;
-      put_block_sums(w, s, files);
+      put_block_sums(w, block.sums, block.files);
       return std::move(w.bytes);
     };
     run_blocks_mpi(work);
@@ -308,39 +318,42 @@ BlastResult run_blast_mpi(const md::BlastConfig& config, const RunOptions& optio
     empty.ranks = ranks;
     return empty;
   }
-  // Rank 0: the plan (scene, checkpoint, pending blocks); progress counts realizations, its own
-  // one by one, the other ranks' block by block.
-  EnsemblePlan plan = plan_ensemble(config, options);
+  // Rank 0: the plan (scene, folder, checkpoint, pending blocks); progress counts realizations, its
+  // own one by one, the other ranks' block by block.
+  EnsemblePlan plan = plan_ensemble(config, options);  // an error here ends every rank (MPI_Abort)
   BlastResult& result = plan.result;
+  broadcast_from_rank0(result.run_id);  // the realizations' files of every rank carry it
   result.ranks = ranks;
   const md::ResolvedScene& scene = result.scene;
   const long long total = plan.pending_realizations;
-  std::mutex mutex;  // guards done, result.blocks, result.realization0_files
+  std::mutex mutex;  // guards done, result.blocks, result.realization_files
   long long done = 0;
-  const auto realization_done = [&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    ++done;
-    if (options.progress) options.progress(done, total);
-  };
   work.pending = plan.pending;
   work.run = [&](long long b, const std::atomic<bool>& stop) {
-    NamedFiles files;
-    const BlockSums s = run_block(scene, b, &files, realization_done, &stop, options.realization_time);
+    BlockCallbacks callbacks = checkpoint_callbacks(options, b);
+    callbacks.realization_done = [&] {
+      std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (options.progress) options.progress(done, total);
+    };
+    BlockProgress start;
+    if (plan.partial.count(b)) start.sums = plan.partial.at(b);
+    const BlockProgress block = run_block(scene, result.run_id, b, std::move(start), &stop, callbacks);
     ByteWriter w;
-    put_block_sums(w, s, files);
+    put_block_sums(w, block.sums, block.files);
     return std::move(w.bytes);
   };
   work.finish = [&](long long b, std::vector<char>&& bytes, bool remote) {
     ByteReader reader(bytes);
     NamedFiles files;
     BlockSums s = get_block_sums(reader, &files);
-    if (!options.checkpoint.empty()) save_checkpoint_block(options.checkpoint, b, s, b == 0 ? &files : nullptr);
+    if (!options.out.empty()) save_checkpoint_block(checkpoint_folder(options.out), b, s, files);
     std::lock_guard<std::mutex> lock(mutex);
     if (remote) {
-      done += s.count;
+      done += s.count - (plan.partial.count(b) ? plan.partial.at(b).count : 0);
       if (options.progress) options.progress(done, total);
     }
-    if (b == 0) result.realization0_files = std::move(files);
+    add_files(result.realization_files, files);
     result.blocks[b] = std::move(s);
   };
   run_blocks_mpi(work);

@@ -103,6 +103,9 @@ struct MpiBlockWork {
   std::function<void(long long block, std::vector<char>&& result, bool remote)> finish;
 };
 
+/// Rank 0's `text` on every rank (collective; other ranks pass anything): e.g. the run id.
+std::string broadcast_from_rank0(std::string text);
+
 /// Runs `work` over every rank of MPI_COMM_WORLD (collective): the one MPI launcher of ensembles.
 /// Rank 0 hands out work.pending to its own threads and the other ranks' threads and passes every
 /// finished block to work.finish; it returns when all blocks are done. An error on any rank is

@@ -1,7 +1,6 @@
 #include "run/mpi_tracer.hpp"
 
 #include <chrono>
-#include <map>
 #include <mutex>
 
 #include "run/mpi_ensemble.hpp"
@@ -41,37 +40,39 @@ kinetic::TracerBlockSums from_bytes(const std::vector<char>& bytes) {
 
 }  // namespace
 
-TracerResult run_tracer_mpi(const kinetic::TracerConfig& config, const TracerProgress& progress) {
+TracerResult run_tracer_mpi(const kinetic::TracerConfig& config, const TracerProgress& progress,
+                            const TracerRunFiles& files) {
   const int ranks = MpiSession::size();
-  if (ranks == 1) return run_tracer(config, progress);
+  if (ranks == 1) return run_tracer(config, progress, files);
   const auto started = std::chrono::steady_clock::now();
   config.validate();
   // Every rank: validation (bad input ends every rank alike), the start states and the background.
   const kinetic::TracerRun run(with_start_states(config), progress.background);
+  // Rank 0: the folder, the checkpoint and the blocks still to run (an error ends every rank).
+  TracerPlan plan = MpiSession::rank() == 0 ? plan_tracer(run, files) : TracerPlan{};
   std::mutex mutex;  // guards the blocks and done
-  std::map<long long, kinetic::TracerBlockSums> finished;
   long long done = 0;
-  const auto total = static_cast<long long>(run.blocks().size());
+  const auto total = static_cast<long long>(plan.pending.size());
   MpiBlockWork work;
   work.threads = config.threads;
-  work.pending = run.blocks();
+  work.pending = plan.pending;
   work.run = [&](long long b, const std::atomic<bool>& stop) { return to_bytes(run.run_block(b, stop)); };
   work.finish = [&](long long b, std::vector<char>&& bytes, bool) {
     kinetic::TracerBlockSums block = from_bytes(bytes);
+    save_tracer_block(files, b, block);
     std::lock_guard<std::mutex> lock(mutex);
-    finished[b] = std::move(block);
+    plan.result.ensemble.blocks[b] = std::move(block.sums);
+    plan.result.blocks[b] = std::move(block.tracer);
     ++done;
     if (progress.blocks) progress.blocks(done, total);
   };
   run_blocks_mpi(work);
   if (MpiSession::rank() != 0) return TracerResult{};
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  TracerResult result = tracer_result(run.info(), wall, ranks);
-  for (auto& [b, block] : finished) {
-    result.ensemble.blocks[b] = std::move(block.sums);
-    result.blocks[b] = std::move(block.tracer);
-  }
-  return result;
+  TracerResult& result = plan.result;
+  result.ensemble.ranks = ranks;
+  result.wall_seconds = result.ensemble.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return std::move(plan.result);
 }
 
 }  // namespace coldblast::run

@@ -10,6 +10,7 @@ namespace coldblast::run {
 /// (the same on every rank of a homogeneous cluster); rank 0 returns the whole result and alone
 /// calls `progress` (blocks done, blocks total); other ranks return an empty result. With one rank
 /// (or without a launcher) this is run_tracer. Errors as run_blocks_mpi.
-TracerResult run_tracer_mpi(const kinetic::TracerConfig& config, const TracerProgress& progress = {});
+TracerResult run_tracer_mpi(const kinetic::TracerConfig& config, const TracerProgress& progress = {},
+                            const TracerRunFiles& files = {});
 
 }  // namespace coldblast::run

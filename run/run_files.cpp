@@ -12,7 +12,9 @@
 #include "common/input.hpp"
 #include "common/validate.hpp"
 #include "md/observers.hpp"
+#include "run/run_directory.hpp"
 #include "run/scene_file.hpp"
+#include "run/snapshot_files.hpp"
 #include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
@@ -97,8 +99,9 @@ std::vector<ObservableEstimate> estimate_observables(const BlastResult& result) 
   return rows;
 }
 
-std::string run_file_header(const ResolvedScene& s, const common::HeaderFields& extra) {
-  common::HeaderFields fields = {{"scene", s.config.name},
+std::string run_file_header(const ResolvedScene& s, const std::string& run_id, const common::HeaderFields& extra) {
+  common::HeaderFields fields = {{"run_id", run_id},
+                                 {"scene", s.config.name},
                                  {"seed", std::to_string(s.config.seed)},
                                  {"A_d", format_number(s.A_d) + " (" + s.A_d_source + ")"},
                                  {"particles", std::to_string(s.particle_count)},
@@ -121,6 +124,8 @@ common::Json blast_summary(const BlastResult& result) {
   const double collisions = static_cast<double>(result.collisions() - result.resumed_collisions);
   const long long realizations_run = result.realizations() - result.resumed_realizations;
   common::Json j;
+  j["run_id"] = result.run_id;
+  if (!result.merged_from.empty()) j["merged_from"] = result.merged_from;
   j["scene"] = common::Json::parse(scene_json.str());
   j["seed"] = c.seed;
   j["realizations"] = result.realizations();
@@ -242,17 +247,33 @@ void write_p_imp_csv(const BlastResult& result, const EnsembleTotals& totals, co
 
 }  // namespace
 
-void write_blast_outputs(const BlastResult& result, const fs::path& directory) {
+std::vector<std::string> write_blast_files(const BlastResult& result, const fs::path& directory) {
   common::remove_stale_temporaries(directory);  // writes of a killed earlier attempt
   const ObservableLayout layout(result.scene);
-  const std::string header = run_file_header(result.scene);
+  const std::string header = run_file_header(result.scene, result.run_id);
+  std::vector<std::string> names{"observables.csv", "blocks.csv", "accumulators.csv", "block_totals.csv"};
   write_observables_csv(result, header, directory);
   write_block_files(result, header, directory);
   const EnsembleTotals totals = ensemble_totals(result);
-  if (layout.has_profiles() && totals.count > 0) write_profiles_csv(result, totals, header, directory);
-  if (layout.has_p_imp() && totals.count > 0) write_p_imp_csv(result, totals, header, directory);
-  for (const auto& [name, content] : result.realization0_files) common::write_file_atomic(directory / name, content);
+  if (layout.has_profiles() && totals.count > 0) {
+    write_profiles_csv(result, totals, header, directory);
+    names.push_back("profiles.csv");
+  }
+  if (layout.has_p_imp() && totals.count > 0) {
+    write_p_imp_csv(result, totals, header, directory);
+    names.push_back("p_imp.csv");
+  }
+  for (const auto& [name, content] : result.realization_files) {
+    common::write_file_atomic(directory / name, content);
+    names.push_back(name);
+  }
   common::write_file_atomic(directory / "summary.json", blast_summary(result).dump(2) + "\n");
+  names.push_back("summary.json");
+  return names;
+}
+
+void write_blast_outputs(const BlastResult& result, const fs::path& directory) {
+  write_manifest(directory, {result.run_id, result.kind, write_blast_files(result, directory)});
 }
 
 namespace {
@@ -287,16 +308,12 @@ std::map<long long, BlockSums> read_block_sums(const fs::path& dir, const Observ
   return blocks;
 }
 
-bool is_realization0_file(const std::string& name) {
-  return name == "trajectories.csv" || name == "snapshots.extxyz" ||
-         (name.rfind("snapshot_", 0) == 0 && name.size() > 4 && name.substr(name.size() - 4) == ".csv");
-}
-
 }  // namespace
 
 namespace {
 /// What md merge takes from a shard's summary.json.
 struct MergedSummary {
+  std::string run_id;  ///< empty for a run made before run ids
   std::string scene_toml;
   double wall_seconds = 0.0;
   long long resumed_realizations = 0, resumed_collisions = 0;
@@ -331,6 +348,10 @@ MergedSummary read_merged_summary(const std::filesystem::path& path) {
     MergedSummary m;
     if (!s.contains("scene_toml") || !s.at("scene_toml").is_string()) throw bad("no 'scene_toml' string");
     m.scene_toml = s.at("scene_toml").get<std::string>();
+    if (s.contains("run_id")) {
+      if (!s.at("run_id").is_string()) throw bad("'run_id' is not a string");
+      m.run_id = s.at("run_id").get<std::string>();
+    }
     if (!s.contains("wall_seconds") || !s.at("wall_seconds").is_number() ||
         !(s.at("wall_seconds").get<double>() >= 0.0) || !std::isfinite(s.at("wall_seconds").get<double>()))
       throw bad("no finite 'wall_seconds' >= 0");
@@ -378,8 +399,11 @@ std::string partial_merge_note(const BlastResult& merged) {
 BlastResult merge_blast_outputs(const std::vector<fs::path>& directories) {
   if (directories.empty()) throw std::invalid_argument("md merge: no input directories");
   BlastResult merged;
+  merged.run_id = new_run_id();
+  merged.kind = "md merge";
   std::string scene_toml;
   for (const auto& dir : directories) {
+    require_one_run(dir, "md merge DIR");
     const MergedSummary summary = read_merged_summary(dir / "summary.json");
     const std::string& toml_text = summary.scene_toml;
     if (scene_toml.empty()) {
@@ -401,11 +425,16 @@ BlastResult merge_blast_outputs(const std::vector<fs::path>& directories) {
         throw std::invalid_argument("md merge: block " + std::to_string(b) + " appears twice (" + dir.string() + ")");
       merged.blocks[b] = std::move(s);
     }
+    if (!summary.run_id.empty()) merged.merged_from.push_back(summary.run_id);
     for (const auto& entry : fs::directory_iterator(dir)) {
       const std::string name = entry.path().filename().string();
-      if (is_realization0_file(name)) merged.realization0_files.push_back({name, common::read_text(entry.path())});
+      if (!is_realization_file_name(name)) continue;
+      std::string text = common::read_text(entry.path());
+      if (!summary.run_id.empty()) text = with_run_id(text, summary.run_id, merged.run_id);
+      merged.realization_files.push_back({name, std::move(text)});
     }
   }
+  std::sort(merged.realization_files.begin(), merged.realization_files.end());
   return merged;
 }
 

@@ -20,11 +20,15 @@
 
 namespace coldblast::run {
 
-/// Files of single realizations (snapshot_<t>.csv, snapshots.extxyz, trajectories.csv): name → content.
+/// Files of single realizations (snapshot_<t>.csv, snapshots.extxyz, trajectories.csv and those of other
+/// realizations, run/snapshot_files.hpp): name → content.
 using NamedFiles = std::vector<std::pair<std::string, std::string>>;
 
 /// A finished (or merged) ensemble.
 struct BlastResult {
+  std::string run_id;                    ///< written into every file and manifest.json (run/run_directory.hpp)
+  std::string kind = "md run";           ///< manifest.json's kind: "md run", "md merge", "tracer"
+  std::vector<std::string> merged_from;  ///< md merge: the run ids of the shards
   md::ResolvedScene scene;
   std::map<long long, md::BlockSums> blocks;  ///< by block index
   double wall_seconds = 0.0;
@@ -34,8 +38,8 @@ struct BlastResult {
   std::uint64_t resumed_collisions = 0;
   int threads = 1, shard_index = 0, shard_count = 1;
   int ranks = 1;  ///< MPI ranks that ran the ensemble (run/mpi_ensemble.hpp), each with `threads` threads
-  /// Extra files of realization 0 (snapshot_<t>.csv, trajectories.csv): name → content.
-  NamedFiles realization0_files;
+  /// Files of single realizations (snapshots, trajectories), in name order.
+  NamedFiles realization_files;
 
   long long realizations() const;
   std::uint64_t collisions() const;
@@ -67,14 +71,19 @@ std::string partial_merge_note(const BlastResult& merged);
 /// The ensemble estimates (mean, standard error) of the scalar observables, in output order, with
 /// the catalogue's transform (theory/observables.hpp; Eq. (38)'s square root by the delta method).
 std::vector<ObservableEstimate> estimate_observables(const BlastResult& result);
-/// Provenance header of every run file: the standard block, the scene's derived sizes, `extra`,
-/// then the resolved scene as commented TOML lines ("#   key = value").
-std::string run_file_header(const md::ResolvedScene& scene, const common::HeaderFields& extra = {});
+/// Provenance header of every run file: the standard block, the run id, the scene's derived sizes,
+/// `extra`, then the resolved scene as commented TOML lines ("#   key = value").
+std::string run_file_header(const md::ResolvedScene& scene, const std::string& run_id,
+                            const common::HeaderFields& extra = {});
 /// Summary document (the content of summary.json).
 common::Json blast_summary(const BlastResult& result);
-/// Writes every output file into `directory` (atomically, file by file).
+/// Writes every file of the run into `directory` (atomically, file by file); returns their names.
+std::vector<std::string> write_blast_files(const BlastResult& result, const std::filesystem::path& directory);
+/// write_blast_files, then manifest.json listing them (run/run_directory.hpp), last.
 void write_blast_outputs(const BlastResult& result, const std::filesystem::path& directory);
-/// Reads shard directories written by write_blast_outputs and combines them exactly.
+/// Reads shard directories written by write_blast_outputs and combines them exactly, as a new run
+/// (a new run id; the shards' realization files carry it). std::invalid_argument names a shard
+/// whose files belong to different runs, another scene, or a block given twice.
 BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& directories);
 
 }  // namespace coldblast::run

@@ -139,15 +139,26 @@ BlastConfig config_from_table(const toml::table& table) {
       c.p_imp_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
     else if (key == "overlap_check")
       c.overlap_check = boolean(node, key);
-    else if (key == "observables" || key == "snapshot_times") {
+    else if (key == "snapshot_particles")
+      c.snapshot_particles = text(node, key);
+    else if (key == "snapshot_margin")
+      c.snapshot_margin = number(node, key);
+    else if (key == "snapshot_stride")
+      c.snapshot_stride = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
+    else if (key == "observables" || key == "snapshot_times" || key == "snapshot_fractions" ||
+             key == "snapshot_realizations") {
       const toml::array* array = node.as_array();
       if (!array) throw std::invalid_argument("scene key " + key + " must be an array");
       if (key == "observables") {
         c.observables.clear();
         for (auto&& item : *array) c.observables.push_back(text(item, key));
+      } else if (key == "snapshot_realizations") {
+        c.snapshot_realizations.clear();
+        for (auto&& item : *array) c.snapshot_realizations.push_back(integer(item, key));
       } else {
-        c.snapshot_times.clear();
-        for (auto&& item : *array) c.snapshot_times.push_back(number(item, key));
+        std::vector<double>& list = key == "snapshot_times" ? c.snapshot_times : c.snapshot_fractions;
+        list.clear();
+        for (auto&& item : *array) list.push_back(number(item, key));
       }
     } else if (key == "impurities") {
       if (!node.is_table()) throw std::invalid_argument("scene key impurities must be a table");
@@ -161,7 +172,8 @@ BlastConfig config_from_table(const toml::table& table) {
           "unknown scene key " + key +
           " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius,recollide}, t_min, t_max, realizations, "
           "seed, "
-          "block_size, observables, box_margin, cell_width, queue, snapshot_times, profile_bins, p_imp_bins, "
+          "block_size, observables, box_margin, cell_width, queue, snapshot_times, snapshot_fractions, "
+          "snapshot_particles, snapshot_margin, snapshot_stride, snapshot_realizations, profile_bins, p_imp_bins, "
           "overlap_check, [hydro])");
     }
   }
@@ -188,7 +200,10 @@ namespace {
 toml::table scene_table(const std::string& toml_text, const std::vector<std::string>& overrides,
                         const std::string& source, bool drop_snapshots) {
   toml::table table = parse_table(toml_text, source);
-  if (drop_snapshots) table.erase("snapshot_times");
+  if (drop_snapshots)
+    for (const char* key : {"snapshot_times", "snapshot_fractions", "snapshot_particles", "snapshot_margin",
+                            "snapshot_stride", "snapshot_realizations"})
+      table.erase(key);
   for (const std::string& assignment : overrides) {
     const auto eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -250,7 +265,27 @@ std::string scene_toml(const BlastConfig& c) {
       << "\nqueue = " << quoted(c.queue) << "\nsnapshot_times = [";
   for (std::size_t i = 0; i < c.snapshot_times.size(); ++i)
     out << (i ? ", " : "") << format_number(c.snapshot_times[i]);
-  out << "]\nprofile_bins = " << c.profile_bins << "\np_imp_bins = " << c.p_imp_bins
+  out << "]";
+  // The snapshot keys beyond snapshot_times are written only when they differ from their defaults,
+  // so that the text of a scene without them (compared by merges and resumes) stays what it was.
+  const md::BlastConfig defaults;
+  if (!c.snapshot_fractions.empty()) {
+    out << "\nsnapshot_fractions = [";
+    for (std::size_t i = 0; i < c.snapshot_fractions.size(); ++i)
+      out << (i ? ", " : "") << format_number(c.snapshot_fractions[i]);
+    out << "]";
+  }
+  if (c.snapshot_particles != defaults.snapshot_particles)
+    out << "\nsnapshot_particles = " << quoted(c.snapshot_particles);
+  if (c.snapshot_margin != defaults.snapshot_margin) out << "\nsnapshot_margin = " << format_number(c.snapshot_margin);
+  if (c.snapshot_stride != defaults.snapshot_stride) out << "\nsnapshot_stride = " << c.snapshot_stride;
+  if (c.snapshot_realizations != defaults.snapshot_realizations) {
+    out << "\nsnapshot_realizations = [";
+    for (std::size_t i = 0; i < c.snapshot_realizations.size(); ++i)
+      out << (i ? ", " : "") << c.snapshot_realizations[i];
+    out << "]";
+  }
+  out << "\nprofile_bins = " << c.profile_bins << "\np_imp_bins = " << c.p_imp_bins
       << "\noverlap_check = " << (c.overlap_check ? "true" : "false")
       << "\n\n[impurities]\ncount = " << c.impurities.count << "\nmass = " << format_number(c.impurities.mass)
       << "\nradius = " << format_number(c.impurities.radius) << "\n";

@@ -14,16 +14,31 @@
 
 namespace coldblast::run {
 
-/// What realization `index` of a scene records beyond its observables: realization 0 records the
-/// snapshots and the impurities' paths when the scene asks for them (observables "snapshots",
-/// "trajectories").
+/// What realization `index` of a scene records beyond its observables: the realizations in
+/// snapshot_realizations record the snapshots (at the scene's snapshot times, the particles
+/// snapshot_particles, snapshot_margin and snapshot_stride select) and the impurities' paths, when
+/// the scene asks for them (observables "snapshots", "trajectories").
 md::RealizationExtras realization_extras(const md::ResolvedScene& scene, long long index);
 
-/// One extended-XYZ frame of a snapshot.
-std::string extxyz_frame(const md::ResolvedScene& scene, const md::SnapshotFrame& frame);
+/// The expected size of a run's snapshot files (snapshot_<t>.csv and snapshots.extxyz, bytes): the
+/// particles per snapshot (the region's for "all"; for "front" those within the margin of Eq. (1)'s
+/// R(t) + 20 %, or of md::early_reach_bound while the blast forms) / stride, times the snapshot times and realizations,
+/// at 110 (2D) or 170 (3D) bytes per particle. 0 without the observable "snapshots".
+double snapshot_bytes_estimate(const md::ResolvedScene& scene);
+/// A warning for stderr when snapshot_bytes_estimate exceeds 100 MB: how much, why, and how to
+/// write less; empty otherwise.
+std::string snapshot_size_warning(const md::ResolvedScene& scene);
+
+/// One extended-XYZ frame of a snapshot (its comment line records the run id as run_id=ID).
+std::string extxyz_frame(const md::ResolvedScene& scene, const std::string& run_id, const md::SnapshotFrame& frame);
 
 /// The files of realization `index`'s extras: snapshot_<t>.csv per snapshot and snapshots.extxyz
-/// (all of them as frames), trajectories.csv; none when it recorded none.
-NamedFiles realization_files(const md::ResolvedScene& scene, long long index, const md::RealizationOutput& output);
+/// (all of them as frames), trajectories.csv (for index k > 0: snapshot_<t>_realization_<k>.csv,
+/// snapshots_realization_<k>.extxyz, trajectories_realization_<k>.csv); none when it recorded none.
+NamedFiles realization_files(const md::ResolvedScene& scene, const std::string& run_id, long long index,
+                             const md::RealizationOutput& output);
+
+/// Whether `name` is the name of a file of single realizations (above).
+bool is_realization_file_name(const std::string& name);
 
 }  // namespace coldblast::run

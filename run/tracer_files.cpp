@@ -8,6 +8,7 @@
 #include "common/validate.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/prefactors.hpp"
+#include "run/run_directory.hpp"
 
 namespace coldblast::run {
 
@@ -16,7 +17,8 @@ using common::format_number;
 std::string prefactors_csv(const TracerResult& result) {
   const md::ResolvedScene& scene = result.ensemble.scene;
   std::ostringstream out;
-  out << common::provenance_header({{"scene", scene.config.name},
+  out << common::provenance_header({{"run_id", result.ensemble.run_id},
+                                    {"scene", scene.config.name},
                                     {"seed", std::to_string(scene.config.seed)},
                                     {"background", result.background_description},
                                     {"A_d", format_number(scene.A_d)}},
@@ -85,7 +87,8 @@ constexpr const char* moment_sums_header = "block,t,r2_sum,r4_sum,v2_sum,v4_sum"
 /// block and recording time: the sums of r², r⁴, v², v⁴): the exact sums behind the summary's
 /// tracer keys and moments.csv, shortest round-trip decimals, read back by merge_tracer_outputs.
 void write_tracer_blocks(const TracerResult& result, const std::filesystem::path& directory) {
-  const std::string header = run_file_header(result.ensemble.scene, {{"background", result.background_description}});
+  const std::string header =
+      run_file_header(result.ensemble.scene, result.ensemble.run_id, {{"background", result.background_description}});
   const auto& times = result.ensemble.scene.times;
   std::ostringstream blocks, moments;
   blocks << header << "# sums over the block's trajectories; v2_final: |v|^2 at t_max\n"
@@ -175,9 +178,10 @@ common::Json read_tracer_summary(const std::filesystem::path& path) {
 }  // namespace
 
 void write_tracer_outputs(const TracerResult& result, const std::filesystem::path& directory) {
-  write_blast_outputs(result.ensemble, directory);
+  std::vector<std::string> files = write_blast_files(result.ensemble, directory);  // summary.json: the tracer's below
   std::ostringstream out;
-  out << common::provenance_header({{"scene", result.ensemble.scene.config.name},
+  out << common::provenance_header({{"run_id", result.ensemble.run_id},
+                                    {"scene", result.ensemble.scene.config.name},
                                     {"seed", std::to_string(result.ensemble.scene.config.seed)},
                                     {"background", result.background_description}},
                                    "m = 1 (host mass), k_B = 1, lengths and times in the scene's units")
@@ -193,6 +197,8 @@ void write_tracer_outputs(const TracerResult& result, const std::filesystem::pat
   common::write_file_atomic(directory / "prefactors.csv", prefactors_csv(result));
   write_tracer_blocks(result, directory);
   common::write_file_atomic(directory / "summary.json", tracer_summary(result).dump(2) + "\n");
+  files.insert(files.end(), {"moments.csv", "prefactors.csv", "tracer_blocks.csv", "moment_sums.csv"});
+  write_manifest(directory, {result.ensemble.run_id, result.ensemble.kind, files});
 }
 
 bool is_tracer_run(const std::filesystem::path& directory) {

@@ -1,11 +1,15 @@
 #pragma once
 // `coldblast tracer` as a run: a prepared kinetic::TracerRun (kinetic/tracer.hpp: the physics) run
 // block by block on threads (the worker pool of ensembles) for this shard, its start states read
-// from their file, and the finished ensemble in md's run-directory form (the files are
-// run/tracer_files.hpp's; over MPI ranks, run/mpi_tracer.hpp).
+// from their file, every finished block kept in OUT/checkpoint (--resume OUT continues with the
+// checkpoint's scene and options), and the finished ensemble in md's run-directory form (the files
+// are run/tracer_files.hpp's; over MPI ranks, run/mpi_tracer.hpp).
 #include <cstdint>
+#include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "kinetic/tracer.hpp"
 #include "kinetic/tracer_config.hpp"
@@ -46,6 +50,25 @@ struct TracerProgress {
   std::function<void(long long, long long)> blocks;
 };
 
+/// Where a tracer run keeps its files: as RunOptions' out, resume, overwrite (run/ensemble.hpp).
+/// Without `out` nothing is written; the caller writes the outputs (write_tracer_outputs).
+struct TracerRunFiles {
+  std::filesystem::path out;
+  std::string out_option = "--out";
+  bool resume = false, overwrite = false;
+  std::string resume_hint;  ///< how to continue a stopped run, e.g. "coldblast tracer --resume OUT"
+};
+
+/// The options a checkpoint records and --resume OUT alone restores: flag name → value text
+/// (--background, --transport, --trajectories, --T, --phi, --start, --start-time, --start-states,
+/// --frames-per-decade, --cells, --kernel, --shard).
+std::map<std::string, std::string> tracer_option_values(const kinetic::TracerConfig& config);
+/// --resume OUT: the config of OUT's checkpoint (its scene as given and its options), with
+/// `requested`'s threads. Each flag in `given` (e.g. "--background", or "SCENE" and "--set" for the
+/// scene) must agree with the checkpoint, else std::invalid_argument naming the flag and both values.
+kinetic::TracerConfig resume_tracer_config(const std::filesystem::path& out, const kinetic::TracerConfig& requested,
+                                           const std::vector<std::string>& given);
+
 /// The config with its start states read (start = "states" and none given yet: from
 /// config.start_states, naming --start-states in errors); otherwise the config unchanged.
 kinetic::TracerConfig with_start_states(kinetic::TracerConfig config);
@@ -53,7 +76,22 @@ kinetic::TracerConfig with_start_states(kinetic::TracerConfig config);
 /// The result of a prepared run with the blocks it finished, `wall_seconds` and `ranks` recorded.
 TracerResult tracer_result(const kinetic::TracerRunInfo& info, double wall_seconds, int ranks = 1);
 
-/// Runs the trajectories of this shard on config.threads threads (bit-identical for any count).
-TracerResult run_tracer(const kinetic::TracerConfig& config, const TracerProgress& progress = {});
+/// What a run knows before its blocks run (shared by the threaded and the MPI drivers): the result
+/// so far (with the blocks of a resumed checkpoint) and the blocks still to run. Claims OUT and
+/// starts its checkpoint, or loads it (resume).
+struct TracerPlan {
+  TracerResult result;
+  std::vector<long long> pending;
+};
+TracerPlan plan_tracer(const kinetic::TracerRun& run, const TracerRunFiles& files);
+/// Saves a finished block in OUT/checkpoint (nothing without OUT).
+void save_tracer_block(const TracerRunFiles& files, long long block, const kinetic::TracerBlockSums& sums);
+
+/// Runs the trajectories of this shard on config.threads threads (bit-identical for any count),
+/// keeping every finished block in files.out's checkpoint.
+TracerResult run_tracer(const kinetic::TracerConfig& config, const TracerProgress& progress = {},
+                        const TracerRunFiles& files = {});
+/// The end of a run with an output folder: its files and manifest.json, then the checkpoint removed.
+void finish_tracer_run(const TracerResult& result, const std::filesystem::path& out);
 
 }  // namespace coldblast::run

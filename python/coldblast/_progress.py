@@ -1,27 +1,54 @@
-"""Progress reporting shared by the long calls: progress=True prints to stderr like the CLI."""
+"""Progress reporting shared by the long calls: progress=True prints to stderr like the CLI
+(run/progress.hpp): on a terminal one line rewritten in place at most twice a second; elsewhere (a
+log, a notebook's captured stream, a pipe) plain lines without a carriage return, one per 10 % of
+the work or per 30 s, with the elapsed time and the ETA."""
 import sys
 import time
 
 
-class StderrProgress:
-    """Callable (done, total) printing ``label: done/total unit, elapsed, ETA`` at most twice a second."""
+def _duration(seconds):
+    if seconds < 120:
+        return f"{seconds:.1f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.1f} min"
+    return f"{seconds / 3600:.1f} h"
 
-    def __init__(self, label, unit, fmt="{:.0f}"):
-        self.label, self.unit, self.fmt = label, unit, fmt
-        self.start = self.last = time.monotonic()
+
+class StderrProgress:
+    """Callable (done, total) printing ``label: done/total unit (P %), elapsed, ETA``."""
+
+    def __init__(self, label, unit, fmt="{:.0f}", stream=None, terminal=None, clock=time.monotonic):
+        self.label, self.unit, self.fmt, self.clock = label, unit, fmt, clock
+        self.stream = sys.stderr if stream is None else stream
+        if terminal is None:
+            isatty = getattr(self.stream, "isatty", None)
+            terminal = bool(isatty and isatty())
+        self.terminal = terminal
+        self.start = self.last = clock()
+        self.decile = 0
 
     def __call__(self, done, total):
-        now = time.monotonic()
-        if done < total and now - self.last < 0.5:
-            return
+        now = self.clock()
+        last = done >= total
+        if self.terminal:
+            if not last and now - self.last < 0.5:
+                return
+        else:
+            decile = int(10 * done / total) if total > 0 else 10
+            if not last and decile <= self.decile and now - self.last < 30:
+                return
+            self.decile = decile
         self.last = now
         elapsed = now - self.start
         eta = elapsed * (total - done) / done if done > 0 else 0.0
-        sys.stderr.write(f"\r{self.label}: {self.fmt.format(done)}/{self.fmt.format(total)} {self.unit}, "
-                         f"{elapsed:.1f} s elapsed, ETA {eta:.1f} s   ")
-        if done >= total:
-            sys.stderr.write("\n")
-        sys.stderr.flush()
+        percent = int(100 * done / total) if total > 0 else 100
+        text = (f"{self.label}: {self.fmt.format(done)}/{self.fmt.format(total)} {self.unit} ({percent} %), "
+                f"{_duration(elapsed)} elapsed, ETA {_duration(eta)}")
+        if self.terminal:
+            self.stream.write(f"\r{text}   " + ("\n" if last else ""))
+        else:
+            self.stream.write(text + "\n")
+        self.stream.flush()
 
 
 def callback(progress, label, unit, fmt="{:.0f}"):

@@ -23,6 +23,9 @@ class Run:
         profiles.csv, p_imp.csv, trajectories.csv when the run recorded them.
     snapshots : dict
         {t: DataFrame of snapshot_<t>.csv (id, x, y[, z], moving, impurity)}, realization 0.
+    realization_snapshots : dict
+        {k: {t: DataFrame}} of every realization that recorded snapshots (scene key
+        snapshot_realizations; realization k > 0 writes snapshot_<t>_realization_<k>.csv).
     """
 
     def __init__(self, directory):
@@ -34,12 +37,14 @@ class Run:
         self.profiles = self._csv("profiles.csv")
         self.p_imp = self._csv("p_imp.csv")
         self.trajectories = self._csv("trajectories.csv")
-        self.snapshots = {}
+        self.realization_snapshots = {}
         for name in sorted(os.listdir(self.directory)):
-            match = re.fullmatch(r"snapshot_(.+)\.csv", name)
+            match = re.fullmatch(r"snapshot_(.+?)(?:_realization_(\d+))?\.csv", name)
             if match:
-                self.snapshots[float(match.group(1))] = self._csv(name)
-        self.snapshots = dict(sorted(self.snapshots.items()))
+                k = int(match.group(2) or 0)
+                self.realization_snapshots.setdefault(k, {})[float(match.group(1))] = self._csv(name)
+        self.realization_snapshots = {k: dict(sorted(v.items())) for k, v in sorted(self.realization_snapshots.items())}
+        self.snapshots = self.realization_snapshots.get(0, {})
 
     def _csv(self, name, required=False):
         path = os.path.join(self.directory, name)

@@ -70,7 +70,8 @@ def default_scene():
     return _coldblast.default_scene_toml()
 
 
-def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, **overrides):
+def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, resume=None, overwrite=False,
+        **overrides):
     """Run an MD ensemble of blast realizations (the same call as ``coldblast md run``).
 
     Parameters
@@ -86,10 +87,18 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
     seed : int or None
         Master seed >= 0; None: the scene's. Realization i is seeded from (seed, i).
     out : str, os.PathLike or None
-        Output directory (observables.csv, blocks.csv, summary.json, ... as ``md run --out``),
-        written atomically at the end; None writes nothing.
+        Output directory (observables.csv, blocks.csv, summary.json, ..., manifest.json as ``md run
+        --out``): one run, with its run id in every file; written atomically at the end, every
+        finished realization kept in out/checkpoint meanwhile. A folder holding another run's files
+        (or an unfinished run's checkpoint) is refused (ValueError) unless ``overwrite``. None
+        writes nothing.
     progress : bool or callable
         True: realizations done and ETA on stderr; False: silent; callable(done, total).
+    resume : str, os.PathLike or None
+        Continue the stopped run in this output directory (``md run --resume``): its scene, shard
+        and run id come from its checkpoint; an argument given again must agree with them.
+    overwrite : bool
+        Replace the files of another run in ``out`` (exactly those of its manifest.json).
     **overrides
         Scene keys to override, as ``--set key=value``: ``E=20``, ``t_max=500``,
         ``observables=["R_imp", "T0"]``, ``impurities={"count": 2}``.
@@ -103,26 +112,32 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
         for the scalar observables (R_imp, V_imp, C_imp, u_imp, n0, T0, R, ...; definitions in
         docs/md-output.md), i.e. the rows of observables.csv;
         ``summary``: the content of summary.json (dict);
-        ``realization0_files``: {name: text} of snapshot/trajectory files of realization 0;
+        ``realization_files``: {name: text} of the snapshot and trajectory files of the realizations
+        that record them (``realization0_files``: those of realization 0);
         ``out``: the output directory or None.
 
     Raises ValueError with the CLI's exit-2 message for a bad scene or argument (e.g.
     ``E = -1 is outside (0, inf)``), RuntimeError for a failed run, KeyboardInterrupt on Ctrl-C
-    (within ~0.1 s of the current realization's end; with ``out`` the finished blocks stay in
-    out/checkpoint, and nothing else is written).
+    (at the current realization's end; with ``out`` every finished realization stays in
+    out/checkpoint, and ``run(resume=out)`` continues it).
     """
+    if resume is not None:
+        if out is not None and os.path.normpath(os.fspath(out)) != os.path.normpath(os.fspath(resume)):
+            raise ValueError(f"resume = {os.fspath(resume)} must be the output directory (out = {os.fspath(out)})")
+        out = resume
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
     raw = _coldblast.md_run(scene_file, scene_text, sets,
                             None if realizations is None else _integer(realizations, "--realizations"),
                             None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
-                            "" if out is None else os.fspath(out),
+                            "" if out is None else os.fspath(out), resume is not None, bool(overwrite),
                             _progress.callback(progress, "md run", "realizations"))
     return SimpleNamespace(estimates=raw["estimates"], summary=raw["summary"],
-                           realization0_files=raw["realization0_files"],
+                           realization_files=raw["realization_files"], realization0_files=raw["realization0_files"],
                            out=None if out is None else os.fspath(out))
 
 
-def states(time, scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, **overrides):
+def states(time, scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, overwrite=False,
+           **overrides):
     """The impurities' positions, velocities and collision counts at ``time`` in every realization of
     an MD ensemble (the same call as ``coldblast md states``; realization i is ``run``'s realization
     i of the same scene and seed, so these reproduce its R_imp, V_imp, C_imp at a recorded time).
@@ -144,6 +159,6 @@ def states(time, scene=None, realizations=None, threads=1, seed=None, out=None, 
     raw = _coldblast.md_states(scene_file, scene_text, sets,
                                None if realizations is None else _integer(realizations, "--realizations"),
                                None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
-                               _number(time, "--time"), "" if out is None else os.fspath(out),
+                               _number(time, "--time"), "" if out is None else os.fspath(out), bool(overwrite),
                                _progress.callback(progress, "md states", "realizations"))
     return SimpleNamespace(out=None if out is None else os.fspath(out), **raw)

@@ -11,7 +11,7 @@ from .md import scene_arguments
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
         start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=256, progress=True,
-        start_states=None, kernel="auto", **overrides):
+        start_states=None, kernel="auto", overwrite=False, **overrides):
     """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
 
     Parameters
@@ -28,7 +28,12 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
     seed : int or None
         Master seed >= 0; None: the scene's. Trajectory i is seeded from (seed, i).
     out : str, os.PathLike or None
-        Run directory as ``coldblast tracer --out`` (``coldblast compare`` reads it), or None.
+        Run directory as ``coldblast tracer --out`` (``coldblast compare`` reads it): one run, every
+        finished block kept in out/checkpoint meanwhile (``coldblast tracer --resume out``
+        continues a stopped run); a folder holding another run's files is refused unless
+        ``overwrite``. None writes nothing.
+    overwrite : bool
+        Replace the files of another run in ``out`` (exactly those of its manifest.json).
     transport : str
         "dilute" (chi = 1; the ideal-gas Navier-Stokes) or "enskog" (chi(n) at contact; with "ns" the dense
         Navier-Stokes at the scene's packing fraction, the prediction for its MD; not with "tvns").
@@ -77,7 +82,7 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
                                 0.0 if start_time is None else number(start_time, "--start-time"),
                                 integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
                                 "" if start_states is None else os.fspath(start_states),
-                                text(kernel, "--kernel"), "" if out is None else os.fspath(out),
+                                text(kernel, "--kernel"), "" if out is None else os.fspath(out), bool(overwrite),
                                 _progress.callback(progress, "tracer", "blocks"))
     return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],
                            out=None if out is None else os.fspath(out))

@@ -3,9 +3,11 @@
 # the checkpoint, the run must exit 1 naming the file it could not write; the blocks already saved
 # must load (the resume below reads them all); no temporary may be left; and after space is freed,
 # --resume must finish with outputs equal to an uninterrupted run's (apart from the command line and
-# per-process cost fields). A second pass fills the disk during the final output writes over an
-# earlier complete run: every output file must stay complete (old or new, never cut), the
-# checkpoint intact, and the resume must finish. Needs root and tmpfs: skipped (exit 77) otherwise.
+# run id and per-process cost fields). A second pass fills the disk during the final output writes
+# of a run that replaces an earlier complete run (--overwrite, which removes the old run's files
+# first): every output file written must be complete (never cut), no manifest.json may claim the
+# incomplete run, the checkpoint must stay intact, and the resume must finish. Needs root and tmpfs:
+# skipped (exit 77) otherwise.
 # Usage: disk_full.sh BINARY WORK
 set -uo pipefail
 binary=$1 work=$2
@@ -21,7 +23,7 @@ mnt=$work/mnt
 
 "$binary" "${scene[@]}" --out "$work/reference" >/dev/null 2>&1 || fail "reference run failed"
 normalise() {
-  grep -v -E '^# command: |"(wall_seconds|collisions_per_second|seconds_per_realization|resumed_realizations|resumed_collisions)":' "$1"
+  grep -v -E '^# (command|run_id): |"(run_id|wall_seconds|collisions_per_second|seconds_per_realization|resumed_realizations|resumed_collisions)":' "$1"
 }
 same_as_reference() {
   for f in $(cd "$work/reference" && ls); do
@@ -50,17 +52,23 @@ grep -q "md run: $((24 - blocks))/$((24 - blocks)) realizations" "$work/resume.e
 same_as_reference "$mnt/run"
 echo "disk_full: resumed after freeing space, outputs identical"
 
-# 2. The final outputs fill the disk, over the complete outputs of an earlier run.
-cp -r "$work/reference/." "$mnt/run/"
+# 2. The final outputs fill the disk, replacing the complete outputs of an earlier run.
+rm -rf "$mnt/run"
+"$binary" md run --set t_max=5 --realizations 1 --out "$mnt/run" >/dev/null 2>&1 || fail "the earlier run failed"
 room_kib=280  # the checkpoint (25 files of one 4 KiB page and their temporaries) and observables.csv, not blocks.csv
 fill_leaving $room_kib
-"$binary" "${scene[@]}" --set seed=7 --out "$mnt/run" >/dev/null 2>"$work/full2.err"
+"$binary" "${scene[@]}" --set seed=7 --out "$mnt/run" >/dev/null 2>"$work/refused.err"
+[ $? -eq 2 ] && grep -q -- "--out = $mnt/run holds the files of run" "$work/refused.err" ||
+  fail "a run over another run's files without --overwrite: $(cat "$work/refused.err")"
+"$binary" "${scene[@]}" --set seed=7 --out "$mnt/run" --overwrite >/dev/null 2>"$work/full2.err"
 status=$?
 echo "disk_full: outputs on a full disk: exit $status: $(grep -o 'cannot write.*' "$work/full2.err" | head -1)"
 [ "$status" -eq 1 ] || fail "exit $status, expected 1: $(cat "$work/full2.err")"
 for f in $(cd "$work/reference" && ls); do
-  [ -s "$mnt/run/$f" ] && [ "$(tail -c 1 "$mnt/run/$f" | od -An -c | tr -d ' ')" = '\n' ] || fail "$f was cut"
+  [ ! -e "$mnt/run/$f" ] || { [ -s "$mnt/run/$f" ] && [ "$(tail -c 1 "$mnt/run/$f" | od -An -c | tr -d ' ')" = '\n' ]; } ||
+    fail "$f was cut"
 done
+[ ! -e "$mnt/run/manifest.json" ] || fail "manifest.json claims an incomplete run"
 [ -z "$(find "$mnt/run" -name '*.tmp.*')" ] || fail "temporaries left behind"
 saved=$(ls "$mnt/run/checkpoint" 2>/dev/null | grep -c '^block_.*\.txt$')
 [ "$saved" -eq 24 ] || fail "the checkpoint itself ran out of space ($saved blocks): raise room_kib"

@@ -3,7 +3,8 @@
 # happen after every block of one realization, each fsynced, so kills land in and between them, and
 # in the final output writes) and resumed each time with --resume; then stopped by SIGTERM and by
 # SIGINT, which must exit 143/130 with a loadable checkpoint. The final files must equal an
-# uninterrupted run's byte for byte, apart from the "# command:" line and the cost fields of
+# uninterrupted run's byte for byte, apart from the "# command:" line, the run id (two runs: the
+# "# run_id:" lines, summary.json's and manifest.json's "run_id") and the cost fields of
 # summary.json that count only the last process's work (wall_seconds, collisions_per_second,
 # seconds_per_realization, resumed_realizations, resumed_collisions; docs/md-output.md).
 # Usage: kill_resume.sh BINARY WORK [SEED]
@@ -23,6 +24,7 @@ echo "kill_resume: uninterrupted run ${duration_ms} ms"
 out=$work/killed
 attempt() {  # one start (resuming when a checkpoint exists), killed by $1 after $2 ms; sets status
   local args=("${scene[@]}" --out "$out")
+  [ -f "$out/manifest.json" ] && args+=(--overwrite)  # an attempt that finished: start anew over it
   [ -f "$out/checkpoint/scene.toml" ] && args=("${scene[@]}" --resume "$out")
   "$binary" "${args[@]}" >/dev/null 2>>"$work/killed.err" &
   local pid=$!
@@ -51,18 +53,19 @@ for signal in TERM INT; do
     [ "$status" -ne 0 ] && break
   done
   [ "$status" -eq "$expected" ] || fail "SIG$signal: exit $status, expected $expected: $(tail -3 "$work/killed.err")"
-  grep -q "continue with the same command and --resume $out" "$work/killed.err" || fail "SIG$signal: no resume hint"
+  grep -q "continue with \`coldblast md run --resume $out\`" "$work/killed.err" || fail "SIG$signal: no resume hint"
   [ -f "$out/checkpoint/scene.toml" ] || fail "SIG$signal left no checkpoint"
   echo "kill_resume: SIG$signal: exit $status, $(ls "$out/checkpoint" | grep -c '^block_') blocks checkpointed"
 done
 
 args=("${scene[@]}" --out "$out")
 [ -f "$out/checkpoint/scene.toml" ] && args=("${scene[@]}" --resume "$out")
+[ -f "$out/manifest.json" ] && args+=(--overwrite)  # the last start finished: run once more over it
 "$binary" "${args[@]}" >/dev/null 2>>"$work/killed.err" || fail "final resume: $(tail -3 "$work/killed.err")"
 [ -e "$out/checkpoint" ] && fail "the finished run left its checkpoint"
 
-normalise() {  # drops the provenance command line and the per-process cost fields
-  grep -v -E '^# command: |"(wall_seconds|collisions_per_second|seconds_per_realization|resumed_realizations|resumed_collisions)":' "$1"
+normalise() {  # drops the provenance command line, the run id and the per-process cost fields
+  grep -v -E '^# (command|run_id): |"(run_id|wall_seconds|collisions_per_second|seconds_per_realization|resumed_realizations|resumed_collisions)":' "$1"
 }
 files=$(cd "$work/reference" && ls)
 [ "$files" = "$(cd "$out" && ls)" ] || fail "different files: $(cd "$out" && ls | tr '\n' ' ')"

@@ -1,7 +1,7 @@
 # Kill-and-resume: a run killed midway (execute_process TIMEOUT kills the child) leaves some but not
 # all blocks in OUT/checkpoint; `--resume OUT` runs only the missing realizations and ends with
-# files identical to an uninterrupted run's (apart from the "# command:" line). A resume with a
-# different scene exits 2 naming the differing key.
+# files identical to an uninterrupted run's (apart from the "# command:" and "# run_id:" lines). A
+# resume with a contradicting --set exits 2 naming it and the key's two values.
 # With -DMPIEXEC="mpirun;...;-np;2" the resume runs under MPI (the checkpoint is the same).
 # Usage: cmake -DBINARY=... -DWORK=dir [-DMPIEXEC=...] -P run_resume.cmake
 set(realizations 400)  # ≈ 1.7 s on 2 idle cores (2026-11-24): the first kills land midway
@@ -38,7 +38,7 @@ endif()
 
 execute_process(COMMAND ${BINARY} md run ${scene} --set t_max=100 --resume ${WORK}/killed
                 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 2 OR NOT err MATCHES "--resume: .*different scene: t_max = 200 there, 100 now")
+if(NOT code EQUAL 2 OR NOT err MATCHES "--set t_max=100 contradicts the checkpoint in .*: t_max = 200 there, 100 now")
   message(FATAL_ERROR "resume with another t_max: exit ${code}, expected 2 naming t_max\n${out}${err}")
 endif()
 

@@ -107,3 +107,56 @@ def test_sigint_interrupts_reproduce(tmp_path):
     assert "finished" not in lines and code == 7
     assert latency is not None and latency < LATENCY_BOUND_SECONDS
     assert not (out / "REPORT.md").exists() and not (out / "md" / "summary.json").exists()
+
+RESUMED_CHILD = textwrap.dedent(r"""
+    import sys, coldblast
+    def progress(done, total):  # one write: SIGINT cannot land between its words
+        sys.stdout.write(f"progress {done} {total}\n")
+        sys.stdout.flush()
+    try:
+        coldblast.md.run(realizations=200, t_max=200, block_size=50, threads=1, out=sys.argv[1], progress=progress)
+    except KeyboardInterrupt:
+        print("\nKeyboardInterrupt", flush=True)
+        raise SystemExit(7)
+    print("finished", flush=True)
+""")
+
+# What differs between two runs of the same ensemble (docs/md-output.md, "Run ids" and "Resume"): the
+# command line, the run id, and the cost fields that count one process's work.
+RUN_FIELDS = ("run_id", "wall_seconds", "collisions_per_second", "seconds_per_realization", "resumed_realizations",
+              "resumed_collisions")
+
+
+def comparable(path):
+    lines = []
+    for line in path.read_text().splitlines():
+        if line.startswith(("# command: ", "# run_id: ")):
+            continue
+        if any(line.strip().startswith(f'"{key}":') for key in RUN_FIELDS):
+            continue
+        lines.append(line)
+    return lines
+
+
+def test_ctrl_c_keeps_every_realization_and_the_resumed_run_equals_an_uninterrupted_one(tmp_path):
+    """Ctrl-C in Python keeps the realizations of the block in progress too (no block had finished),
+    and md.run(resume=out) ends with the files of an uninterrupted run, apart from the command
+    line, the run id and the cost fields."""
+    import coldblast
+    stopped = tmp_path / "stopped"
+    lines, code, _ = interrupt_child(RESUMED_CHILD, stopped)
+    assert "KeyboardInterrupt" in lines and code == 7, lines
+    seen = max(int(float(line.split()[1])) for line in lines if line.startswith("progress"))
+    counts = {block.name: int(next(l.split()[1] for l in block.read_text().splitlines() if l.startswith("count ")))
+              for block in (stopped / "checkpoint").glob("block_*.txt")}
+    assert 0 < seen <= sum(counts.values()) < 200, (seen, counts)
+    assert any(count < 50 for count in counts.values()), counts  # a block in progress, kept
+    resumed = coldblast.md.run(resume=stopped, progress=False)
+    assert resumed.summary["resumed_realizations"] == sum(counts.values())
+    reference = tmp_path / "reference"
+    coldblast.md.run(realizations=200, t_max=200, block_size=50, out=reference, progress=False)
+    names = sorted(p.name for p in reference.iterdir())
+    assert names == sorted(p.name for p in stopped.iterdir())
+    assert "manifest.json" in names and "checkpoint" not in names
+    for name in names:
+        assert comparable(stopped / name) == comparable(reference / name), name

@@ -12,7 +12,7 @@ TINY = dict(t_max=50)  # the embedded 2D scene, cut at t = 50
 
 
 def lines(path):
-    return [l for l in path.read_text().splitlines() if not l.startswith("# command: ")]
+    return [l for l in path.read_text().splitlines() if not l.startswith(("# command: ", "# run_id: "))]
 
 
 @pytest.mark.parametrize("background", ["tvns", "ns"])

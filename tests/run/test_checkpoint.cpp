@@ -1,6 +1,7 @@
-// Checkpoints (md/checkpoint.hpp): block sums round-trip bit-exactly through their text (including
+// Checkpoints (run/checkpoint.hpp): block sums round-trip bit-exactly through their text (including
 // subnormals and extreme exponents), malformed files and a different scene are rejected naming
-// --resume, and a run resumed from a partial checkpoint equals the uninterrupted run.
+// --resume, a run resumed from a partial checkpoint equals the uninterrupted run, and a stop keeps
+// every finished realization (the block in progress too), which a resume does not run again.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <csignal>
@@ -73,6 +74,13 @@ TEST_CASE("malformed checkpoint blocks are rejected naming --resume", "[fast]") 
                     Catch::Contains("--resume") && Catch::Contains("block index"));
   CHECK_THROWS_WITH(parse_checkpoint_block(text, 3, 11, 16, "f"), Catch::Contains("entries"));
   CHECK_THROWS_WITH(parse_checkpoint_block(text, 3, 10, 15, "f"), Catch::Contains("count = 16"));
+  CHECK(parse_checkpoint_block(text, 3, 10, 17, "f").count == 16);  // a block in progress: 16 of 17 done
+  std::string extra;
+  const std::string with_extra = checkpoint_block_text(3, s, "tracer 1 2 3\n");
+  CHECK(parse_checkpoint_block(with_extra, 3, 10, 16, "f", &extra).count == 16);
+  CHECK(extra == "tracer 1 2 3\n");
+  CHECK_THROWS_WITH(parse_checkpoint_block(with_extra.substr(0, with_extra.size() - 4), 3, 10, 16, "f"),
+                    Catch::Contains("truncated"));
   CHECK_THROWS_WITH(parse_checkpoint_block(text.substr(0, text.size() / 2), 3, 10, 16, "f"),
                     Catch::Contains("--resume: malformed"));
   std::string corrupt = text;
@@ -84,10 +92,10 @@ TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run"
   const BlastConfig config =
       parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2", "A_d=0.351935906848599",
                                          R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
-  const fs::path dir = fresh_directory("resume");
+  const fs::path out = fresh_directory("resume"), dir = checkpoint_folder(out);
   RunOptions options;
   options.threads = 2;
-  options.checkpoint = dir;
+  options.out = out;
   const BlastResult full = run_blast(config, options);
   for (long long b = 0; b < 5; ++b) REQUIRE(fs::exists(dir / ("block_" + std::to_string(b) + ".txt")));
   // Simulate a kill: blocks 1 and 4 never finished.
@@ -107,44 +115,60 @@ TEST_CASE("a run resumed from a partial checkpoint equals the uninterrupted run"
     CHECK(r.sum == s.sum);
     CHECK(r.sum_squares == s.sum_squares);
   }
-  CHECK(resumed.realization0_files == full.realization0_files);
-  CHECK(!full.realization0_files.empty());
+  CHECK(resumed.realization_files == full.realization_files);
+  CHECK(!full.realization_files.empty());
+  CHECK(resumed.run_id == full.run_id);  // the resumed run is the same run
 
   // A different scene is refused, naming the key.
   const BlastConfig other =
       parse_scene(default_scene_toml(), {"t_max=40", "realizations=9", "block_size=2", "E=11", "A_d=0.351935906848599",
                                          R"(observables=["R_imp","n0","R","p_imp","snapshots"])"});
   CHECK_THROWS_WITH(run_blast(other, options), Catch::Contains("--resume") && Catch::Contains("E = 10 there, 11 now"));
-  fs::remove_all(dir);
+  fs::remove_all(out);
   CHECK_THROWS_WITH(run_blast(config, options), Catch::Contains("no checkpoint"));
 }
 
-TEST_CASE("a stop request ends a run between realizations, and resuming it equals the uninterrupted run", "[slow]") {
+TEST_CASE(
+    "a stop request ends a run between realizations, keeping each one, and resuming it equals the uninterrupted run",
+    "[slow]") {
   const BlastConfig config = parse_scene(
       default_scene_toml(),
       {"t_max=40", "realizations=7", "block_size=2", "A_d=0.351935906848599", R"(observables=["R_imp","n0"])"});
   RunOptions options;
   const BlastResult full = run_blast(config, options);
-  const fs::path dir = fresh_directory("interrupt");
-  options.checkpoint = dir;
-  // The stop arrives after the third realization, inside block 1: blocks 0 is saved, block 1 is not.
+  const fs::path out = fresh_directory("interrupt"), dir = checkpoint_folder(out);
+  options.out = out;
+  // The stop arrives after the third realization, inside block 1: block 0 is saved whole, block 1
+  // with its first realization (a block in progress), and no realization is lost.
   options.progress = [](long long done, long long) {
     if (done == 3) coldblast::common::request_stop(SIGINT);
   };
   CHECK_THROWS_AS(run_blast(config, options), coldblast::common::Interrupted);
   CHECK(coldblast::common::stop_signal() == SIGINT);
   coldblast::common::clear_stop();
+  REQUIRE(fs::exists(dir / "block_0.txt"));
+  REQUIRE(fs::exists(dir / "block_1.txt"));
+  const Checkpoint saved = load_checkpoint(dir, resolve_blast_scene(config));
+  CHECK(saved.blocks.size() == 1);
+  REQUIRE(saved.partial.count(1) == 1);
+  CHECK(saved.partial.at(1).count == 1);
+  // The same run started again without --resume neither resumes silently nor deletes the blocks.
+  options.progress = nullptr;
+  CHECK_THROWS_WITH(run_blast(config, options), Catch::Contains("--out = " + out.string()) &&
+                                                    Catch::Contains("unfinished run") && Catch::Contains("--resume"));
   CHECK(fs::exists(dir / "block_0.txt"));
-  CHECK_FALSE(fs::exists(dir / "block_1.txt"));
+  CHECK(fs::exists(dir / "block_1.txt"));
   options.resume = true;
   long long ran = 0;
   options.progress = [&](long long done, long long) { ran = done; };
   const BlastResult resumed = run_blast(config, options);
-  CHECK(ran == 5);  // blocks 1, 2 (2 realizations each) and 3 (1)
+  CHECK(ran == 4);  // the rest of block 1 (1 realization), blocks 2 (2) and 3 (1)
+  CHECK(resumed.resumed_realizations == 3);
   REQUIRE(resumed.blocks.size() == full.blocks.size());
   for (const auto& [b, s] : full.blocks) {
     CHECK(resumed.blocks.at(b).sum == s.sum);
     CHECK(resumed.blocks.at(b).sum_squares == s.sum_squares);
+    CHECK(resumed.blocks.at(b).collisions == s.collisions);
   }
-  fs::remove_all(dir);
+  fs::remove_all(out);
 }

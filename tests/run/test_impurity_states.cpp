@@ -72,7 +72,7 @@ TEST_CASE("md states: impurity_states.csv reads back bit for bit, and bad input 
   const auto states = impurity_states(scene, 30.0, 3, 2);
   const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_states");
   const fs::path file = dir / "impurity_states.csv";
-  coldblast::common::write_file_atomic(file, impurity_states_csv(states, config, 30.0));
+  coldblast::common::write_file_atomic(file, impurity_states_csv(states, config, 30.0, "test-run"));
   const ImpurityStates read = read_impurity_states(file, 2, "--start-states");
   // md states' output directory stands for the file in it
   CHECK(read_impurity_states(dir, 2, "--start-states").states.size() == states.size());

@@ -194,7 +194,7 @@ TEST_CASE("tracer: --start states starts trajectory i from the MD's impurity sta
   REQUIRE(states.size() == 20);
   const auto dir = coldblast::test::unique_temp_path("coldblast_test_tracer_states");
   const auto file = dir / "impurity_states.csv";
-  coldblast::common::write_file_atomic(file, impurity_states_csv(states, c.scene, t0));
+  coldblast::common::write_file_atomic(file, impurity_states_csv(states, c.scene, t0, "test-run"));
   c.start = "states";
   c.start_states = file.string();
   c.trajectories = 0;  // one per state
@@ -286,8 +286,10 @@ TEST_CASE("tracer: md merge of shard directories equals one run, summary keys an
     CHECK(a[k].v2_error == b[k].v2_error);
   }
   auto x = tracer_summary(one), y = tracer_summary(merged);
-  for (const char* key :
-       {"wall_seconds", "collisions_per_second", "seconds_per_realization", "threads", "trajectories_per_second"}) {
+  CHECK(y.at("merged_from").size() == 3);  // the shards' run ids; the merge is a run of its own
+  CHECK(y.at("run_id") != x.at("run_id"));
+  for (const char* key : {"wall_seconds", "collisions_per_second", "seconds_per_realization", "threads",
+                          "trajectories_per_second", "run_id", "merged_from"}) {
     x.erase(key);
     y.erase(key);
   }
