@@ -45,9 +45,10 @@ std::vector<std::vector<std::string>> rows(const fs::path& file) {
 TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[slow]") {
   const std::uint64_t seed = 4;
   INFO("seed " << seed);
-  const BlastConfig scene = parse_scene(
-      default_scene_toml(), {"t_max=400", "realizations=12", "seed=4", "A_d=0.2238", "snapshot_times=[100.0, 400.0]",
-                             R"(observables=["R_imp","R","profiles","p_imp","snapshots","trajectories"])"});
+  const BlastConfig scene =
+      parse_scene(default_scene_toml(), {"t_max=400", "realizations=12", "seed=4", "A_d=0.2238",
+                                         "snapshot_times=[100.0, 400.0]", R"(snapshot_particles="all")",
+                                         R"(observables=["R_imp","R","profiles","p_imp","snapshots","trajectories"])"});
   const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_observers");
   fs::remove_all(dir);
   RunOptions options;
@@ -100,7 +101,7 @@ TEST_CASE("profiles, p_imp, R, snapshots and trajectories of a small blast", "[s
   const coldblast::theory::BlastParameters p{2, scene.n, scene.a, scene.E, 0.2238};
   CHECK(std::abs(R_measured / coldblast::theory::shock_radius(p, 400.0) - 1.0) < 0.1);
 
-  // Snapshots: every particle once, the four impurities flagged and moving.
+  // Snapshots (snapshot_particles = "all"): every particle once, the four impurities flagged and moving.
   const ResolvedScene resolved = resolve_scene(scene);
   for (const char* name : {"snapshot_100.csv", "snapshot_400.csv"}) {
     const auto snapshot = rows(dir / name);

@@ -34,7 +34,7 @@ def properties(comment):
 def test_extxyz_frames(tmp_path, d, E, mass):
     times = [5.0, 10.0, 20.0]
     run = coldblast.md.run(realizations=1, out=tmp_path, progress=False, d=d, E=E, t_max=20, n=0.15 if d == 2 else 0.1, box_margin=6,
-                           snapshot_times=times, observables=["R", "snapshots"],
+                           snapshot_times=times, snapshot_particles="all", observables=["R", "snapshots"],
                            impurities={"count": 3, "mass": mass})
     parsed = frames(tmp_path / "snapshots.extxyz")
     assert len(parsed) == len(times)
@@ -72,7 +72,8 @@ def test_extxyz_reads_in_ase(tmp_path, d):
     times = [5.0, 20.0]
     E = 4.0
     run = coldblast.md.run(realizations=1, out=tmp_path, progress=False, d=d, E=E, t_max=20, box_margin=6,
-                           snapshot_times=times, observables=["R", "snapshots"], impurities={"count": 2})
+                           snapshot_times=times, snapshot_particles="all", observables=["R", "snapshots"],
+                           impurities={"count": 2})
     frames = ase_io.read(str(tmp_path / "snapshots.extxyz"), index=":", format="extxyz")
     assert len(frames) == len(times)
     side = 2 * run.summary["region_radius"]

@@ -1,5 +1,5 @@
 """coldblast.reproduce against `coldblast reproduce --format json`: the same summary, number for number
-(only wall times and the output paths differ), the CLI's step lines as progress, the CLI's errors."""
+(only wall times, the output paths and the run ids differ), the CLI's step lines as progress, the CLI's errors."""
 import os
 
 import pytest
@@ -12,10 +12,10 @@ TINY_FLAGS = ["--realizations", 4, "--hydro-until", 50, "--tracer-trajectories",
 
 
 def without_timings_and_paths(value):
-    """The summary without wall times, rates and output paths (the only keys two runs may differ in)."""
+    """The summary without wall times, rates, output paths and run ids (the only keys two runs may differ in)."""
     if isinstance(value, dict):
         return {k: without_timings_and_paths(v) for k, v in value.items()
-                if "second" not in k and k not in ("out", "run_dir", "md_run")}
+                if "second" not in k and k not in ("out", "run_dir", "md_run", "run_id")}
     if isinstance(value, list):
         return [without_timings_and_paths(v) for v in value]
     return value

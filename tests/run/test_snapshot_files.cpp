@@ -205,13 +205,16 @@ TEST_CASE("a 3D snapshot by default holds the moving particles and the resting o
   CHECK(got == expected);
   const double share = static_cast<double>(subset.size()) / static_cast<double>(every.size());
   INFO("subset " << subset.size() << " of " << every.size() << " particles, reach " << reach);
-  CHECK(share < 0.1);
-  // The size estimate that the 100 MB warning uses is within a factor 2 of the files written.
+  // The region's radius is box_margin = 2 times R(t_max) of Eq. (1) (plus guard bands), the front
+  // ~R + 5 diameters: the subset is about (1/2)^3 of the gas, not all of it.
+  CHECK(share < 0.25);
+  // The size estimate that the 100 MB warning uses errs high while the blast forms (its radius is
+  // md::early_reach_bound's when that exceeds 1.2 R(t)), never below half the files written.
   const double bytes = static_cast<double>(fs::file_size(dir / "front" / "snapshot_40.csv") +
                                            fs::file_size(dir / "front" / "snapshots.extxyz"));
   const double estimate = snapshot_bytes_estimate(front.scene);
   CHECK(estimate / bytes > 0.5);
-  CHECK(estimate / bytes < 2.0);
+  CHECK(estimate / bytes < 4.0);
   CHECK(snapshot_size_warning(front.scene).empty());
   // A stride keeps every stride-th particle of the selection.
   std::vector<std::string> strided = keys;
