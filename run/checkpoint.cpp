@@ -142,8 +142,9 @@ void start_checkpoint(const fs::path& directory, const md::ResolvedScene& scene,
   j["shard"] = std::to_string(run.shard_index) + "/" + std::to_string(run.shard_count);
   j["scene"] = run.scene_toml;
   j["options"] = run.options;
-  common::write_file_atomic(directory / "scene.toml", scene_toml(scene.config));
+  // run.json first: scene.toml marks a checkpoint, so a kill between the two leaves none.
   common::write_file_atomic(directory / "run.json", j.dump(2) + "\n");
+  common::write_file_atomic(directory / "scene.toml", scene_toml(scene.config));
 }
 
 void save_checkpoint_block(const fs::path& directory, long long block, const BlockSums& sums, const NamedFiles& files,
@@ -241,8 +242,13 @@ Checkpoint load_checkpoint(const fs::path& directory, const md::ResolvedScene& s
 }
 
 void remove_checkpoint(const fs::path& out) {
+  // Renamed first (atomic), then deleted: a kill while deleting leaves either the whole checkpoint
+  // (resumed, it rewrites the same files) or none, never some blocks without run.json (its run id).
+  const fs::path doomed = out / "checkpoint.removed";
   std::error_code ignored;
-  fs::remove_all(checkpoint_folder(out), ignored);
+  fs::remove_all(doomed, ignored);  // a leftover of a run killed while deleting it
+  fs::rename(checkpoint_folder(out), doomed, ignored);
+  fs::remove_all(doomed, ignored);
 }
 
 }  // namespace coldblast::run

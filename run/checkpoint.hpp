@@ -70,7 +70,8 @@ std::string scene_difference(const std::string& there, const std::string& now);
 /// checkpoint, when its scene differs from `scene` (naming the first differing key) or when a file
 /// is malformed.
 Checkpoint load_checkpoint(const std::filesystem::path& directory, const md::ResolvedScene& scene);
-/// Removes OUT/checkpoint once the run's outputs and manifest are written.
+/// Removes OUT/checkpoint once the run's outputs and manifest are written: renamed to
+/// OUT/checkpoint.removed, then deleted, so that a kill meanwhile never leaves part of it.
 void remove_checkpoint(const std::filesystem::path& out);
 
 }  // namespace coldblast::run

@@ -188,8 +188,12 @@ void require_one_run(const fs::path& folder, const std::string& option) {
 void claim_output_folder(const fs::path& folder, const std::string& option, bool overwrite,
                          const std::string& resume_hint) {
   FolderRuns runs = inspect_folder(folder);
-  if (runs.checkpoint && checkpoint_description(folder).rfind("0 blocks", 0) == 0) {
-    fs::remove_all(folder / "checkpoint");  // a run that failed before its first block: nothing to keep
+  if (!runs.checkpoint || checkpoint_description(folder).rfind("0 blocks", 0) == 0) {
+    // Nothing to resume: a run that failed before its first block, or the remains of one killed
+    // while starting or deleting its checkpoint (no scene.toml), whose blocks must not be resumed.
+    std::error_code ignored;
+    fs::remove_all(folder / "checkpoint", ignored);
+    fs::remove_all(folder / "checkpoint.removed", ignored);
     runs.checkpoint = false;
   }
   if (runs.empty()) return;
