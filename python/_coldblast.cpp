@@ -477,9 +477,9 @@ struct TracerOptions {
 };
 
 py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
-                    std::optional<long long> seed, const TracerOptions& o, const std::string& out, bool overwrite,
-                    const py::object& progress_callback) {
-  if (!out.empty()) common::require_output_folder(out, "--out");
+                    std::optional<long long> seed, const TracerOptions& o, const std::string& out, bool resume,
+                    bool overwrite, const std::vector<std::string>& given, const py::object& progress_callback) {
+  if (!out.empty()) common::require_output_folder(out, resume ? "--resume" : "--out");
   run::SceneRequest scene;
   scene.file = scene_file;
   scene.text = scene_text;
@@ -500,6 +500,8 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   config.frames_per_decade = o.frames_per_decade;
   config.cells = o.cells;
   config.kernel = o.kernel;
+  // resume=OUT: the checkpoint's scene and options; an argument given again must agree with them.
+  if (resume) config = run::resume_tracer_config(out, config, given);
   Progress progress(progress_callback);
   const std::function<run::TracerResult()> work = [&] {
     run::TracerProgress report;
@@ -507,7 +509,7 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
       progress.set(static_cast<double>(done), static_cast<double>(total));
     };
     // As `tracer --out DIR`: every finished block is checkpointed in DIR/checkpoint.
-    const run::TracerRunFiles files{out, "--out", false, overwrite, "coldblast tracer --resume " + out};
+    const run::TracerRunFiles files{out, "--out", resume, overwrite, "coldblast.tracer.run(resume=\"" + out + "\")"};
     return run::run_tracer(config, report, files);
   };
   const run::TracerResult result = run_interruptible(work, progress);
@@ -658,13 +660,14 @@ PYBIND11_MODULE(_coldblast, m) {
          std::optional<long long> seed, const std::string& background, const std::string& transport,
          const std::string& start, long long trajectories, int threads, double T, std::optional<double> phi,
          double start_time, int frames_per_decade, int cells, const std::string& start_states,
-         const std::string& kernel, const std::string& out, bool overwrite, const py::object& progress) {
+         const std::string& kernel, const std::string& out, bool resume, bool overwrite,
+         const std::vector<std::string>& given, const py::object& progress) {
         const TracerOptions options{background, transport,         start, trajectories, threads, T, phi,
                                     start_time, frames_per_decade, cells, start_states, kernel};
-        return tracer_run(scene_file, scene_text, overrides, seed, options, out, overwrite, progress);
+        return tracer_run(scene_file, scene_text, overrides, seed, options, out, resume, overwrite, given, progress);
       },
       py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("seed"), py::arg("background"),
       py::arg("transport"), py::arg("start"), py::arg("trajectories"), py::arg("threads"), py::arg("T"), py::arg("phi"),
       py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("kernel"),
-      py::arg("out"), py::arg("overwrite"), py::arg("progress"));
+      py::arg("out"), py::arg("resume"), py::arg("overwrite"), py::arg("given"), py::arg("progress"));
 }

@@ -11,7 +11,7 @@ from .md import scene_arguments
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
         start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=256, progress=True,
-        start_states=None, kernel="auto", overwrite=False, **overrides):
+        start_states=None, kernel="auto", overwrite=False, resume=None, **overrides):
     """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
 
     Parameters
@@ -34,6 +34,10 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         ``overwrite``. None writes nothing.
     overwrite : bool
         Replace the files of another run in ``out`` (exactly those of its manifest.json).
+    resume : str, os.PathLike or None
+        Continue the stopped run in this output directory (``coldblast tracer --resume``): its
+        scene and options come from its checkpoint; an argument given again (other than its
+        default) must agree with them, else ValueError naming it and both values.
     transport : str
         "dilute" (chi = 1; the ideal-gas Navier-Stokes) or "enskog" (chi(n) at contact; with "ns" the dense
         Navier-Stokes at the scene's packing fraction, the prediction for its MD; not with "tvns").
@@ -70,8 +74,20 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         ``out``: the run directory or None.
 
     Raises ValueError with the CLI's exit-2 message for bad input (e.g. ``--background = plasma is
-    not one of ...``), KeyboardInterrupt on Ctrl-C (nothing is written).
+    not one of ...``), KeyboardInterrupt on Ctrl-C (with ``out`` every finished block stays in
+    out/checkpoint, and ``run(resume=out)`` continues it).
     """
+    if resume is not None:
+        if out is not None and os.path.normpath(os.fspath(out)) != os.path.normpath(os.fspath(resume)):
+            raise ValueError(f"resume = {os.fspath(resume)} must be the output directory (out = {os.fspath(out)})")
+        out = resume
+    # The arguments given other than their defaults: with resume, each must agree with the checkpoint.
+    given = [flag for flag, value, default in (
+        ("SCENE", scene, None), ("--set", overrides or None, None), ("--seed", seed, None),
+        ("--background", background, "ns"), ("--transport", transport, "dilute"), ("--start", start, "kick"),
+        ("--trajectories", trajectories, None), ("--T", T, 1.0), ("--phi", phi, None),
+        ("--start-time", start_time, None), ("--frames-per-decade", frames_per_decade, 40), ("--cells", cells, 256),
+        ("--start-states", start_states, None), ("--kernel", kernel, "auto")) if value != default]
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
     raw = _coldblast.tracer_run(scene_file, scene_text, sets, None if seed is None else integer(seed, "--seed"),
                                 text(background, "--background"), text(transport, "--transport"),
@@ -82,7 +98,7 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
                                 0.0 if start_time is None else number(start_time, "--start-time"),
                                 integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
                                 "" if start_states is None else os.fspath(start_states),
-                                text(kernel, "--kernel"), "" if out is None else os.fspath(out), bool(overwrite),
-                                _progress.callback(progress, "tracer", "blocks"))
+                                text(kernel, "--kernel"), "" if out is None else os.fspath(out), resume is not None,
+                                bool(overwrite), given, _progress.callback(progress, "tracer", "blocks"))
     return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],
                            out=None if out is None else os.fspath(out))

@@ -160,3 +160,54 @@ def test_ctrl_c_keeps_every_realization_and_the_resumed_run_equals_an_uninterrup
     assert "manifest.json" in names and "checkpoint" not in names
     for name in names:
         assert comparable(stopped / name) == comparable(reference / name), name
+
+
+TRACER_CHILD = textwrap.dedent(r"""
+    import sys, coldblast
+    def progress(done, total):
+        sys.stdout.write(f"progress {done} {total}\n")
+        sys.stdout.flush()
+    try:
+        coldblast.tracer.run(background="tvns", t_max=400, trajectories=40000, block_size=40, threads=1,
+                             out=sys.argv[1], progress=progress)
+    except KeyboardInterrupt:
+        print("\nKeyboardInterrupt", flush=True)
+        raise SystemExit(7)
+    print("finished", flush=True)
+""")
+
+# The tracer's files compared line by line; its summary.json key by key, apart from the cost fields.
+TRACER_FILES = ("observables.csv", "blocks.csv", "accumulators.csv", "block_totals.csv", "p_imp.csv", "moments.csv",
+                "prefactors.csv", "tracer_blocks.csv", "moment_sums.csv")
+
+
+def test_ctrl_c_in_the_tracer_keeps_finished_blocks_and_resume_equals_an_uninterrupted_run(tmp_path):
+    """Ctrl-C in coldblast.tracer.run keeps every finished block in out/checkpoint; tracer.run(resume=out)
+    restores the scene and options from it (an option given again that differs is a ValueError naming
+    both values) and ends with the files of an uninterrupted run."""
+    import json
+
+    import pytest
+
+    import coldblast
+    stopped = tmp_path / "stopped"
+    lines, code, _ = interrupt_child(TRACER_CHILD, stopped)
+    assert "KeyboardInterrupt" in lines and code == 7, lines
+    saved = list((stopped / "checkpoint").glob("block_*.txt"))
+    assert 0 < len(saved) < 1000 and not (stopped / "manifest.json").exists(), len(saved)
+    counts = [int(next(l.split()[1] for l in block.read_text().splitlines() if l.startswith("count ")))
+              for block in saved]
+    with pytest.raises(ValueError, match=r"--T = 2 contradicts the checkpoint in .*, which has --T = 1;"):
+        coldblast.tracer.run(T=2.0, resume=stopped, progress=False)
+    resumed = coldblast.tracer.run(resume=stopped, progress=False)
+    assert resumed.summary["resumed_realizations"] == sum(counts)
+    reference = tmp_path / "reference"
+    coldblast.tracer.run(background="tvns", t_max=400, trajectories=40000, block_size=40, out=reference,
+                         progress=False)
+    assert sorted(p.name for p in reference.iterdir()) == sorted(p.name for p in stopped.iterdir())
+    for name in TRACER_FILES:
+        assert comparable(stopped / name) == comparable(reference / name), name
+    a, b = (json.loads((d / "summary.json").read_text()) for d in (stopped, reference))
+    for key in a:
+        if key not in RUN_FIELDS and "second" not in key:  # the rates count one process's work
+            assert a[key] == b[key], key
