@@ -206,7 +206,7 @@ void claim_output_folder(const fs::path& folder, const std::string& option, bool
                                   checkpoint_description(folder) + "): continue it with `" + resume_hint +
                                   "`, or start anew with --overwrite (which deletes the saved blocks)");
     const std::string what = runs.manifest ? "the files of run " + runs.manifest->run_id + " (" + runs.manifest->kind +
-                                                 ": " + listed(names) + ")"
+                                                 (names.empty() ? "" : ": " + listed(names)) + ")"
                                            : "run files of an earlier run (" + listed(names) + ")";
     throw std::invalid_argument(named + " holds " + what + ": choose another " + option +
                                 ", or give --overwrite to replace them");

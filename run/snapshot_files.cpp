@@ -95,8 +95,8 @@ std::string snapshot_size_warning(const md::ResolvedScene& scene) {
              bytes / (scene.snapshot_times.size() * c.snapshot_realizations.size()) / (c.d == 2 ? 110.0 : 170.0), 2)
       << " particles, in snapshot_<t>.csv and snapshots.extxyz"
       << (c.snapshot_particles == "all" ? ": snapshot_particles = \"all\" writes every particle of the region" : "")
-      << "); to write less: snapshot_particles = \"front\", a snapshot_stride, fewer snapshot times or "
-         "realizations, or leave \"snapshots\" out of observables";
+      << "); to write less: " << (c.snapshot_particles == "all" ? "snapshot_particles = \"front\", " : "")
+      << "a snapshot_stride, fewer snapshot times or realizations, or leave \"snapshots\" out of observables";
   return out.str();
 }
 
