@@ -372,10 +372,10 @@ py::dict estimate_dict(const run::BlastResult& result) {
   return estimates;
 }
 
-py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
-                std::optional<long long> realizations, std::optional<long long> seed, int threads,
-                const std::string& out, bool resume, bool overwrite, const py::object& progress_callback) {
-  if (!out.empty()) common::require_output_folder(out, resume ? "--resume" : "--out");
+/// md run's and md states' scene and ensemble arguments (run/md_run.hpp).
+run::MdRunRequest md_request(const std::string& scene_file, const std::string& scene_text,
+                             const std::vector<std::string>& overrides, std::optional<long long> realizations,
+                             std::optional<long long> seed, int threads) {
   run::MdRunRequest request;
   request.scene_file = scene_file;
   request.scene_text = scene_text;
@@ -383,6 +383,14 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
   request.realizations = realizations;
   request.seed = seed;
   request.threads = threads;
+  return request;
+}
+
+py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
+                std::optional<long long> realizations, std::optional<long long> seed, int threads,
+                const std::string& out, bool resume, bool overwrite, const py::object& progress_callback) {
+  if (!out.empty()) common::require_output_folder(out, resume ? "--resume" : "--out");
+  run::MdRunRequest request = md_request(scene_file, scene_text, overrides, realizations, seed, threads);
   // As `md run --out DIR`: every finished realization is checkpointed in DIR/checkpoint until the
   // outputs are written (an interrupted run keeps them; resume=DIR or `coldblast md run --resume
   // DIR` continues).
@@ -424,14 +432,8 @@ py::dict md_states(const std::string& scene_file, const std::string& scene_text,
     common::require_output_folder(out, "--out");
     run::claim_output_folder(out, "--out", overwrite, "coldblast.md.run(resume=\"" + out + "\")");
   }
-  run::MdRunRequest request;
-  request.scene_file = scene_file;
-  request.scene_text = scene_text;
-  request.overrides = overrides;
-  request.realizations = realizations;
-  request.seed = seed;
-  request.threads = threads;
-  const run::MdRunPlan plan = run::plan_md_run(request);
+  const run::MdRunPlan plan =
+      run::plan_md_run(md_request(scene_file, scene_text, overrides, realizations, seed, threads));
   const md::ResolvedScene scene = run::resolve_blast_scene(plan.config);
   Progress progress(progress_callback);
   const std::function<std::vector<md::ImpurityState>()> work = [&] {

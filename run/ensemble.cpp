@@ -149,6 +149,15 @@ BlockCallbacks checkpoint_callbacks(const RunOptions& options, long long block) 
   return callbacks;
 }
 
+BlockProgress run_planned_block(const EnsemblePlan& plan, const RunOptions& options, long long block,
+                                const std::atomic<bool>& stop, std::function<void()> realization_done) {
+  BlockCallbacks callbacks = checkpoint_callbacks(options, block);
+  callbacks.realization_done = std::move(realization_done);
+  BlockProgress start;
+  if (plan.partial.count(block)) start.sums = plan.partial.at(block);
+  return run_block(plan.result.scene, plan.result.run_id, block, std::move(start), &stop, callbacks);
+}
+
 BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options) {
   common::require_integer_in_range("threads", options.threads, 1, 1024);
   common::require_integer_in_range("shard_count", options.shard_count, 1, 1000000);
@@ -156,7 +165,6 @@ BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options) 
   const auto started = std::chrono::steady_clock::now();
   EnsemblePlan plan = plan_ensemble(config, options);
   BlastResult& result = plan.result;
-  const md::ResolvedScene& scene = result.scene;
   const std::vector<long long>& owned = plan.pending;  // blocks still to run
   const long long total = plan.pending_realizations;
 
@@ -165,15 +173,11 @@ BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options) 
   long long done = 0;
   run_slots_in_parallel(owned.size(), options.threads, [&](std::size_t slot, const std::atomic<bool>& stop) {
     const long long b = owned[slot];
-    BlockCallbacks callbacks = checkpoint_callbacks(options, b);
-    callbacks.realization_done = [&] {
+    blocks[slot] = run_planned_block(plan, options, b, stop, [&] {
       std::lock_guard<std::mutex> lock(mutex);
       ++done;
       if (options.progress) options.progress(done, total);
-    };
-    BlockProgress start;
-    if (plan.partial.count(b)) start.sums = plan.partial.at(b);
-    blocks[slot] = run_block(scene, result.run_id, b, std::move(start), &stop, callbacks);
+    });
     if (stop || blocks[slot].sums.count < md::block_realizations(config, b)) return;
     if (!options.out.empty()) {
       BlockProgress& finished = blocks[slot];

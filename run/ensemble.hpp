@@ -102,6 +102,11 @@ BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_i
 /// The callbacks of block `block` of a run with `options`: its progress saved to OUT/checkpoint
 /// (none without options.out) and options.realization_time; realization_done is the caller's.
 BlockCallbacks checkpoint_callbacks(const RunOptions& options, long long block);
+/// Runs pending block `block` of `plan` (from its realizations in the checkpoint, if any) with
+/// checkpoint_callbacks, calling `realization_done` after each realization: the work of a thread
+/// (run_blast) or of MPI rank 0 (run_blast_mpi).
+BlockProgress run_planned_block(const EnsemblePlan& plan, const RunOptions& options, long long block,
+                                const std::atomic<bool>& stop, std::function<void()> realization_done);
 /// Parses "i/n" (0 <= i < n); throws std::invalid_argument naming --shard otherwise.
 std::pair<int, int> parse_shard(const std::string& text);
 /// Adds the single realizations' files of `more` to `files`, keeping name order, one file per name.

@@ -324,21 +324,16 @@ BlastResult run_blast_mpi(const md::BlastConfig& config, const RunOptions& optio
   BlastResult& result = plan.result;
   broadcast_from_rank0(result.run_id);  // the realizations' files of every rank carry it
   result.ranks = ranks;
-  const md::ResolvedScene& scene = result.scene;
   const long long total = plan.pending_realizations;
   std::mutex mutex;  // guards done, result.blocks, result.realization_files
   long long done = 0;
   work.pending = plan.pending;
   work.run = [&](long long b, const std::atomic<bool>& stop) {
-    BlockCallbacks callbacks = checkpoint_callbacks(options, b);
-    callbacks.realization_done = [&] {
+    const BlockProgress block = run_planned_block(plan, options, b, stop, [&] {
       std::lock_guard<std::mutex> lock(mutex);
       ++done;
       if (options.progress) options.progress(done, total);
-    };
-    BlockProgress start;
-    if (plan.partial.count(b)) start.sums = plan.partial.at(b);
-    const BlockProgress block = run_block(scene, result.run_id, b, std::move(start), &stop, callbacks);
+    });
     ByteWriter w;
     put_block_sums(w, block.sums, block.files);
     return std::move(w.bytes);
