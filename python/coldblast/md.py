@@ -7,6 +7,7 @@ import numpy as np
 
 from . import _coldblast
 from . import _progress
+from ._signals import sigterm_stops
 from ._arguments import integer as _integer
 from ._arguments import number as _number
 
@@ -126,11 +127,12 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
             raise ValueError(f"resume = {os.fspath(resume)} must be the output directory (out = {os.fspath(out)})")
         out = resume
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
-    raw = _coldblast.md_run(scene_file, scene_text, sets,
-                            None if realizations is None else _integer(realizations, "--realizations"),
-                            None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
-                            "" if out is None else os.fspath(out), resume is not None, bool(overwrite),
-                            _progress.callback(progress, "md run", "realizations"))
+    with sigterm_stops():
+        raw = _coldblast.md_run(scene_file, scene_text, sets,
+                                None if realizations is None else _integer(realizations, "--realizations"),
+                                None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
+                                "" if out is None else os.fspath(out), resume is not None, bool(overwrite),
+                                _progress.callback(progress, "md run", "realizations"))
     return SimpleNamespace(estimates=raw["estimates"], summary=raw["summary"],
                            realization_files=raw["realization_files"], realization0_files=raw["realization0_files"],
                            out=None if out is None else os.fspath(out))
@@ -156,9 +158,10 @@ def states(time, scene=None, realizations=None, threads=1, seed=None, out=None, 
     KeyboardInterrupt on Ctrl-C (nothing is written).
     """
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
-    raw = _coldblast.md_states(scene_file, scene_text, sets,
-                               None if realizations is None else _integer(realizations, "--realizations"),
-                               None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
-                               _number(time, "--time"), "" if out is None else os.fspath(out), bool(overwrite),
-                               _progress.callback(progress, "md states", "realizations"))
+    with sigterm_stops():
+        raw = _coldblast.md_states(scene_file, scene_text, sets,
+                                   None if realizations is None else _integer(realizations, "--realizations"),
+                                   None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
+                                   _number(time, "--time"), "" if out is None else os.fspath(out), bool(overwrite),
+                                   _progress.callback(progress, "md states", "realizations"))
     return SimpleNamespace(out=None if out is None else os.fspath(out), **raw)

@@ -5,6 +5,7 @@ from types import SimpleNamespace
 
 from . import _coldblast
 from . import _progress
+from ._signals import sigterm_stops
 from ._arguments import integer, number, text
 from .md import scene_arguments
 
@@ -89,16 +90,17 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         ("--start-time", start_time, None), ("--frames-per-decade", frames_per_decade, 40), ("--cells", cells, 256),
         ("--start-states", start_states, None), ("--kernel", kernel, "auto")) if value != default]
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
-    raw = _coldblast.tracer_run(scene_file, scene_text, sets, None if seed is None else integer(seed, "--seed"),
-                                text(background, "--background"), text(transport, "--transport"),
-                                text(start, "--start"),
-                                0 if trajectories is None else integer(trajectories, "--trajectories"),
-                                integer(threads, "--threads"), number(T, "--T"),
-                                None if phi is None else number(phi, "--phi"),
-                                0.0 if start_time is None else number(start_time, "--start-time"),
-                                integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
-                                "" if start_states is None else os.fspath(start_states),
-                                text(kernel, "--kernel"), "" if out is None else os.fspath(out), resume is not None,
-                                bool(overwrite), given, _progress.callback(progress, "tracer", "blocks"))
+    with sigterm_stops():
+        raw = _coldblast.tracer_run(scene_file, scene_text, sets, None if seed is None else integer(seed, "--seed"),
+                                    text(background, "--background"), text(transport, "--transport"),
+                                    text(start, "--start"),
+                                    0 if trajectories is None else integer(trajectories, "--trajectories"),
+                                    integer(threads, "--threads"), number(T, "--T"),
+                                    None if phi is None else number(phi, "--phi"),
+                                    0.0 if start_time is None else number(start_time, "--start-time"),
+                                    integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
+                                    "" if start_states is None else os.fspath(start_states),
+                                    text(kernel, "--kernel"), "" if out is None else os.fspath(out), resume is not None,
+                                    bool(overwrite), given, _progress.callback(progress, "tracer", "blocks"))
     return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],
                            out=None if out is None else os.fspath(out))

@@ -29,9 +29,9 @@ CHILD = textwrap.dedent(r"""
 LATENCY_BOUND_SECONDS = 8.0
 
 
-def interrupt_child(script, *args):
-    """Runs `script` in a child Python, sends SIGINT 0.3 s after its first progress line, and returns
-    (the child's stdout lines, its exit code, seconds from SIGINT to its "KeyboardInterrupt" line)."""
+def interrupt_child(script, *args, signum=signal.SIGINT):
+    """Runs `script` in a child Python, sends `signum` 0.3 s after its first progress line, and returns
+    (the child's stdout lines, its exit code, seconds from the signal to its "KeyboardInterrupt" line)."""
     child = subprocess.Popen([sys.executable, "-c", script, *map(str, args)], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=dict(os.environ))
     latency, lines = None, []
@@ -40,7 +40,7 @@ def interrupt_child(script, *args):
         assert line.startswith("progress"), line + child.stderr.read()
         time.sleep(0.3)
         sent = time.monotonic()
-        child.send_signal(signal.SIGINT)
+        child.send_signal(signum)
         for line in child.stdout:
             lines.append(line.strip())
             if line.startswith("KeyboardInterrupt"):
@@ -211,3 +211,26 @@ def test_ctrl_c_in_the_tracer_keeps_finished_blocks_and_resume_equals_an_uninter
     for key in a:
         if key not in RUN_FIELDS and "second" not in key:  # the rates count one process's work
             assert a[key] == b[key], key
+
+
+TERM_CHILD = textwrap.dedent(r"""
+    import sys, coldblast
+    def progress(done, total):
+        sys.stdout.write(f"progress {done} {total}\n")
+        sys.stdout.flush()
+    coldblast.md.run(realizations=200, t_max=200, block_size=50, threads=1, out=sys.argv[1], progress=progress)
+    print("finished", flush=True)
+""")
+
+
+def test_sigterm_stops_md_run_with_exit_143_and_keeps_every_realization(tmp_path):
+    """SIGTERM (a batch system's time limit) during md.run stops it like Ctrl-C: exit 143, as the
+    CLI's, and the realizations of the block in progress stay in out/checkpoint."""
+    stopped = tmp_path / "stopped"
+    lines, code, _ = interrupt_child(TERM_CHILD, stopped, signum=signal.SIGTERM)
+    assert code == 143 and "finished" not in lines, (code, lines)
+    seen = max(int(float(line.split()[1])) for line in lines if line.startswith("progress"))
+    counts = [int(next(l.split()[1] for l in block.read_text().splitlines() if l.startswith("count ")))
+              for block in (stopped / "checkpoint").glob("block_*.txt")]
+    assert 0 < seen <= sum(counts) < 200, (seen, counts)
+    assert (stopped / "checkpoint" / "run.json").exists() and not (stopped / "manifest.json").exists()
