@@ -1,6 +1,6 @@
-// coldblast hydro core|euler: the radial Navier–Stokes blast (hydro/navier_stokes.hpp, paper Sec. III,
-// Eqs. (4), (11)-(20)): running exponents of H, n0, T0 beside the theory's rationals, or the Euler
-// limit (κ = μ = 0) against the exact TvNS solution (Eq. (1) [R-shock]).
+// coldblast hydro core|euler: the radial Navier–Stokes blast of paper Sec. III, Eqs. (13)-(16)
+// (hydro/navier_stokes.hpp; docs/hydro.md): running exponents of H, n0, T0 beside the theory's
+// rationals, or the Euler limit (κ = μ = 0) against the exact TvNS solution (hydro/euler_check.hpp).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -236,8 +236,10 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
   command.add_option("--until", options.until, until_help);
   command.add_option(
       "--cells", options.cells,
-      "Finite-volume cells, [16, 100000] (0 or none: 256 for core; 512 for euler, where A_d meets 0.1 %); "
-      "the time grows as cells^2 (1000 cells: 7 s to R/lambda = 20; 4000: 2 min)");
+      "Finite-volume cells, [16, 100000] (0 or none: " + std::to_string(hydro::default_core_cells) + " for core; " +
+          std::to_string(hydro::default_euler_cells) +
+          " for euler, where A_d meets 0.1 %); the time grows as cells^2 (1000 cells: 7 s to R/lambda = 20; 4000: 2 "
+          "min)");
   command.add_option("--eos", options.eos, "Equation of state: ideal, henderson (d = 2) or carnahan-starling (d = 3)")
       ->capture_default_str();
   command.add_option("--phi", options.phi,

@@ -9,9 +9,6 @@
 
 namespace coldblast::compare {
 
-HydroReference::HydroReference(int d, double until_R_over_lambda, int cells)
-    : HydroReference(hydro::run_hydro_core(d, until_R_over_lambda, cells)) {}
-
 HydroReference::HydroReference(hydro::NavierStokesResult result) : result_(std::move(result)) {
   if (result_.samples.size() < 3) throw std::invalid_argument("hydro reference: fewer than 3 samples");
   build_collision_exponents();

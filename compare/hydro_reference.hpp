@@ -16,8 +16,6 @@ constexpr double collision_anchor_R_over_lambda = 2.5;
 
 class HydroReference {
  public:
-  /// Runs the conduction-only core solver for dimension d up to R/λ = until (>= 10).
-  HydroReference(int d, double until_R_over_lambda, int cells = 256);
   /// Wraps an existing Navier–Stokes result (its samples must span the R/λ asked for).
   explicit HydroReference(hydro::NavierStokesResult result);
 

@@ -51,8 +51,8 @@ struct CompareConfig {
   /// Compare as of this time: recorded times > until are ignored (0: use every recorded time). It
   /// must lie in [second recorded time, last recorded time] of the run.
   double until = 0.0;
-  std::vector<std::string> observables;  ///< empty: every Table 1 observable present in the run
-  int hydro_cells = 256;                 ///< Navier–Stokes cells for Reference::hydro, [16, 100000]
+  std::vector<std::string> observables;         ///< empty: every Table 1 observable present in the run
+  int hydro_cells = hydro::default_core_cells;  ///< Navier–Stokes cells for Reference::hydro, [16, 100000]
   /// The NS model for Reference::hydro (unset: the dense model at the run's φ); only with hydro.
   HydroModelOptions hydro_model;
   /// An MD run of the same scene for a tracer run_dir (--md-run; empty: none): the tracer against

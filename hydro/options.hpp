@@ -56,10 +56,6 @@ HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::st
 /// Default end of the run: R/lambda = 1e4 (core), 500 (Euler).
 inline constexpr double default_core_until = 1e4;
 inline constexpr double default_euler_until = 500;
-/// Default cells: 256 (core); 512 (Euler), where the check of A_d against the exact TvNS solution
-/// meets 0.1 % in d = 2 and 3 (-6.9e-4, -9.4e-4; first order in the cell size: docs/hydro.md).
-inline constexpr int default_core_cells = 256;
-inline constexpr int default_euler_cells = 512;
 /// The validated NavierStokesConfig of core (euler = false) or Euler (kappa = mu = 0) mode, with the
 /// keys of `file` replacing the options' eos, phi and transport (the caller drops the keys whose flag
 /// was given). Throws std::invalid_argument naming the flag (--d, --cells, --until, --eos, --phi,

@@ -126,6 +126,28 @@ TvnsAmplitude tvns_amplitude(const TvnsConfig& config, TvnsMethod method) {
   return out;
 }
 
+namespace {
+
+/// Exponents of ρ and T in x = r/R at the centre for each case of the TvNS solution.
+struct CentreExponents {
+  double density, temperature;
+};
+CentreExponents centre_exponents(TvnsCase tvns_case, int d, double gamma) {
+  // Eqs. (18a,b) [r-est, T-est]: rho ∝ x^(d/(gamma-1)), T ∝ x^(-d/(gamma-1)); with gamma = 1 + 2/d the
+  // exponent is d^2/2 as in the paper. Hard particles are dilute at the centre, so the same holds there.
+  switch (tvns_case) {
+    case TvnsCase::standard:
+      return {d / (gamma - 1.0), -d / (gamma - 1.0)};
+    case TvnsCase::singular:  // G = 4x/3, T = 3x^2/16
+      return {1.0, 2.0};
+    case TvnsCase::vacuum:  // G ∝ x4^alpha5, T ∝ x4, x4 ∝ (x - x_c) at the cavity edge
+      return {2.0 / (gamma - 2.0), 1.0};
+  }
+  throw std::logic_error("centre_exponents: unknown TvnsCase");
+}
+
+}  // namespace
+
 TvnsSolution::TvnsSolution(const TvnsConfig& config) : config_(config) {
   config_.validate();
   detail::disable_gsl_abort();
@@ -170,22 +192,9 @@ TvnsSolution::TvnsSolution(const TvnsConfig& config) : config_(config) {
   if (!(std::isfinite(A_) && A_ > 0.0 && std::isfinite(A_error_)))
     throw std::runtime_error("TvNS: amplitude is not finite and positive for d = " + std::to_string(config_.d) +
                              ", gamma = " + common::format_number(gamma_));
-  // Eqs. (18a,b) [r-est, T-est]: rho ∝ x^(d/(gamma-1)), T ∝ x^(-d/(gamma-1)); with gamma = 1 + 2/d the
-  // exponent is d^2/2 as in the paper. Hard particles are dilute at the centre, so the same holds there.
-  switch (case_) {
-    case TvnsCase::standard:
-      density_exponent_ = config_.d / (gamma_ - 1.0);
-      temperature_exponent_ = -density_exponent_;
-      break;
-    case TvnsCase::singular:  // G = 4x/3, T = 3x^2/16
-      density_exponent_ = 1.0;
-      temperature_exponent_ = 2.0;
-      break;
-    case TvnsCase::vacuum:  // G ∝ x4^alpha5, T ∝ x4, x4 ∝ (x - x_c) at the cavity edge
-      density_exponent_ = 2.0 / (gamma_ - 2.0);
-      temperature_exponent_ = 1.0;
-      break;
-  }
+  const CentreExponents centre = centre_exponents(case_, config_.d, gamma_);
+  density_exponent_ = centre.density;
+  temperature_exponent_ = centre.temperature;
   impl_ = std::move(impl);
 }
 

@@ -85,7 +85,7 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
 std::unique_ptr<GridBackground> make_tvns_background(const md::BlastConfig& scene, const ContactModel& contact,
                                                      std::string* description) {
   const hydro::TvnsSolution tvns = hydro::solve_tvns(hydro::TvnsConfig{scene.d});
-  const int points = 8 * 256;
+  const int points = 8 * hydro::default_core_cells;
   std::vector<double> x(points);
   for (int i = 0; i < points; ++i) x[i] = (i + 0.5) / points;
   // Frame at t = 1: R = (E/(A n))^(1/(d+2)), Ṙ = 2R/(d+2); n = n∞ ρ/ρ0, u = Ṙ V, T = Ṙ² θ.

@@ -21,8 +21,8 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
                                                               std::string* description = nullptr,
                                                               const std::function<void(double)>& progress = {});
 
-/// Exact ideal-gas TvNS blast (γ = 1 + 2/d) sampled at 8 × 256 points of r/R in (0, 1), continued
-/// self-similarly to any time.
+/// Exact ideal-gas TvNS blast (γ = 1 + 2/d) sampled at 8 × hydro::default_core_cells points of r/R in
+/// (0, 1), continued self-similarly to any time.
 std::unique_ptr<GridBackground> make_tvns_background(const md::BlastConfig& scene, const ContactModel& contact,
                                                      std::string* description = nullptr);
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "hydro/navier_stokes_config.hpp"
 #include "kinetic/background.hpp"
 #include "md/blast_config.hpp"
 #include "md/impurity_state.hpp"
@@ -31,8 +32,8 @@ struct TracerConfig {
   std::string start_states;  ///< start = "states": the impurity_states.csv they came from (recorded, and in messages)
   /// start = "states": the states read from start_states (run::read_impurity_states).
   std::shared_ptr<const md::ImpurityStates> states;
-  int frames_per_decade = 40;  ///< ns: stored background frames per decade of R/λ, [4, 400]
-  int cells = 256;             ///< ns: finite-volume cells, [64, 4096]; tvns: x samples = 8 × cells
+  int frames_per_decade = 40;             ///< ns: stored background frames per decade of R/λ, [4, 400]
+  int cells = hydro::default_core_cells;  ///< ns: finite-volume cells, [64, 4096]; tvns: x samples = 8 × cells
   /// "auto" (the widest vector kernel of kinetic/batch.hpp this CPU runs where the background is a
   /// grid, else the scalar loop), "avx512", "avx2", "sse4", "neon" or "scalar" (resolve_kernel). The
   /// kernels sample the same process with different deviates: the same laws, other sample paths (a

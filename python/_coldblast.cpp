@@ -473,7 +473,7 @@ struct TracerOptions {
   double T = 1.0;
   std::optional<double> phi;
   double start_time = 0.0;
-  int frames_per_decade = 40, cells = 256;
+  int frames_per_decade = 40, cells = hydro::default_core_cells;
   std::string start_states;
   std::string kernel = "auto";
 };
@@ -641,6 +641,8 @@ PYBIND11_MODULE(_coldblast, m) {
   m.def("hydro_run", &hydro_run, py::arg("euler"), py::arg("d"), py::arg("until"), py::arg("cells"),
         py::arg("viscosity"), py::arg("kappa_prefactor"), py::arg("eos"), py::arg("phi"), py::arg("transport"),
         py::arg("progress"));
+  m.attr("default_core_cells") = hydro::default_core_cells;
+  m.attr("default_euler_cells") = hydro::default_euler_cells;
   m.def("md_run", &md_run, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("realizations"),
         py::arg("seed"), py::arg("threads"), py::arg("out"), py::arg("resume"), py::arg("overwrite"),
         py::arg("progress"));

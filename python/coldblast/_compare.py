@@ -7,8 +7,8 @@ from . import _progress
 
 
 def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades=0.5, until=None,
-            observables=None, hydro_cells=256, hydro_eos=None, hydro_phi=None, hydro_transport=None, md_run=None,
-            out=None, figures=True):
+            observables=None, hydro_cells=_coldblast.default_core_cells, hydro_eos=None, hydro_phi=None,
+            hydro_transport=None, md_run=None, out=None, figures=True):
     """Compare a run directory's running exponents with a reference (the same call as ``coldblast compare``).
 
     Parameters

@@ -1,4 +1,4 @@
-"""The radial Navier-Stokes blast (``coldblast hydro core|euler``; paper Sec. III, Eqs. (4), (11)-(20))."""
+"""The radial Navier-Stokes blast (``coldblast hydro core|euler``; paper Sec. III, Eqs. (13)-(16))."""
 from types import SimpleNamespace
 
 from . import _coldblast
@@ -28,7 +28,8 @@ def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="id
     until : float
         R/lambda at the end, (2, 1e12] (lambda = mean free path, Eq. (5)); seconds for 1e4.
     cells : int
-        Finite-volume cells, [16, 100000]; 0 = the mode's default (256 here, 512 for :func:`euler`).
+        Finite-volume cells, [16, 100000]; 0 = the mode's default (``_coldblast.default_core_cells`` here,
+        ``default_euler_cells`` for :func:`euler`).
     viscosity : bool
         Shear viscosity mu = c_mu n lambda sqrt(T) on or off.
     kappa_prefactor : float or None

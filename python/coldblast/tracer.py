@@ -11,8 +11,8 @@ from .md import scene_arguments
 
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
-        start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=256, progress=True,
-        start_states=None, kernel="auto", overwrite=False, resume=None, **overrides):
+        start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=_coldblast.default_core_cells,
+        progress=True, start_states=None, kernel="auto", overwrite=False, resume=None, **overrides):
     """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
 
     Parameters
