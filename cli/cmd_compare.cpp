@@ -132,6 +132,10 @@ compare::HydroModelOptions hydro_model(const CompareOptions& options) {
     // The [hydro] keys first; a flag given as well replaces its key (and its name in messages).
     const hydro::HydroModelKeys keys = hydro::read_hydro_model_keys(
         common::read_text(options.hydro_config, "--hydro-config", common::text_size_limit), options.hydro_config);
+    if (keys.start || keys.r0)
+      throw std::invalid_argument("hydro.start and hydro.r0 in " + options.hydro_config +
+                                  " are not used by compare --against hydro, whose Navier-Stokes solve has the "
+                                  "self-similar start (docs/hydro.md, \"Starts\")");
     if (keys.eos) model.eos = hydro::eos_from_string(*keys.eos, model.eos_name = "hydro.eos");
     if (keys.phi) model.phi = *keys.phi, model.phi_name = "hydro.phi";
     if (keys.transport)

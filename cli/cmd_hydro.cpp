@@ -30,7 +30,9 @@ struct HydroOptions {
   double phi = 0;  // 0: the library's default for a hard-particle EOS
   std::string transport = "dilute";
   double outer_margin = 0;  // 0: the solver's default
-  std::string config_file;  // --config FILE: its [hydro] table's eos, phi, transport (flags win)
+  std::string start = "self-similar";
+  double r0 = 0;
+  std::string config_file;  // --config FILE: its [hydro] table's eos, phi, transport, start, r0 (flags win)
   hydro::HydroModelKeys file_keys;
   std::string out;
   Format format = Format::table;
@@ -54,6 +56,8 @@ hydro::NavierStokesConfig make_config(const HydroOptions& options, bool euler) {
   o.phi = options.phi;
   o.transport = options.transport;
   o.outer_margin = options.outer_margin;
+  o.start = options.start;
+  o.r0 = options.r0;
   hydro::NavierStokesConfig config = hydro::navier_stokes_config(o, euler, options.file_keys);
   if (!euler && options.viscosity != "on" && options.viscosity != "off")
     throw std::invalid_argument("--viscosity = " + options.viscosity + " is not one of on, off");
@@ -85,7 +89,9 @@ std::string config_header(const hydro::NavierStokesResult& r) {
        {"viscosity_prefactor", number(r.viscosity_prefactor)},
        {"until_R_over_lambda", number(c.until_R_over_lambda)},
        {"cells", std::to_string(c.numerics.cells)},
-       {"start_R_over_lambda", number(c.numerics.start_R_over_lambda)},
+       {"start", hydro::to_string(c.physics.start)},
+       {"r0_over_lambda", number(c.physics.r0_over_lambda)},
+       {"start_R_over_lambda", number(*c.numerics.start_R_over_lambda)},
        {"initial_width", number(c.numerics.initial_width)},
        {"temperature_floor", number(c.numerics.temperature_floor)},
        {"relative_tolerance", number(c.numerics.relative_tolerance)},
@@ -98,16 +104,25 @@ std::string config_header(const hydro::NavierStokesResult& r) {
       "exponents are d ln X/d ln t (and d ln X/d ln(R/lambda) where marked _in_R)");
 }
 
-/// The physical model actually solved (phi resolved by the library).
+/// The physical model actually solved (phi resolved by the library); the start only when it is a hot spot.
 void print_model(const hydro::NavierStokesResult& r) {
   const hydro::NavierStokesPhysics& p = r.config.physics;
-  std::printf("  model: eos = %s, phi = %.6g, transport = %s\n", hydro::to_string(p.eos).c_str(), p.phi,
+  std::printf("  model: eos = %s, phi = %.6g, transport = %s", hydro::to_string(p.eos).c_str(), p.phi,
               hydro::to_string(p.transport).c_str());
+  if (p.start == hydro::Start::hotspot)
+    std::printf("; start = hotspot, r0/lambda = %.6g (grid from R_ref/lambda = %.4g; t counts from the deposition)",
+                p.r0_over_lambda, *r.config.numerics.start_R_over_lambda);
+  std::printf("\n");
 }
 
 common::Json model_json(const hydro::NavierStokesResult& r) {
   const hydro::NavierStokesPhysics& p = r.config.physics;
-  return {{"eos", hydro::to_string(p.eos)}, {"phi", p.phi}, {"transport", hydro::to_string(p.transport)}};
+  common::Json model = {{"eos", hydro::to_string(p.eos)}, {"phi", p.phi}, {"transport", hydro::to_string(p.transport)}};
+  if (p.start == hydro::Start::hotspot) {
+    model["start"] = hydro::to_string(p.start);
+    model["r0_over_lambda"] = p.r0_over_lambda;
+  }
+  return model;
 }
 
 void write_files(const hydro::NavierStokesResult& r, const std::string& directory) {
@@ -212,7 +227,7 @@ void run_euler(const HydroOptions& options) {
          {"A_relative_error", c.A_relative_error},
          {"profile_L1_error", {{"density", c.L1_density}, {"velocity", c.L1_velocity}, {"pressure", c.L1_pressure}}},
          {"R_over_initial_width",
-          config.until_R_over_lambda / (config.numerics.start_R_over_lambda * config.numerics.initial_width)},
+          config.until_R_over_lambda / (*r.config.numerics.start_R_over_lambda * config.numerics.initial_width)},
          {"cells", config.numerics.cells},
          {"energy_error", r.max_energy_error},
          {"energy_drift_before_projection", r.energy_projected},
@@ -221,7 +236,7 @@ void run_euler(const HydroOptions& options) {
   }
   std::printf("Euler (kappa = mu = 0), d = %d, %d cells, R/(initial width) = %.4g\n", config.physics.d,
               config.numerics.cells,
-              config.until_R_over_lambda / (config.numerics.start_R_over_lambda * config.numerics.initial_width));
+              config.until_R_over_lambda / (*r.config.numerics.start_R_over_lambda * config.numerics.initial_width));
   print_model(r);
   std::printf("  A measured %.7f  exact %.7f  relative error %+.2e\n", c.A_measured, c.A_exact, c.A_relative_error);
   std::printf("  profile L1 errors: density %.2e  velocity %.2e  pressure %.2e\n", c.L1_density, c.L1_velocity,
@@ -247,9 +262,10 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
   command.add_option("--outer-margin", options.outer_margin,
                      "Outer grid edge / shock radius, [1.05, 2] (0 or none: 1.15; raise it when heat conduction "
                      "outruns the shock at the start, as in dense gases near close packing)");
-  command.add_option("--config", options.config_file,
-                     "TOML file whose [hydro] table sets eos, phi, transport (a scene file may carry it; flags win; "
-                     "docs/hydro.md)");
+  command.add_option(
+      "--config", options.config_file,
+      "TOML file whose [hydro] table sets eos, phi, transport, start, r0 (a scene file may carry it; flags win; "
+      "docs/hydro.md)");
   command.add_option("--out", options.out, "Folder for samples.csv, exponents.csv, profile.csv (none if empty)");
   add_format_option(command, options.format);
 }
@@ -261,7 +277,11 @@ void read_config_keys(const CLI::App& command, HydroOptions& options) {
       common::read_text(options.config_file, "--config", common::text_size_limit), options.config_file);
   if (command.count("--eos")) options.file_keys.eos.reset();
   if (command.count("--phi")) options.file_keys.phi.reset();
-  if (command.get_option_no_throw("--transport") && command.count("--transport")) options.file_keys.transport.reset();
+  // core only: --transport, --start, --r0
+  const auto given = [&](const char* flag) { return command.get_option_no_throw(flag) && command.count(flag) > 0; };
+  if (given("--transport")) options.file_keys.transport.reset();
+  if (given("--start")) options.file_keys.start.reset();
+  if (given("--r0")) options.file_keys.r0.reset();
 }
 
 }  // namespace
@@ -280,6 +300,14 @@ void add_hydro_command(CLI::App& app) {
   core->add_option("--transport", core_options->transport,
                    "dilute (Chapman-Enskog) or enskog (dense hard particles: needs a hard-particle --eos)")
       ->capture_default_str();
+  core->add_option("--start", core_options->start,
+                   "How the energy enters: self-similar (a smooth hot region at R/lambda = 2) or hotspot (E as heat, "
+                   "at rest, uniform within --r0 at the ambient density: the MD's hot spot; times count from it)")
+      ->capture_default_str();
+  core->add_option("--r0", core_options->r0,
+                   "Hot-spot radius for --start hotspot in mean free paths, r0/lambda > 0 (a hot spot holding N "
+                   "particles at phi = 0.118: 0.22 sqrt(N) in 2D, 0.18 N^(1/3) in 3D); the grid starts at R_ref = "
+                   "max(2 lambda, 5 r0)");
   core->add_option_function<double>(
       "--kappa-prefactor",
       [core_options](const double& value) {

@@ -12,7 +12,7 @@ class RadialBlast;
 
 /// Diagnostics at one time (physical units unless stated).
 struct NavierStokesSample {
-  double t = 0;                   ///< time since the (virtual) point explosion of R_ref(t)
+  double t = 0;  ///< time since the start's origin: the virtual point explosion of R_ref(t), or the hot spot
   double R_over_lambda = 0;       ///< measured shock radius / λ
   double R = 0;                   ///< shock radius: outermost r where n = (n∞ + n_max)/2
   double H = 0;                   ///< core radius: r where T falls to T0/2

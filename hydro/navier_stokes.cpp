@@ -130,7 +130,7 @@ struct Output {
 /// centred differences), and the requested profile times, in increasing order.
 std::vector<Output> output_plan(const RadialBlast& blast, const NavierStokesConfig& config) {
   const int per_decade = config.numerics.samples_per_decade;
-  const double start = config.numerics.start_R_over_lambda, until = config.until_R_over_lambda;
+  const double start = *config.numerics.start_R_over_lambda, until = config.until_R_over_lambda;
   const double lambda = blast.lambda();
   std::vector<Output> outputs;
   const int before = static_cast<int>(std::floor(per_decade * std::log10(until / start) - 1e-9));

@@ -1,6 +1,6 @@
 #pragma once
 // Configuration of the radial Navier–Stokes blast (paper Sec. III, Eqs. (13)-(16), in docs/hydro.md's
-// total-energy form): the physical model (d, E, n∞, a, EOS, transport), the numerics, their
+// total-energy form): the physical model (d, E, n∞, a, EOS, transport, the start), the numerics, their
 // validation with messages naming each field and its range, and the defaults the library resolves.
 #include <optional>
 #include <string>
@@ -10,6 +10,16 @@
 #include "hydro/transport.hpp"
 
 namespace coldblast::hydro {
+
+/// How the energy E enters (docs/hydro.md, "Starts"): `self_similar`, a smooth hot region of radius
+/// initial_width R_ref at R_ref/λ = 2 (the Barenblatt–Pattle profile); `hotspot`, the MD's hot spot:
+/// E as heat, zero velocity, uniform in the disc or sphere of radius r0 at the ambient density.
+enum class Start { self_similar, hotspot };
+
+/// "self-similar" or "hotspot".
+std::string to_string(Start start);
+/// Inverse of to_string; throws std::invalid_argument naming `option` and the allowed values.
+Start start_from_string(const std::string& text, const std::string& option = "start");
 
 /// φ∞ used when the EOS is a hard-particle one and phi is left at 0: the paper's MD value.
 constexpr double default_packing_fraction = 0.118;
@@ -23,6 +33,9 @@ constexpr double random_close_packing_spheres = 0.64;
 /// TvNS solution in d = 2 and 3 (-6.9e-4, -9.4e-4; first order in the cell size: docs/hydro.md).
 inline constexpr int default_core_cells = 256;
 inline constexpr int default_euler_cells = 512;
+
+/// R_ref/λ of the grid at the self-similar start.
+inline constexpr double default_start_R_over_lambda = 2.0;
 
 /// The largest ambient φ∞ the Navier–Stokes blast accepts (open bound). Henderson (discs):
 /// max_ambient_packing_fraction (0.89286), where the strong shock reaches close packing; the solver
@@ -55,15 +68,26 @@ struct NavierStokesPhysics {
   /// conduction of the energy equation (the Zel'dovich–Raizer / Barenblatt–Pattle heat wave). Samples
   /// then report R = R_ref(t), the grid scale, instead of a shock radius.
   bool frozen_flow = false;
+  /// How E enters; with `hotspot` the times t of the result count from the deposition (as in the MD),
+  /// with `self_similar` from the virtual point explosion of R_ref(t).
+  Start start = Start::self_similar;
+  /// Hot-spot radius r0/λ (in mean free paths, like the R/λ of the numerics), > 0 for start = hotspot;
+  /// must stay 0 otherwise. A hot spot holding N particles at φ∞ = 0.118 has r0/λ = 0.22 √N (2D),
+  /// 0.18 N^(1/3) (3D) (docs/hydro.md, "Starts").
+  double r0_over_lambda = 0;
   /// φ∞ actually used: phi, or default_packing_fraction for a hard-particle EOS with phi = 0.
   double resolved_phi() const;
 };
 
 /// Discretisation and integrator options; none of them changes the physics being solved.
 struct NavierStokesNumerics {
-  int cells = default_core_cells;    ///< finite-volume cells in [0, outer_margin R_ref], [16, 100000]
-  double start_R_over_lambda = 2.0;  ///< R_ref/λ at the initial time, (0, until)
-  double initial_width = 0.2;        ///< radius of the initial hot region / R_ref(t_start), (0, 0.8]
+  int cells = default_core_cells;  ///< finite-volume cells in [0, outer_margin R_ref], [16, 100000]
+  /// R_ref/λ of the grid at the initial time, (0, until); default 2 (self-similar start) or
+  /// max(2, (r0/λ)/initial_width) (hotspot: large enough to hold the hot spot and its early heat wave).
+  std::optional<double> start_R_over_lambda;
+  /// Hot region radius / R_ref(t_start), (0, 0.8]: the self-similar start's hot region; with a hotspot
+  /// start it sets the default start_R_over_lambda.
+  double initial_width = 0.2;
   double temperature_floor = 1e-6;   ///< T of the cold gas entering the grid / Ṙ_ref(t)², (0, 1e-2]: never T = 0
   double relative_tolerance = 1e-6;  ///< CVODE relative tolerance, [1e-12, 1e-2]
   int samples_per_decade = 20;       ///< diagnostics per decade of R/λ, [4, 200]
@@ -83,12 +107,14 @@ struct NavierStokesConfig {
   double until_R_over_lambda = 1e4;  ///< stop when R_ref/λ reaches this, (start_R_over_lambda, 1e12]
   /// Throws std::invalid_argument naming the first field out of range, its value and the range.
   void validate() const;
+  /// numerics.start_R_over_lambda, or its default for the start (see NavierStokesNumerics).
+  double resolved_start_R_over_lambda() const;
   /// Euler mode: neither heat conduction nor viscosity.
   bool euler() const { return !physics.heat_conduction && !physics.viscosity; }
 };
 
-/// The validated config with the library's defaults filled in: φ∞ (resolved_phi), the grid's core
-/// resolution and shock band. Throws as NavierStokesConfig::validate.
+/// The validated config with the library's defaults filled in: φ∞ (resolved_phi), the start's
+/// R_ref/λ, the grid's core resolution and shock band. Throws as NavierStokesConfig::validate.
 NavierStokesConfig resolve_defaults(const NavierStokesConfig& input);
 
 }  // namespace coldblast::hydro

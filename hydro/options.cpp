@@ -21,7 +21,9 @@ const common::FieldNames hydro_flags = {{"d", "--d"},
                                         {"phi", "--phi"},
                                         {"transport", "--transport"},
                                         {"kappa_prefactor", "--kappa-prefactor"},
-                                        {"outer_margin", "--outer-margin"}};
+                                        {"outer_margin", "--outer-margin"},
+                                        {"start", "--start"},
+                                        {"r0_over_lambda", "--r0"}};
 }  // namespace
 
 std::vector<double> parse_profile_points(const std::string& text) {
@@ -74,17 +76,23 @@ HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::st
       if (const auto* s = value.as_string()) return s->get();
       throw std::invalid_argument("hydro." + key + " in " + source + " must be a string");
     };
+    const auto number = [&] {
+      if (const std::optional<double> x = value.value<double>()) return *x;
+      throw std::invalid_argument("hydro." + key + " in " + source + " must be a number");
+    };
     if (key == "eos")
       keys.eos = text();
     else if (key == "transport")
       keys.transport = text();
-    else if (key == "phi") {
-      const std::optional<double> phi = value.value<double>();
-      if (!phi) throw std::invalid_argument("hydro.phi in " + source + " must be a number");
-      keys.phi = *phi;
-    } else {
-      throw std::invalid_argument("unknown key hydro." + key + " in " + source + " (allowed: eos, phi, transport)");
-    }
+    else if (key == "start")
+      keys.start = text();
+    else if (key == "phi")
+      keys.phi = number();
+    else if (key == "r0")
+      keys.r0 = number();
+    else
+      throw std::invalid_argument("unknown key hydro." + key + " in " + source +
+                                  " (allowed: eos, phi, transport, start, r0)");
   }
   return keys;
 }
@@ -93,13 +101,15 @@ NavierStokesConfig navier_stokes_config(const HydroOptions& flags, bool euler, c
   // The file's keys replace the flags' values, and its key names replace theirs in messages.
   HydroOptions options = flags;
   common::FieldNames names = hydro_flags;
-  const auto from_file = [&](const char* field) {
+  const auto from_file = [&](const char* key) {  // the field of key r0 is r0_over_lambda
     for (auto& entry : names)
-      if (entry.first == field) entry.second = std::string("hydro.") + field;
+      if (entry.second == std::string("--") + key) entry.second = std::string("hydro.") + key;
   };
   if (file.eos) options.eos = *file.eos, from_file("eos");
   if (file.phi) options.phi = *file.phi, from_file("phi");
   if (file.transport) options.transport = *file.transport, from_file("transport");
+  if (file.start) options.start = *file.start, from_file("start");
+  if (file.r0) options.r0 = *file.r0, from_file("r0");
   // NavierStokesConfig::validate holds the rules; the flags and keys only rename its fields.
   return common::with_field_names(names, [&] {
     NavierStokesConfig config;
@@ -111,6 +121,8 @@ NavierStokesConfig navier_stokes_config(const HydroOptions& flags, bool euler, c
     config.physics.phi = options.phi;
     config.physics.transport = transport_from_string(options.transport, "transport");
     if (options.outer_margin != 0.0) config.numerics.outer_margin = options.outer_margin;
+    config.physics.start = start_from_string(options.start, "start");
+    config.physics.r0_over_lambda = options.r0;
     if (euler) {
       config.physics.heat_conduction = false;
       config.physics.viscosity = false;

@@ -37,16 +37,20 @@ struct HydroOptions {
   bool viscosity = false;                 ///< shear viscosity (core mode)
   std::optional<double> kappa_prefactor;  ///< c_kappa in [0, 1e6] (core mode); empty = Chapman-Enskog
   std::string eos = "ideal";              ///< ideal, henderson (d = 2) or carnahan-starling (d = 3)
-  double phi = 0.0;                  ///< ambient packing fraction; 0 = the library's default for a hard-particle EOS
-  std::string transport = "dilute";  ///< transport coefficients (hydro::transport_from_string)
-  double outer_margin = 0.0;         ///< outer grid edge / R_ref, [1.05, 2]; 0 = the solver's default (1.15)
+  double phi = 0.0;                    ///< ambient packing fraction; 0 = the library's default for a hard-particle EOS
+  std::string transport = "dilute";    ///< transport coefficients (hydro::transport_from_string)
+  double outer_margin = 0.0;           ///< outer grid edge / R_ref, [1.05, 2]; 0 = the solver's default (1.15)
+  std::string start = "self-similar";  ///< how E enters (hydro::start_from_string): self-similar or hotspot
+  double r0 = 0.0;                     ///< hot-spot radius r0/lambda, > 0 with start = hotspot
 };
 /// The Navier–Stokes model keys of a TOML file's [hydro] table (docs/hydro.md): the same values as
-/// --eos, --phi, --transport. An unset key leaves the flag's value.
+/// --eos, --phi, --transport, --start, --r0. An unset key leaves the flag's value.
 struct HydroModelKeys {
   std::optional<std::string> eos;
   std::optional<double> phi;
   std::optional<std::string> transport;
+  std::optional<std::string> start;
+  std::optional<double> r0;
 };
 /// Reads the [hydro] table of TOML text (no table: no keys); other tables and keys of the file (a
 /// scene's) are left alone. Throws std::invalid_argument naming hydro.<key> for an unknown key or a
@@ -57,9 +61,9 @@ HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::st
 inline constexpr double default_core_until = 1e4;
 inline constexpr double default_euler_until = 500;
 /// The validated NavierStokesConfig of core (euler = false) or Euler (kappa = mu = 0) mode, with the
-/// keys of `file` replacing the options' eos, phi and transport (the caller drops the keys whose flag
-/// was given). Throws std::invalid_argument naming the flag (--d, --cells, --until, --eos, --phi,
-/// --transport, --kappa-prefactor), or hydro.<key> for a value taken from the file.
+/// keys of `file` replacing the options' eos, phi, transport, start and r0 (the caller drops the keys
+/// whose flag was given). Throws std::invalid_argument naming the flag (--d, --cells, --until, --eos,
+/// --phi, --transport, --kappa-prefactor, --start, --r0), or hydro.<key> for a value taken from the file.
 NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler, const HydroModelKeys& file = {});
 
 }  // namespace coldblast::hydro

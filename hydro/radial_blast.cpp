@@ -56,7 +56,8 @@ RadialBlast::RadialBlast(const NavierStokesConfig& config, double c_kappa, doubl
       lambda_(theory::mean_free_path(d_, n_inf_, config.physics.a)),
       A_ref_(A_reference),
       margin_(config.numerics.outer_margin),
-      omega_(theory::unit_ball_volume(d_)) {
+      omega_(theory::unit_ball_volume(d_)),
+      start_(config.physics.start) {
   const NavierStokesNumerics& numerics = config.numerics;
   cells_ = numerics.cells;
   // Eq. (15) [kappa-HS]: κ = c_κ n∞ λ √T; the same form for μ (Chapman–Enskog, docs/hydro.md)
@@ -69,8 +70,14 @@ RadialBlast::RadialBlast(const NavierStokesConfig& config, double c_kappa, doubl
                               n_inf_};
   xi_ = grid_faces(cells_, *numerics.core_resolution, margin_, *numerics.shock_band_fraction);
   floor_ = numerics.temperature_floor;
-  t_start_ = time_of(numerics.start_R_over_lambda * lambda_);
-  hot_radius_ = numerics.initial_width * reference_radius(t_start_);
+  const double R_start = config.resolved_start_R_over_lambda() * lambda_;
+  if (start_ == Start::hotspot) {  // deposited at t = 0, when the grid has R_ref = R_start
+    time_shift_ = theory::shock_time(d_, E_, n_inf_, A_ref_, R_start);
+    hot_radius_ = config.physics.r0_over_lambda * lambda_;
+  } else {
+    t_start_ = time_of(R_start);
+    hot_radius_ = numerics.initial_width * reference_radius(t_start_);
+  }
   n_.resize(cells_);
   u_.resize(cells_);
   T_.resize(cells_);
@@ -105,23 +112,23 @@ inline bool RadialBlast::complete_state(State& s) const {
 }
 
 double RadialBlast::reference_radius(double t) const {
-  return theory::shock_radius(d_, E_, n_inf_, A_ref_, t);
+  return theory::shock_radius(d_, E_, n_inf_, A_ref_, t + time_shift_);
 }
 
 double RadialBlast::time_of(double R) const {
-  return theory::shock_time(d_, E_, n_inf_, A_ref_, R);
+  return theory::shock_time(d_, E_, n_inf_, A_ref_, R) - time_shift_;
 }
 
 double RadialBlast::shock_speed(double t) const {
-  return theory::shock_speed_at(d_, reference_radius(t), t);
+  return theory::shock_speed_at(d_, reference_radius(t), t + time_shift_);
 }
 
-/// Energy entering through the outer edge, e∞(t) dV(L)/dt, is a constant K over t (Eq. (1):
-/// Ṙ² L^(d-1) L̇ ∝ R^(d+2)/t³ ∝ 1/t), so its integral is K ln(t/t0).
+/// Energy entering through the outer edge, e∞ dV(L)/dτ, is a constant K over the grid time τ = t +
+/// time_shift (Eq. (1): Ṙ² L^(d-1) L̇ ∝ R^(d+2)/τ³ ∝ 1/τ), so its integral is K ln(τ/τ0).
 double RadialBlast::expected_energy(double t) const {
-  const double t0 = t_start_;
-  const double K = internal_energy_inf(t0) * face_area(outer_radius(t0)) * margin_ * shock_speed(t0) * t0;
-  return E_ + internal_energy_inf(t0) * ball_volume(outer_radius(t0)) + K * std::log(t / t0);
+  const double t0 = t_start_, tau0 = t0 + time_shift_;
+  const double K = internal_energy_inf(t0) * face_area(outer_radius(t0)) * margin_ * shock_speed(t0) * tau0;
+  return E_ + internal_energy_inf(t0) * ball_volume(outer_radius(t0)) + K * std::log((t + time_shift_) / tau0);
 }
 
 void RadialBlast::faces(double t, std::vector<double>& r) const {
@@ -131,6 +138,15 @@ void RadialBlast::faces(double t, std::vector<double>& r) const {
 }
 
 void RadialBlast::initial_state(double* y) const {
+  if (start_ == Start::hotspot)
+    hotspot_state(y);
+  else
+    self_similar_state(y);
+}
+
+/// Cold gas at rest plus E as internal energy with density ∝ (1 - r²/w²)² for r < w = initial_width R_ref
+/// (smooth, so the integrator does not start on a discontinuity); cell shares integrated exactly.
+void RadialBlast::self_similar_state(double* y) const {
   std::vector<double> r;
   faces(t_start_, r);
   const double w = hot_radius_;
@@ -146,6 +162,21 @@ void RadialBlast::initial_state(double* y) const {
     y[components * i + 0] = n_inf_ * volume;
     y[components * i + 1] = 0.0;
     y[components * i + 2] = internal_energy_inf(t_start_) * volume + E_ * share;
+  }
+}
+
+/// The MD's hot spot: cold gas at rest plus E as heat, uniform in r < r0 (each cell gets E times the
+/// share of the ball V(r0) it overlaps, so the shares add up to 1 to round-off).
+void RadialBlast::hotspot_state(double* y) const {
+  std::vector<double> r;
+  faces(t_start_, r);
+  const double hot_volume = ball_volume(hot_radius_);
+  for (int i = 0; i < cells_; ++i) {
+    const double volume = ball_volume(r[i + 1]) - ball_volume(r[i]);
+    const double inside = ball_volume(std::min(r[i + 1], hot_radius_)) - ball_volume(std::min(r[i], hot_radius_));
+    y[components * i + 0] = n_inf_ * volume;
+    y[components * i + 1] = 0.0;
+    y[components * i + 2] = internal_energy_inf(t_start_) * volume + E_ * (inside / hot_volume);
   }
 }
 

@@ -2,7 +2,7 @@
 // The semi-discrete radial blast, the right-hand side CVODE integrates (paper Sec. III, Eqs. (13)-(16)
 // in docs/hydro.md's total-energy form): cell totals of mass, radial momentum and total energy on faces
 // r = ξ R_ref(t) that grow with the blast, HLLC fluxes (hydro/hllc.hpp) of states reconstructed from
-// (ln n, u, ln p), heat flux and viscous stresses (hydro/transport.hpp), and the initial state.
+// (ln n, u, ln p), heat flux and viscous stresses (hydro/transport.hpp), and the two starts.
 #include <cmath>
 #include <vector>
 
@@ -12,8 +12,9 @@
 
 namespace coldblast::hydro {
 
-/// Geometry, parameters and scratch space of the right-hand side. Times t count from the virtual point
-/// explosion of the grid scale R_ref(t).
+/// Geometry, parameters and scratch space of the right-hand side. Times t count from the start's origin
+/// (the hot spot's deposition, or the virtual point explosion of R_ref for the self-similar start); the
+/// grid scale R_ref runs on t + time_shift, so that it holds the hot spot at the start.
 class RadialBlast {
  public:
   /// `config` with its defaults resolved (resolve_defaults); c_κ, c_μ (0: off) and the TvNS A_d of R_ref.
@@ -21,7 +22,7 @@ class RadialBlast {
 
   int cells() const { return cells_; }
   double lambda() const { return lambda_; }
-  /// Time of the initial state, t(R_ref = start_R_over_lambda λ).
+  /// Time of the initial state: 0 for the hot spot, t(R_ref = start_R_over_lambda λ) for the self-similar start.
   double start_time() const { return t_start_; }
   /// Temperature of the cold gas entering the grid at time t: floor Ṙ_ref(t)², so that the shock's
   /// Mach number stays 1/√(γ floor) at all times (the gas of the paper is at T = 0).
@@ -35,7 +36,7 @@ class RadialBlast {
   double packing_exceeded() const { return packing_exceeded_; }
   double close_packing() const { return phi_close_packing_; }
 
-  /// Eq. (1) [R-shock] with the reference amplitude: R_ref = (E t²/(A n∞))^(1/(d+2)),
+  /// Eq. (1) [R-shock] with the reference amplitude: R_ref = (E τ²/(A n∞))^(1/(d+2)) at τ = t + time_shift,
   /// its inverse (the t at which R_ref = R) and the grid's speed Ṙ_ref.
   double reference_radius(double t) const;
   double time_of(double R) const;
@@ -50,9 +51,7 @@ class RadialBlast {
   /// Face radii r_j = ξ_j R_ref(t), j = 0..cells, ξ_cells = outer_margin.
   void faces(double t, std::vector<double>& r) const;
 
-  /// Cell totals (mass, momentum, energy per cell) at start_time(): cold gas at rest plus E as
-  /// internal energy with density ∝ (1 - r²/w²)² for r < w = initial_width R_ref (smooth, so the
-  /// integrator does not start on a discontinuity); cell shares integrated exactly.
+  /// Cell totals (mass, momentum, energy per cell) at start_time(): cold gas at rest plus E as heat.
   void initial_state(double* y) const;
   /// d/dt of the cell totals; returns 1 (recoverable) when a trial state is not positive or packs
   /// the gas beyond close packing.
@@ -72,6 +71,8 @@ class RadialBlast {
   /// Sound speed and total energy of a face state: ideal c² = γ p/n, e = p/(γ-1) + n u²/2; hard particles
   /// c² = T (Z + φ Z' + (2/d) Z²) (hydro/equation_of_state.hpp) and internal energy (d/2) n T = (d/2) p/Z.
   bool complete_state(State& s) const;
+  void self_similar_state(double* y) const;
+  void hotspot_state(double* y) const;
   bool primitives(double t, const double* y);
   double q(double t, int i, int k) const;
   void reconstruct(double t);
@@ -88,9 +89,10 @@ class RadialBlast {
   double phi_inf_, phi_close_packing_, Z_inf_;
   double lambda_, A_ref_, margin_, omega_;
   TransportModel transport_;
-  double hot_radius_ = 0;  ///< w = initial_width R_ref(t_start)
+  Start start_;
+  double hot_radius_ = 0;  ///< initial_width R_ref(t_start) (self-similar) or r0 (hotspot)
   int cells_ = 0;
-  double floor_ = 0, t_start_ = 0;
+  double floor_ = 0, time_shift_ = 0, t_start_ = 0;
   double packing_exceeded_ = 0;
   std::vector<double> xi_, r_, centre_, n_, u_, T_, p_, slope_, flux_, heat_, stress_;
 };

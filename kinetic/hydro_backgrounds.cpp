@@ -36,7 +36,7 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   tvns_config.tolerance = 1e-10;
   const hydro::TvnsSolution reference = hydro::solve_tvns(tvns_config);
   const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, reference.A()};
-  const double start = ns.numerics.start_R_over_lambda;
+  const double start = ns.resolved_start_R_over_lambda();
   const double until = theory::shock_radius(p, 1.05 * scene.t_max) / lambda;
   if (!(until > start * 1.5))  // room for frames after the first one at 1.25 × start
     throw std::invalid_argument(

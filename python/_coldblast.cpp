@@ -300,6 +300,9 @@ py::dict hydro_result(const hydro::NavierStokesResult& r) {
   out["eos"] = hydro::to_string(r.config.physics.eos);
   out["phi"] = r.config.physics.phi;
   out["transport"] = hydro::to_string(r.config.physics.transport);
+  out["start"] = hydro::to_string(r.config.physics.start);
+  out["r0"] = r.config.physics.r0_over_lambda;
+  out["start_R_over_lambda"] = *r.config.numerics.start_R_over_lambda;
   out["R_over_lambda"] = s.R_over_lambda;
   out["final_exponents"] = final_exponents;
   out["prefactors"] = prefactors;
@@ -331,9 +334,11 @@ py::dict hydro_result(const hydro::NavierStokesResult& r) {
 }
 
 py::dict hydro_run(bool euler, int d, double until, int cells, bool viscosity, std::optional<double> kappa_prefactor,
-                   const std::string& eos, double phi, const std::string& transport,
-                   const py::object& progress_callback) {
-  const hydro::HydroOptions options{d, until, cells, viscosity, kappa_prefactor, eos, phi, transport};
+                   const std::string& eos, double phi, const std::string& transport, const std::string& start,
+                   double r0, const py::object& progress_callback) {
+  hydro::HydroOptions options{d, until, cells, viscosity, kappa_prefactor, eos, phi, transport};
+  options.start = start;
+  options.r0 = r0;
   const hydro::NavierStokesConfig config = hydro::navier_stokes_config(options, euler);
   Progress progress(progress_callback);
   const std::function<hydro::NavierStokesResult()> work = [&] {
@@ -640,7 +645,7 @@ PYBIND11_MODULE(_coldblast, m) {
 
   m.def("hydro_run", &hydro_run, py::arg("euler"), py::arg("d"), py::arg("until"), py::arg("cells"),
         py::arg("viscosity"), py::arg("kappa_prefactor"), py::arg("eos"), py::arg("phi"), py::arg("transport"),
-        py::arg("progress"));
+        py::arg("start"), py::arg("r0"), py::arg("progress"));
   m.attr("default_core_cells") = hydro::default_core_cells;
   m.attr("default_euler_cells") = hydro::default_euler_cells;
   m.def("md_run", &md_run, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("realizations"),

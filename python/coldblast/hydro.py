@@ -7,18 +7,20 @@ from ._arguments import flag, integer, number, text
 from . import theory as _theory
 
 
-def _run(euler, d, until, cells, viscosity, kappa_prefactor, progress, eos="ideal", phi=0.0, transport="dilute"):
+def _run(euler, d, until, cells, viscosity, kappa_prefactor, progress, eos="ideal", phi=0.0, transport="dilute",
+         start="self-similar", r0=0.0):
     label = "hydro euler" if euler else "hydro core"
     raw = _coldblast.hydro_run(euler, integer(d, "--d"), 0.0 if until is None else number(until, "--until"),
                                integer(cells, "--cells"), flag(viscosity, "--viscosity"),
                                None if kappa_prefactor is None else number(kappa_prefactor, "--kappa-prefactor"),
                                text(eos, "--eos"), number(phi, "--phi"), text(transport, "--transport"),
+                               text(start, "--start"), number(r0, "--r0"),
                                _progress.callback(progress, label, "R/lambda", "{:.4g}"))
     return SimpleNamespace(**raw)
 
 
 def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="ideal", phi=0.0, transport="dilute",
-         progress=True):
+         start="self-similar", r0=0.0, progress=True):
     """Heat-conducting blast up to R/lambda = until (the same call as ``coldblast hydro core``).
 
     Parameters
@@ -38,6 +40,11 @@ def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="id
         Equation of state ("ideal", "henderson" for d = 2, "carnahan-starling" for d = 3), ambient
         packing fraction (0: the library's default for a hard-particle EOS) and transport
         ("dilute" or "enskog"), as ``--eos --phi --transport`` (docs/hydro.md).
+    start, r0 : str, float
+        How the energy enters, as ``--start --r0``: "self-similar" (a smooth hot region at R/lambda = 2)
+        or "hotspot" (E as heat at rest, uniform within the radius r0 at the ambient density: the MD's
+        hot spot; r0 > 0 in mean free paths, r0/lambda; the times then count from the deposition;
+        docs/hydro.md, "Starts").
     progress : bool or callable
         True: R/lambda on stderr; False: silent; callable(R_over_lambda, until).
 
@@ -52,11 +59,12 @@ def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="id
         temperature, pressure, heat_flux), the last at R/lambda = until;
         ``final_exponents`` (H, n0, T0, R), ``theory`` (the exact Fractions), ``prefactors``,
         ``R_over_lambda``, ``p0_scaled``, ``kappa_prefactor``, ``viscosity_prefactor``,
-        ``energy_error``, ``cells``, ``wall_seconds``, ``rhs_evaluations`` (as the CLI's JSON).
+        ``energy_error``, ``cells``, ``wall_seconds``, ``rhs_evaluations`` (as the CLI's JSON);
+        ``start``, ``r0`` (r0/lambda) and ``start_R_over_lambda`` (the grid's R_ref/lambda at the start).
     Units: m = k_B = 1 with the CLI's E = 1, n = 1, a = 1/2 (lambda = 1 in 2D).
     Ctrl-C raises KeyboardInterrupt within a fraction of a second.
     """
-    result = _run(False, d, until, cells, viscosity, kappa_prefactor, progress, eos, phi, transport)
+    result = _run(False, d, until, cells, viscosity, kappa_prefactor, progress, eos, phi, transport, start, r0)
     exact = _theory.exponents(integer(d, "--d"))
     result.theory = {name: exact[name] for name in ("H", "n0", "T0", "R")}
     return result

@@ -1,10 +1,12 @@
 // Tests of hydro/navier_stokes_config: validation names the field and its range (physics, numerics,
-// the dense EOS and transport options of issue 12), and the defaults the library resolves.
+// the dense EOS and transport options of issue 12, the starts), and the defaults the library resolves.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
 
+#include "common/validate.hpp"
 #include "hydro/navier_stokes.hpp"
+#include "hydro/options.hpp"
 #include "tests/hydro/blast_configs.hpp"
 
 using namespace coldblast;
@@ -23,7 +25,7 @@ TEST_CASE("NavierStokesConfig::validate names the bad field", "[fast]") {
   bad.numerics.cells = 8;
   check_throws_naming(bad, "cells = 8");
   bad = config;
-  bad.until_R_over_lambda = config.numerics.start_R_over_lambda;
+  bad.until_R_over_lambda = config.resolved_start_R_over_lambda();
   check_throws_naming(bad, "until_R_over_lambda");
   bad = config;
   bad.physics.kappa_prefactor = -1.0;
@@ -89,4 +91,56 @@ TEST_CASE("dense options: spheres stop at random close packing, where the centre
   REQUIRE(!result.samples.empty());
   CHECK(std::isfinite(result.samples.back().n0));
   CHECK(std::isfinite(result.samples.back().T0));
+}
+
+TEST_CASE("start options: r0 only with a hot spot, inside the grid, and the grid start they resolve", "[fast]") {
+  NavierStokesConfig config = core_config(2, 100, 64);
+  CHECK(config.resolved_start_R_over_lambda() == hydro::default_start_R_over_lambda);
+  auto bad = config;
+  bad.physics.r0_over_lambda = 0.3;  // without start = hotspot
+  check_throws_naming(bad, "r0_over_lambda = 0.3");
+  CHECK_THROWS_WITH(bad.validate(), Catch::Contains("start = hotspot"));
+  config.physics.start = hydro::Start::hotspot;
+  for (double r0 : {0.0, -1.0, 20.0, 1e3}) {  // (0, initial_width until) = (0, 20)
+    bad = config;
+    bad.physics.r0_over_lambda = r0;
+    check_throws_naming(bad, "r0_over_lambda = " + common::format_number(r0) + " is outside (0, 20)");
+  }
+  config.physics.r0_over_lambda = 0.25;  // a small hot spot: the grid starts at 2 λ, where the heat wave fits
+  REQUIRE_NOTHROW(config.validate());
+  CHECK(config.resolved_start_R_over_lambda() == 2.0);
+  config.physics.r0_over_lambda = 3.0;  // a large one: the grid starts at r0/initial_width
+  CHECK(config.resolved_start_R_over_lambda() == Approx(15.0).epsilon(1e-15));
+  CHECK(hydro::resolve_defaults(config).numerics.start_R_over_lambda.value() == config.resolved_start_R_over_lambda());
+  config.numerics.start_R_over_lambda = 2.5;  // given: the hot spot must lie within 0.8 R_ref
+  check_throws_naming(config, "r0_over_lambda = 3 is outside (0, 2]");
+  config.numerics.start_R_over_lambda = 4.0;
+  REQUIRE_NOTHROW(config.validate());
+  CHECK(hydro::to_string(hydro::Start::hotspot) == "hotspot");
+  CHECK(hydro::start_from_string(hydro::to_string(hydro::Start::self_similar)) == hydro::Start::self_similar);
+  CHECK_THROWS_WITH(hydro::start_from_string("kick", "--start"),
+                    Catch::Contains("--start = kick") && Catch::Contains("self-similar, hotspot"));
+}
+
+TEST_CASE("start options through the flags and the [hydro] table name --start, --r0 and hydro.<key>", "[fast]") {
+  hydro::HydroOptions options;
+  options.start = "hotspot";
+  options.r0 = 0.3;
+  const NavierStokesConfig config = hydro::navier_stokes_config(options, false);
+  CHECK(config.physics.start == hydro::Start::hotspot);
+  CHECK(config.physics.r0_over_lambda == 0.3);
+  options.r0 = -0.5;
+  CHECK_THROWS_WITH(hydro::navier_stokes_config(options, false), Catch::Contains("--r0 = -0.5 is outside (0, "));
+  options.r0 = 0.3;
+  options.start = "sedov";
+  CHECK_THROWS_WITH(hydro::navier_stokes_config(options, false),
+                    Catch::Contains("--start = sedov is not one of self-similar, hotspot"));
+  const hydro::HydroModelKeys keys =
+      hydro::read_hydro_model_keys("[hydro]\nstart = \"hotspot\"\nr0 = 0\n", "scene.toml");
+  REQUIRE(keys.start);
+  CHECK(*keys.start == "hotspot");
+  CHECK_THROWS_WITH(hydro::navier_stokes_config(hydro::HydroOptions{}, false, keys),
+                    Catch::Contains("hydro.r0 = 0 is outside (0, "));
+  CHECK_THROWS_WITH(hydro::read_hydro_model_keys("[hydro]\nr0 = \"big\"\n", "scene.toml"),
+                    Catch::Contains("hydro.r0 in scene.toml must be a number"));
 }

@@ -40,6 +40,16 @@ def test_dense_core_equals_cli():
         assert r.final_exponents[name] == expected["exponents"][name]["measured"]
 
 
+def test_hotspot_core_equals_cli():
+    expected = cli_json("hydro", "core", "--until", 20, "--cells", 64, "--start", "hotspot", "--r0", 0.25)
+    r = coldblast.hydro.core(until=20, cells=64, start="hotspot", r0=0.25, progress=False)
+    assert (r.start, r.r0, r.start_R_over_lambda) == ("hotspot", 0.25, 2.0)
+    assert expected["model"]["start"] == "hotspot" and expected["model"]["r0_over_lambda"] == 0.25
+    for name in ("H", "n0", "T0", "R"):
+        assert r.final_exponents[name] == expected["exponents"][name]["measured"]
+    assert r.samples["t"][0] > 0  # times count from the deposition at t = 0
+
+
 def test_progress_callback_sees_R_over_lambda():
     seen = []
     coldblast.hydro.core(until=50, cells=64, progress=lambda x, until: seen.append((x, until)))
@@ -54,6 +64,10 @@ def test_progress_callback_sees_R_over_lambda():
     ({"eos": "vdw"}, ["--eos", "vdw"]),
     ({"transport": "magic"}, ["--transport", "magic"]),
     ({"eos": "henderson", "phi": 0.95}, ["--eos", "henderson", "--phi", 0.95]),
+    ({"start": "kick"}, ["--start", "kick"]),
+    ({"start": "hotspot"}, ["--start", "hotspot"]),
+    ({"start": "hotspot", "r0": -0.5}, ["--start", "hotspot", "--r0", -0.5]),
+    ({"r0": 0.3}, ["--r0", 0.3]),
 ])
 def test_bad_input_is_the_cli_error(kwargs, flags):
     with pytest.raises(ValueError) as error:
