@@ -106,21 +106,26 @@ std::string extxyz_frame(const md::ResolvedScene& scene, const std::string& run_
   const double Lz = d == 3 ? L : 2.0 * scene.config.a;
   const double oz = d == 3 ? lo : -scene.config.a;
   std::ostringstream out;
+  // Z = 0 is ASE's dummy atom X: no reader takes a particle for an element; type_name says what
+  // it is. ASE reads `masses` (get_masses) and `momenta` (get_velocities = momenta / masses);
+  // OVITO reads `velo` (Velocity), `radius` (Radius), `masses` (Mass) and `id` (Identifier).
   out << frame.size() << '\n'
       << "Lattice=\"" << format_number(L) << " 0 0 0 " << format_number(L) << " 0 0 0 " << format_number(Lz)
       << "\" Origin=\"" << format_number(lo) << ' ' << format_number(lo) << ' ' << format_number(oz)
-      << "\" Properties=species:S:1:pos:R:3:velo:R:3:mass:R:1:radius:R:1:moving:I:1:collisions:I:1 Time="
-      << format_number(frame.t) << " pbc=\"F F F\" run_id=" << run_id << '\n';
+      << "\" Properties=Z:I:1:type_name:S:1:typeid:I:1:id:I:1:pos:R:3:velo:R:3:momenta:R:3:masses:R:1:radius:R:1:"
+         "moving:I:1:collisions:I:1 Time="
+      << format_number(frame.t) << " dimensions=" << d << " pbc=\"F F F\" run_id=" << run_id << '\n';
   const double host_radius = scene.config.a, impurity_radius = scene.impurity_radius;
   const double impurity_mass = scene.config.impurities.mass;
   for (std::size_t i = 0; i < frame.size(); ++i) {
     const bool impurity = frame.impurity[i] != 0;
-    out << (impurity ? 'I' : 'H');
+    const double mass = impurity ? impurity_mass : 1.0;
+    out << "0 " << (impurity ? "impurity 1 " : "host 0 ") << frame.id[i];
     for (int k = 0; k < 3; ++k) out << ' ' << (k < d ? format_number(frame.position[i * d + k]) : "0");
     for (int k = 0; k < 3; ++k) out << ' ' << (k < d ? format_number(frame.velocity[i * d + k]) : "0");
-    out << ' ' << format_number(impurity ? impurity_mass : 1.0) << ' '
-        << format_number(impurity ? impurity_radius : host_radius) << ' ' << int{frame.moving[i]} << ' '
-        << frame.collisions[i] << '\n';
+    for (int k = 0; k < 3; ++k) out << ' ' << (k < d ? format_number(mass * frame.velocity[i * d + k]) : "0");
+    out << ' ' << format_number(mass) << ' ' << format_number(impurity ? impurity_radius : host_radius) << ' '
+        << int{frame.moving[i]} << ' ' << frame.collisions[i] << '\n';
   }
   return out.str();
 }

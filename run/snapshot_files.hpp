@@ -1,11 +1,12 @@
 #pragma once
 // The files of single realizations (docs/md-output.md): which realizations record snapshots and
 // impurity paths, and the one writer of what they recorded (md/realization.hpp's data):
-// snapshot_<t>.csv, snapshots.extxyz (extended XYZ, read by OVITO and ASE: one frame per snapshot
+// snapshot_<t>.csv, snapshots.extxyz (extended XYZ, read by ASE and OVITO: one frame per snapshot
 // time; comment line: Lattice (the cube [-R_region, R_region]^d, in 2D a third vector of length 2a
-// along z), Origin, Time, pbc="F F F" and Properties; columns: species (H = host, I = impurity:
-// element symbols, so that ASE reads them too), pos (z = 0 in 2D), velo, mass, radius, moving (1 once
-// the particle has moved), collisions (per particle, since t = 0)) and trajectories.csv.
+// along z), Origin, Time, dimensions, pbc="F F F", run_id and Properties; columns: Z = 0 (ASE's dummy
+// atom X, never an element), type_name (host, impurity), typeid (0, 1), id, pos (z = 0 in 2D),
+// velo, momenta (m v: ASE's get_velocities), masses, radius, moving (1 once the particle has moved),
+// collisions (per particle, since t = 0)) and trajectories.csv.
 #include <string>
 
 #include "md/blast_config.hpp"

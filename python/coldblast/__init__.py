@@ -14,6 +14,8 @@ particle radius (diameter 2a), T means k_B T.
   equation (Eq. 36) by Monte Carlo (``coldblast tracer``); estimates, moments and the summary.
 - ``coldblast.read_run(dir)``: a run directory (CLI- or Python-made) as pandas DataFrames.
 - ``coldblast.compare(run_dir, against="theory", md_run=None)``: the verdict of ``coldblast compare`` as a dict.
+- ``coldblast.write_gsd(run_dir, path=None, realization=0)``: a run's snapshots as a GSD file (hoomd schema,
+  for OVITO and freud); also ``python3 -m coldblast gsd RUN_DIR [-o FILE]``.
 - ``coldblast.reproduce(scale="quick", out="coldblast-reproduce")``: the paper end to end
   (``coldblast reproduce``); its summary as a dict.
 
@@ -31,5 +33,6 @@ from ._run import Run, read_run
 from ._tvns import Tvns, tvns
 from ._compare import compare
 from ._reproduce import reproduce
+from ._gsd import write_gsd
 
-__all__ = ["theory", "tvns", "Tvns", "hydro", "md", "tracer", "read_run", "Run", "compare", "reproduce"]
+__all__ = ["theory", "tvns", "Tvns", "hydro", "md", "tracer", "read_run", "Run", "compare", "reproduce", "write_gsd"]

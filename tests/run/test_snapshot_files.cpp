@@ -5,6 +5,7 @@
 // default subset (the moving particles and the resting ones within the margin of the front: exactly
 // those, a small share of a 3D region, near the size estimate), the stride, any realization, times
 // as fractions of t_max, and the warning above 100 MB.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -95,7 +96,9 @@ TEST_CASE("snapshots.extxyz parses back: frames, particles, impurities, cell, en
     INFO("frame " << f << ": " << frame.comment);
     CHECK(std::stod(key(frame.comment, "Time")) == times[f]);
     CHECK(key(frame.comment, "Properties") ==
-          "species:S:1:pos:R:3:velo:R:3:mass:R:1:radius:R:1:moving:I:1:collisions:I:1");
+          "Z:I:1:type_name:S:1:typeid:I:1:id:I:1:pos:R:3:velo:R:3:momenta:R:3:masses:R:1:radius:R:1:moving:I:1:"
+          "collisions:I:1");
+    CHECK(key(frame.comment, "dimensions") == std::to_string(d));
     CHECK(key(frame.comment, "pbc") == "F F F");
     CHECK(key(frame.comment, "run_id") == result.run_id);
     // Lattice: three vectors, diagonal; the d region sides 2 R_region, in 2D a third of length 2a.
@@ -110,25 +113,33 @@ TEST_CASE("snapshots.extxyz parses back: frames, particles, impurities, cell, en
     REQUIRE(frame.rows.size() == resolved.particle_count);
     int impurities = 0;
     double energy = 0.0;
+    std::vector<long> ids;
     for (const auto& row : frame.rows) {
-      REQUIRE(row.size() == 11);
-      const bool impurity = row[0] == "I";
-      CHECK((impurity || row[0] == "H"));
+      REQUIRE(row.size() == 17);
+      CHECK(row[0] == "0");  // Z = 0: ASE's dummy atom, no element
+      const bool impurity = row[1] == "impurity";
+      CHECK((impurity || row[1] == "host"));
+      CHECK(row[2] == (impurity ? "1" : "0"));
+      ids.push_back(std::stol(row[3]));
       impurities += impurity;
+      const double m = std::stod(row[13]);
+      CHECK(m == (impurity ? mass : 1.0));
       double v2 = 0.0;
       for (int k = 0; k < 3; ++k) {
-        const double x = std::stod(row[1 + k]), v = std::stod(row[4 + k]);
+        const double x = std::stod(row[4 + k]), v = std::stod(row[7 + k]), p = std::stod(row[10 + k]);
         CHECK(std::abs(x) <= resolved.region_radius);  // inside the cell
         if (k >= d) CHECK((x == 0.0 && v == 0.0));     // 2D: z = 0
+        CHECK(p == m * v);                             // momenta: ASE's get_velocities divides by masses
         v2 += v * v;
       }
-      const double m = std::stod(row[7]);
-      CHECK(m == (impurity ? mass : 1.0));
-      CHECK(std::stod(row[8]) == (impurity ? resolved.impurity_radius : scene.a));
-      if (row[9] == "0") CHECK(v2 == 0.0);  // a resting particle has no velocity
-      if (std::stol(row[10]) > 0) CHECK((row[9] == "1"));
+      CHECK(std::stod(row[14]) == (impurity ? resolved.impurity_radius : scene.a));
+      if (row[15] == "0") CHECK(v2 == 0.0);  // a resting particle has no velocity
+      if (std::stol(row[16]) > 0) CHECK((row[15] == "1"));
       energy += 0.5 * m * v2;
     }
+    // every particle once, ids ascending
+    CHECK(std::is_sorted(ids.begin(), ids.end()));
+    CHECK(std::adjacent_find(ids.begin(), ids.end()) == ids.end());
     CHECK(impurities == 3);
     CHECK(energy == Approx(E).epsilon(1e-12));
   }
