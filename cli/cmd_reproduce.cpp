@@ -9,6 +9,7 @@
 #include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "compare/reproduce.hpp"
+#include "compare/reproduce_report.hpp"
 
 namespace coldblast::cli {
 

@@ -55,11 +55,4 @@ using ReproduceProgress = std::function<void(const std::string&)>;
 /// report-hydro/, report-tracer/, REPORT.md, summary.json}. Throws std::invalid_argument / std::runtime_error.
 ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProgress& progress = {});
 
-/// The paper's Table 1 beside coldblast's numbers (Markdown; written as table1.md and pasted into
-/// docs/verification.md).
-std::string table1_markdown(const ReproduceResult& result);
-
-/// summary.json of a reproduction (keys in docs/cli.md, `## reproduce`).
-common::Json reproduce_summary(const ReproduceResult& result);
-
 }  // namespace coldblast::compare

@@ -26,6 +26,7 @@
 #include "common/validate.hpp"
 #include "compare/report.hpp"
 #include "compare/reproduce.hpp"
+#include "compare/reproduce_report.hpp"
 #include "compare/run_data.hpp"
 #include "compare/verdict.hpp"
 #include "hydro/options.hpp"
