@@ -6,14 +6,7 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(COPY ${FIXTURE}/ DESTINATION ${WORK}/run)
 
-function(expect what code regex)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE got OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT got STREQUAL "${code}" OR NOT "${out}${err}" MATCHES "${regex}")
-    message(FATAL_ERROR "${what}: exit ${got} (expected ${code}), output should match '${regex}'\n"
-                        "stdout:\n${out}\nstderr:\n${err}")
-  endif()
-  message(STATUS "${what}: exit ${got}")
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect.cmake)
 
 function(require_files)
   foreach(file IN LISTS ARGN)

@@ -11,12 +11,7 @@
 include(${CMAKE_CURRENT_LIST_DIR}/expect_same_outputs.cmake)
 file(REMOVE_RECURSE ${WORK})
 
-function(expect what code regex)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status EQUAL code OR NOT "${out}${err}" MATCHES "${regex}")
-    message(FATAL_ERROR "${what}: exit ${status} (expected ${code}), output not matching '${regex}':\n${out}${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect.cmake)
 # Runs `BINARY ARGN --out folder`, killed after each of `timeouts` seconds in turn, until a run is
 # stopped with some blocks saved and no outputs written; sets `variable` to the saved blocks.
 function(stop_midway folder timeouts variable)

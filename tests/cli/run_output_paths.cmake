@@ -9,14 +9,7 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(profile tvns --points 3 --profile)
 
-function(expect what code regex)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE got OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT got STREQUAL "${code}" OR NOT "${out}${err}" MATCHES "${regex}")
-    message(FATAL_ERROR "${what}: exit ${got} (expected ${code}), output should match '${regex}'\n"
-                        "stdout:\n${out}\nstderr:\n${err}")
-  endif()
-  message(STATUS "${what}: exit ${got}")
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/expect.cmake)
 
 expect("--profile /dev/full" 1 "coldblast: failed: cannot write /dev/full: No space left on device" ${BINARY} ${profile} /dev/full)
 execute_process(COMMAND test -c /dev/full RESULT_VARIABLE is_device)
