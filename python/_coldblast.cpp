@@ -353,29 +353,13 @@ py::dict hydro_run(bool euler, int d, double until, int cells, bool viscosity, s
 
 // ---- MD ---------------------------------------------------------------------------------------
 
-/// The estimates of observables.csv per observable, in output order:
-/// {name: {"t", "mean", "stderr": float64 arrays, "count": int64 array}}.
-py::dict estimate_dict(const run::BlastResult& result) {
-  std::map<std::string, std::vector<const run::ObservableEstimate*>> by_name;
-  std::vector<std::string> order;
-  const std::vector<run::ObservableEstimate> rows = run::estimate_observables(result);
-  for (const auto& row : rows) {
-    if (!by_name.count(row.observable)) order.push_back(row.observable);
-    by_name[row.observable].push_back(&row);
-  }
-  py::dict estimates;
-  for (const std::string& name : order) {
-    const auto& list = by_name[name];
-    py::dict e;
-    e["t"] = column(list, [](const run::ObservableEstimate* r) { return r->t; });
-    e["mean"] = column(list, [](const run::ObservableEstimate* r) { return r->mean; });
-    e["stderr"] = column(list, [](const run::ObservableEstimate* r) { return r->stderr_; });
-    py::array_t<long long> count(static_cast<py::ssize_t>(list.size()));
-    for (std::size_t i = 0; i < list.size(); ++i) count.mutable_data()[i] = list[i]->count;
-    e["count"] = count;
-    estimates[py::str(name)] = e;
-  }
-  return estimates;
+/// A run's files as the run directory holds them (run::blast_files, run::tracer_files): [(name, text)],
+/// in writing order. python/coldblast/_run.py parses them exactly as it parses the files on disk, so
+/// md.run, tracer.run and read_run return the same object.
+py::list file_list(const run::NamedFiles& files) {
+  py::list list;
+  for (const auto& [name, content] : files) list.append(py::make_tuple(name, py::bytes(content)));
+  return list;
 }
 
 /// md run's and md states' scene and ensemble arguments (run/md_run.hpp).
@@ -392,7 +376,7 @@ run::MdRunRequest md_request(const std::string& scene_file, const std::string& s
   return request;
 }
 
-py::dict md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
+py::list md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
                 std::optional<long long> realizations, std::optional<long long> seed, int threads,
                 const std::string& out, bool resume, bool overwrite, const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, resume ? "--resume" : "--out");
@@ -415,17 +399,7 @@ py::dict md_run(const std::string& scene_file, const std::string& scene_text, co
   const std::function<run::BlastResult()> work = [&] { return run::run_blast(plan.config, options); };
   run::BlastResult result = run_interruptible(work, progress);
   if (!out.empty()) run::finish_md_run(result, out);
-  py::dict files, files0;
-  for (const auto& [name, content] : result.realization_files) {
-    files[py::str(name)] = content;
-    if (name.find("_realization_") == std::string::npos) files0[py::str(name)] = content;
-  }
-  py::dict output;
-  output["estimates"] = estimate_dict(result);
-  output["summary"] = json_to_python(run::blast_summary(result));
-  output["realization_files"] = files;
-  output["realization0_files"] = files0;
-  return output;
+  return file_list(run::blast_files(result));
 }
 
 /// md states: the impurities at time t of every realization (run/impurity_states.hpp), as numpy arrays; with
@@ -484,7 +458,7 @@ struct TracerOptions {
   std::string kernel = "auto";
 };
 
-py::dict tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
+py::list tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
                     std::optional<long long> seed, const TracerOptions& o, const std::string& out, bool resume,
                     bool overwrite, const std::vector<std::string>& given, const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, resume ? "--resume" : "--out");
@@ -522,25 +496,7 @@ py::dict tracer_run(const std::string& scene_file, const std::string& scene_text
   };
   const run::TracerResult result = run_interruptible(work, progress);
   if (!out.empty()) run::finish_tracer_run(result, out);
-  py::dict moments;
-  const std::vector<kinetic::MomentRow> rows = kinetic::moment_rows(result.ensemble.scene.times, result.blocks);
-  const auto add = [&](const char* name, double kinetic::MomentRow::*field) {
-    moments[name] = column(rows, [field](const kinetic::MomentRow& r) { return r.*field; });
-  };
-  add("t", &kinetic::MomentRow::t);
-  add("r2", &kinetic::MomentRow::r2);
-  add("r2_error", &kinetic::MomentRow::r2_error);
-  add("r_ratio", &kinetic::MomentRow::r_ratio);
-  add("r_ratio_error", &kinetic::MomentRow::r_ratio_error);
-  add("v2", &kinetic::MomentRow::v2);
-  add("v2_error", &kinetic::MomentRow::v2_error);
-  add("v_ratio", &kinetic::MomentRow::v_ratio);
-  add("v_ratio_error", &kinetic::MomentRow::v_ratio_error);
-  py::dict output;
-  output["estimates"] = estimate_dict(result.ensemble);
-  output["moments"] = moments;
-  output["summary"] = json_to_python(run::tracer_summary(result));
-  return output;
+  return file_list(run::tracer_files(result));
 }
 
 // ---- run directories and verdicts ---------------------------------------------------------------

@@ -161,18 +161,18 @@ common::Json blast_summary(const BlastResult& result) {
 
 namespace {
 
-void write_observables_csv(const BlastResult& result, const std::string& header, const fs::path& directory) {
+std::string observables_csv(const BlastResult& result, const std::string& header) {
   std::ostringstream out;
   out << header << "t,observable,mean,stderr,count\n";
   for (const auto& row : estimate_observables(result))
     out << format_number(row.t) << ',' << row.observable << ',' << number_or_nan(row.mean) << ','
         << number_or_nan(row.stderr_) << ',' << row.count << '\n';
-  common::write_file_atomic(directory / "observables.csv", out.str());
+  return out.str();
 }
 
 /// blocks.csv (scalar sums, read by compare/), accumulators.csv and block_totals.csv (every entry
 /// and block total, exact: read back by merge_blast_outputs).
-void write_block_files(const BlastResult& result, const std::string& header, const fs::path& directory) {
+void add_block_files(const BlastResult& result, const std::string& header, NamedFiles& files) {
   const ResolvedScene& scene = result.scene;
   const ObservableLayout layout(scene);
   std::ostringstream out, acc, totals;
@@ -192,13 +192,12 @@ void write_block_files(const BlastResult& result, const std::string& header, con
           << layout.bin(e) << ',' << format_number(s.sum[e]) << ',' << format_number(s.sum_squares[e]) << '\n';
     totals << b << ',' << s.count << ',' << s.collisions << ',' << format_number(s.energy_error_max) << '\n';
   }
-  common::write_file_atomic(directory / "blocks.csv", out.str());
-  common::write_file_atomic(directory / "accumulators.csv", acc.str());
-  common::write_file_atomic(directory / "block_totals.csv", totals.str());
+  files.emplace_back("blocks.csv", out.str());
+  files.emplace_back("accumulators.csv", acc.str());
+  files.emplace_back("block_totals.csv", totals.str());
 }
 
-void write_profiles_csv(const BlastResult& result, const EnsembleTotals& totals, const std::string& header,
-                        const fs::path& directory) {
+std::string profiles_csv(const BlastResult& result, const EnsembleTotals& totals, const std::string& header) {
   const ResolvedScene& scene = result.scene;
   const ObservableLayout layout(scene);
   const std::vector<double>& S = totals.sum;
@@ -219,12 +218,11 @@ void write_profiles_csv(const BlastResult& result, const EnsembleTotals& totals,
           << number_or_nan(totals.standard_error(e0)) << ',' << format_number(u) << ',' << format_number(T) << ','
           << format_number(count / N) << '\n';
     }
-  common::write_file_atomic(directory / "profiles.csv", out.str());
+  return out.str();
 }
 
 /// p_imp.csv: Eq. (39) [eq:pr]'s radial density in bins of width R(t)/bins, R(t) of Eq. (1).
-void write_p_imp_csv(const BlastResult& result, const EnsembleTotals& totals, const std::string& header,
-                     const fs::path& directory) {
+std::string p_imp_csv(const BlastResult& result, const EnsembleTotals& totals, const std::string& header) {
   const ResolvedScene& scene = result.scene;
   const ObservableLayout layout(scene);
   const double N = static_cast<double>(totals.count);  // streamed as a double, as always
@@ -242,38 +240,43 @@ void write_p_imp_csv(const BlastResult& result, const EnsembleTotals& totals, co
           << N << '\n';
     }
   }
-  common::write_file_atomic(directory / "p_imp.csv", out.str());
+  return out.str();
 }
 
 }  // namespace
 
-std::vector<std::string> write_blast_files(const BlastResult& result, const fs::path& directory) {
-  common::remove_stale_temporaries(directory);  // writes of a killed earlier attempt
+NamedFiles blast_data_files(const BlastResult& result) {
   const ObservableLayout layout(result.scene);
   const std::string header = run_file_header(result.scene, result.run_id);
-  std::vector<std::string> names{"observables.csv", "blocks.csv", "accumulators.csv", "block_totals.csv"};
-  write_observables_csv(result, header, directory);
-  write_block_files(result, header, directory);
+  NamedFiles files{{"observables.csv", observables_csv(result, header)}};
+  add_block_files(result, header, files);
   const EnsembleTotals totals = ensemble_totals(result);
-  if (layout.has_profiles() && totals.count > 0) {
-    write_profiles_csv(result, totals, header, directory);
-    names.push_back("profiles.csv");
-  }
-  if (layout.has_p_imp() && totals.count > 0) {
-    write_p_imp_csv(result, totals, header, directory);
-    names.push_back("p_imp.csv");
-  }
-  for (const auto& [name, content] : result.realization_files) {
+  if (layout.has_profiles() && totals.count > 0)
+    files.emplace_back("profiles.csv", profiles_csv(result, totals, header));
+  if (layout.has_p_imp() && totals.count > 0) files.emplace_back("p_imp.csv", p_imp_csv(result, totals, header));
+  files.insert(files.end(), result.realization_files.begin(), result.realization_files.end());
+  return files;
+}
+
+NamedFiles blast_files(const BlastResult& result) {
+  NamedFiles files = blast_data_files(result);
+  files.emplace_back("summary.json", blast_summary(result).dump(2) + "\n");
+  return files;
+}
+
+void write_run_files(const NamedFiles& files, const std::string& run_id, const std::string& kind,
+                     const fs::path& directory) {
+  common::remove_stale_temporaries(directory);  // writes of a killed earlier attempt
+  std::vector<std::string> names;
+  for (const auto& [name, content] : files) {
     common::write_file_atomic(directory / name, content);
     names.push_back(name);
   }
-  common::write_file_atomic(directory / "summary.json", blast_summary(result).dump(2) + "\n");
-  names.push_back("summary.json");
-  return names;
+  write_manifest(directory, {run_id, kind, names});
 }
 
 void write_blast_outputs(const BlastResult& result, const fs::path& directory) {
-  write_manifest(directory, {result.run_id, result.kind, write_blast_files(result, directory)});
+  write_run_files(blast_files(result), result.run_id, result.kind, directory);
 }
 
 namespace {

@@ -77,9 +77,17 @@ std::string run_file_header(const md::ResolvedScene& scene, const std::string& r
                             const common::HeaderFields& extra = {});
 /// Summary document (the content of summary.json).
 common::Json blast_summary(const BlastResult& result);
-/// Writes every file of the run into `directory` (atomically, file by file); returns their names.
-std::vector<std::string> write_blast_files(const BlastResult& result, const std::filesystem::path& directory);
-/// write_blast_files, then manifest.json listing them (run/run_directory.hpp), last.
+/// Every file of the run directory but manifest.json (observables.csv, blocks.csv, ..., the realization
+/// files, summary.json), rendered in writing order: the one schema of a run, which the files on disk and
+/// the Python module's results (python/coldblast/_run.py reads either) both come from.
+NamedFiles blast_files(const BlastResult& result);
+/// blast_files without summary.json (the tracer's run directory writes its own, run/tracer_files.hpp).
+NamedFiles blast_data_files(const BlastResult& result);
+/// Writes `files` into `directory` (atomically, file by file, after removing a killed attempt's
+/// temporaries), then manifest.json listing them (run/run_directory.hpp), last.
+void write_run_files(const NamedFiles& files, const std::string& run_id, const std::string& kind,
+                     const std::filesystem::path& directory);
+/// write_run_files of blast_files.
 void write_blast_outputs(const BlastResult& result, const std::filesystem::path& directory);
 /// Reads shard directories written by write_blast_outputs and combines them exactly, as a new run
 /// (a new run id; the shards' realization files carry it). std::invalid_argument names a shard

@@ -86,7 +86,7 @@ constexpr const char* moment_sums_header = "block,t,r2_sum,r4_sum,v2_sum,v4_sum"
 /// tracer_blocks.csv (per block: the counters and the end-state sums) and moment_sums.csv (per
 /// block and recording time: the sums of r², r⁴, v², v⁴): the exact sums behind the summary's
 /// tracer keys and moments.csv, shortest round-trip decimals, read back by merge_tracer_outputs.
-void write_tracer_blocks(const TracerResult& result, const std::filesystem::path& directory) {
+void add_tracer_blocks(const TracerResult& result, NamedFiles& files) {
   const std::string header =
       run_file_header(result.ensemble.scene, result.ensemble.run_id, {{"background", result.background_description}});
   const auto& times = result.ensemble.scene.times;
@@ -104,8 +104,8 @@ void write_tracer_blocks(const TracerResult& result, const std::filesystem::path
               << format_number(s.moments[4 * k + 1]) << ',' << format_number(s.moments[4 * k + 2]) << ','
               << format_number(s.moments[4 * k + 3]) << '\n';
   }
-  common::write_file_atomic(directory / "tracer_blocks.csv", blocks.str());
-  common::write_file_atomic(directory / "moment_sums.csv", moments.str());
+  files.emplace_back("tracer_blocks.csv", blocks.str());
+  files.emplace_back("moment_sums.csv", moments.str());
 }
 
 /// Reads a tracer shard's tracer_blocks.csv and moment_sums.csv (bad input names the file and line).
@@ -177,8 +177,9 @@ common::Json read_tracer_summary(const std::filesystem::path& path) {
 
 }  // namespace
 
-void write_tracer_outputs(const TracerResult& result, const std::filesystem::path& directory) {
-  std::vector<std::string> files = write_blast_files(result.ensemble, directory);  // summary.json: the tracer's below
+namespace {
+/// moments.csv: r², <r⁴>/<r²>² and the same of the speed per recording time, block-jackknife errors.
+std::string moments_csv(const TracerResult& result) {
   std::ostringstream out;
   out << common::provenance_header({{"run_id", result.ensemble.run_id},
                                     {"scene", result.ensemble.scene.config.name},
@@ -193,12 +194,21 @@ void write_tracer_outputs(const TracerResult& result, const std::filesystem::pat
         << format_number(m.r_ratio) << ',' << format_number(m.r_ratio_error) << ',' << format_number(m.v2) << ','
         << format_number(m.v2_error) << ',' << format_number(m.v_ratio) << ',' << format_number(m.v_ratio_error)
         << '\n';
-  common::write_file_atomic(directory / "moments.csv", out.str());
-  common::write_file_atomic(directory / "prefactors.csv", prefactors_csv(result));
-  write_tracer_blocks(result, directory);
-  common::write_file_atomic(directory / "summary.json", tracer_summary(result).dump(2) + "\n");
-  files.insert(files.end(), {"moments.csv", "prefactors.csv", "tracer_blocks.csv", "moment_sums.csv"});
-  write_manifest(directory, {result.ensemble.run_id, result.ensemble.kind, files});
+  return out.str();
+}
+}  // namespace
+
+NamedFiles tracer_files(const TracerResult& result) {
+  NamedFiles files = blast_data_files(result.ensemble);
+  files.emplace_back("moments.csv", moments_csv(result));
+  files.emplace_back("prefactors.csv", prefactors_csv(result));
+  add_tracer_blocks(result, files);
+  files.emplace_back("summary.json", tracer_summary(result).dump(2) + "\n");
+  return files;
+}
+
+void write_tracer_outputs(const TracerResult& result, const std::filesystem::path& directory) {
+  write_run_files(tracer_files(result), result.ensemble.run_id, result.ensemble.kind, directory);
 }
 
 bool is_tracer_run(const std::filesystem::path& directory) {

@@ -15,6 +15,10 @@ namespace coldblast::run {
 common::Json tracer_summary(const TracerResult& result);
 /// prefactors.csv (kinetic/prefactors.hpp): a provenance header and one line per recording time.
 std::string prefactors_csv(const TracerResult& result);
+/// Every file of the tracer's run directory but manifest.json, rendered in writing order (as
+/// blast_files, run/run_files.hpp): md's files, moments.csv, prefactors.csv, tracer_blocks.csv,
+/// moment_sums.csv, then the tracer's summary.json.
+NamedFiles tracer_files(const TracerResult& result);
 /// Writes the run directory: the md files (observables.csv, blocks.csv, p_imp.csv, ...), then
 /// moments.csv, prefactors.csv, the tracer's exact block sums (tracer_blocks.csv, read back by
 /// merge_tracer_outputs) and the tracer's summary.json.

@@ -1,7 +1,8 @@
 """Progress reporting shared by the long calls: progress=True prints to stderr like the CLI
 (run/progress.hpp): on a terminal one line rewritten in place at most twice a second; elsewhere (a
 log, a notebook's captured stream, a pipe) plain lines without a carriage return, one per 10 % of
-the work or per 30 s, with the elapsed time and the ETA."""
+the work or per 30 s, with the elapsed time and the ETA. In a Jupyter notebook with tqdm installed,
+progress=True draws a tqdm bar instead (``progress="bar"`` asks for one anywhere)."""
 import sys
 import time
 
@@ -51,12 +52,49 @@ class StderrProgress:
         self.stream.flush()
 
 
+class BarProgress:
+    """Callable (done, total) driving a tqdm bar (tqdm.auto: a widget in a notebook, text elsewhere)."""
+
+    def __init__(self, label, unit, tqdm_class):
+        self.label, self.unit, self.tqdm_class, self.bar = label, unit, tqdm_class, None
+
+    def __call__(self, done, total):
+        if self.bar is None:
+            total = int(total) if float(total).is_integer() else total  # realizations, blocks: whole numbers
+            self.bar = self.tqdm_class(total=total, desc=self.label, unit=" " + self.unit)
+        self.bar.update((int(done) if float(done).is_integer() else done) - self.bar.n)
+        if done >= total:
+            self.bar.close()
+
+
+def in_notebook():
+    """True inside a Jupyter kernel (IPython's ZMQ shell), where stderr lines pile up in the cell."""
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if ipython is not None and hasattr(ipython, "get_ipython") else None
+    return shell is not None and type(shell).__name__ == "ZMQInteractiveShell"
+
+
+def _tqdm():
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        return None
+    return tqdm
+
+
 def callback(progress, label, unit, fmt="{:.0f}"):
-    """progress: True (stderr), False/None (silent) or a callable(done, total)."""
-    if progress is True:
+    """progress: True (a tqdm bar in a notebook where tqdm is installed, else lines on stderr),
+    "bar" (a tqdm bar; ValueError without tqdm), "lines" (lines on stderr), False/None (silent) or a
+    callable(done, total)."""
+    if progress == "bar" or (progress is True and in_notebook() and _tqdm() is not None):
+        tqdm = _tqdm()
+        if tqdm is None:
+            raise ValueError('progress = "bar" needs tqdm (Debian: apt install python3-tqdm; pip install tqdm)')
+        return BarProgress(label, unit, tqdm)
+    if progress is True or progress == "lines":
         return StderrProgress(label, unit, fmt)
     if not progress:
         return None
     if not callable(progress):
-        raise ValueError(f"progress = {progress!r} is not True, False or a callable(done, total)")
+        raise ValueError(f'progress = {progress!r} is not True, False, "bar", "lines" or a callable(done, total)')
     return progress

@@ -45,8 +45,9 @@ def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="id
         or "hotspot" (E as heat at rest, uniform within the radius r0 at the ambient density: the MD's
         hot spot; r0 > 0 in mean free paths, r0/lambda; the times then count from the deposition;
         docs/hydro.md, "Starts").
-    progress : bool or callable
-        True: R/lambda on stderr; False: silent; callable(R_over_lambda, until).
+    progress : bool, str or callable
+        True: R/lambda and ETA as a tqdm bar in a Jupyter notebook (where tqdm is installed), as lines
+        on stderr otherwise; "bar" or "lines" to choose; False: silent; callable(done, total).
 
     Returns
     -------

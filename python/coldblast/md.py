@@ -7,6 +7,7 @@ import numpy as np
 
 from . import _coldblast
 from . import _progress
+from ._run import Run
 from ._signals import sigterm_stops
 from ._arguments import integer as _integer
 from ._arguments import number as _number
@@ -93,8 +94,9 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
         finished realization kept in out/checkpoint meanwhile. A folder holding another run's files
         (or an unfinished run's checkpoint) is refused (ValueError) unless ``overwrite``. None
         writes nothing.
-    progress : bool or callable
-        True: realizations done and ETA on stderr; False: silent; callable(done, total).
+    progress : bool, str or callable
+        True: realizations done and ETA as a tqdm bar in a Jupyter notebook (where tqdm is installed), as lines
+        on stderr otherwise; "bar" or "lines" to choose; False: silent; callable(done, total).
     resume : str, os.PathLike or None
         Continue the stopped run in this output directory (``md run --resume``): its scene, shard
         and run id come from its checkpoint; an argument given again must agree with them.
@@ -108,14 +110,12 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
 
     Returns
     -------
-    types.SimpleNamespace with
-        ``estimates``: {observable: {"t", "mean", "stderr": float64 arrays, "count": int64 array}}
-        for the scalar observables (R_imp, V_imp, C_imp, u_imp, n0, T0, R, ...; definitions in
-        docs/md-output.md), i.e. the rows of observables.csv;
-        ``summary``: the content of summary.json (dict);
-        ``realization_files``: {name: text} of the snapshot and trajectory files of the realizations
-        that record them (``realization0_files``: those of realization 0);
-        ``out``: the output directory or None.
+    coldblast.Run, the object ``coldblast.read_run(out)`` gives for the folder (equal DataFrames):
+        ``observables`` (DataFrame t, observable, mean, stderr, count: R_imp, V_imp, C_imp, u_imp, n0,
+        T0, R, ...; definitions in docs/md-output.md; ``estimate(name)`` one of them, ``estimates``
+        all as numpy arrays), ``blocks``, ``profiles``, ``p_imp``, ``trajectories`` (DataFrames or
+        None), ``snapshots`` ({t: Snapshot of numpy arrays}), ``summary`` (summary.json, dict),
+        ``directory`` (``out``, or None when nothing was written).
 
     Raises ValueError with the CLI's exit-2 message for a bad scene or argument (e.g.
     ``E = -1 is outside (0, inf)``), RuntimeError for a failed run, KeyboardInterrupt on Ctrl-C
@@ -133,9 +133,7 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
                                 None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
                                 "" if out is None else os.fspath(out), resume is not None, bool(overwrite),
                                 _progress.callback(progress, "md run", "realizations"))
-    return SimpleNamespace(estimates=raw["estimates"], summary=raw["summary"],
-                           realization_files=raw["realization_files"], realization0_files=raw["realization0_files"],
-                           out=None if out is None else os.fspath(out))
+    return Run(raw, out, "md run")
 
 
 def states(time, scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, overwrite=False,

@@ -1,10 +1,10 @@
 """The impurity's kinetic equation, paper Eq. (36), by exact null-collision Monte Carlo in a
 Navier-Stokes, TvNS or equilibrium host background (``coldblast tracer``; docs/kinetic.md)."""
 import os
-from types import SimpleNamespace
 
 from . import _coldblast
 from . import _progress
+from ._run import Run
 from ._signals import sigterm_stops
 from ._arguments import integer, number, text
 from .md import scene_arguments
@@ -58,21 +58,20 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         "auto" (the widest vector kernel the CPU runs, for ns and tvns; else the scalar loop), "avx512",
         "avx2", "sse4", "neon" or "scalar": the same process with other deviates, so other sample paths;
         the summary's "kernel" says which ran.
-    progress : bool or callable
-        True: blocks done and ETA on stderr; False: silent; callable(done, total).
+    progress : bool, str or callable
+        True: blocks done and ETA as a tqdm bar in a Jupyter notebook (where tqdm is installed), as lines
+        on stderr otherwise; "bar" or "lines" to choose; False: silent; callable(done, total).
     **overrides
         Scene keys to override, as ``--set key=value`` (``t_max=500``, ``impurities={"count": 2}``).
 
     Returns
     -------
-    types.SimpleNamespace with
-        ``estimates``: {observable: {"t", "mean", "stderr", "count"}} (R_imp, V_imp, C_imp, u_imp, ...),
-        the rows of observables.csv;
-        ``moments``: {"t", "r2", "r_ratio", "v2", "v_ratio" and their "_error"s} of moments.csv
-        (r_ratio = <r^4>/<r^2>^2 of the displacement, v_ratio the same for the speed);
-        ``summary``: summary.json's keys (collision_rate, collision_rate_error, chi,
-        temperature_final, rejection_rate, ...; docs/kinetic.md);
-        ``out``: the run directory or None.
+    coldblast.Run, the object ``coldblast.read_run(out)`` gives for the folder (equal DataFrames):
+        ``observables`` (R_imp, V_imp, C_imp, u_imp, ...; ``estimate(name)``, ``estimates``),
+        ``blocks``, ``p_imp``, ``moments`` (DataFrame of moments.csv: t, r2, r4_over_r2_squared,
+        v2, v4_over_v2_squared and their _stderr), ``prefactors`` (prefactors.csv), ``summary``
+        (summary.json: collision_rate, collision_rate_error, chi, temperature_final,
+        rejection_rate, ...; docs/kinetic.md), ``directory`` (``out`` or None).
 
     Raises ValueError with the CLI's exit-2 message for bad input (e.g. ``--background = plasma is
     not one of ...``), KeyboardInterrupt on Ctrl-C (with ``out`` every finished block stays in
@@ -102,5 +101,4 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
                                     "" if start_states is None else os.fspath(start_states),
                                     text(kernel, "--kernel"), "" if out is None else os.fspath(out), resume is not None,
                                     bool(overwrite), given, _progress.callback(progress, "tracer", "blocks"))
-    return SimpleNamespace(estimates=raw["estimates"], moments=raw["moments"], summary=raw["summary"],
-                           out=None if out is None else os.fspath(out))
+    return Run(raw, out, "tracer")

@@ -67,8 +67,8 @@ def test_extxyz_frames(tmp_path, d, E, mass):
         assert (velo[moving == 0] == 0).all()
     # The moving particles of the last frame match snapshot_20.csv of the same realization.
     csv = coldblast.read_run(tmp_path).snapshots[20.0]
-    assert int(csv["moving"].sum()) == int(np.array([r[15] for r in parsed[-1][1]], dtype=int).sum())
-    np.testing.assert_array_equal(csv["id"].to_numpy(), np.array([r[3] for r in parsed[-1][1]], dtype=int))
+    assert int(csv.moving.sum()) == int(np.array([r[15] for r in parsed[-1][1]], dtype=int).sum())
+    np.testing.assert_array_equal(csv.id, np.array([r[3] for r in parsed[-1][1]], dtype=int))
 
 
 @pytest.mark.parametrize("d", [2, 3])

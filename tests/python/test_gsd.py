@@ -38,11 +38,11 @@ def test_gsd_round_trip(tmp_path, d, E, mass):
             assert bytes(frame.log["coldblast/run_id"]).decode() == run.summary["run_id"]
             # the snapshot's own subset, particle for particle (snapshot_<t>.csv holds the same ids)
             ids = frame.log["particles/id"]
-            np.testing.assert_array_equal(ids, csv[t]["id"].to_numpy())
+            np.testing.assert_array_equal(ids, csv[t].id)
             assert p.N == len(ids) == len(csv[t])
             assert p.types == ["host", "impurity"]
             impurity = p.typeid == 1
-            np.testing.assert_array_equal(impurity, csv[t]["impurity"].to_numpy() == 1)
+            np.testing.assert_array_equal(impurity, csv[t].impurity)
             assert np.count_nonzero(impurity) == 3
             assert (p.mass[impurity] == np.float32(mass)).all() and (p.mass[~impurity] == 1.0).all()
             assert (p.diameter[~impurity] == np.float32(2 * run.summary["a"])).all()
@@ -53,7 +53,7 @@ def test_gsd_round_trip(tmp_path, d, E, mass):
             assert 0.5 * np.sum(masses * np.sum(velocity**2, axis=1)) == pytest.approx(E, rel=1e-12)
             if d == 2:
                 assert not p.position[:, 2].any() and frame.configuration.box[2] == 0
-            np.testing.assert_allclose(p.position[:, :d], csv[t][["x", "y", "z"][:d]].to_numpy(), rtol=1e-6, atol=1e-4)
+            np.testing.assert_allclose(p.position[:, :d], csv[t].position, rtol=1e-6, atol=1e-4)
 
 
 def test_gsd_command_line(tmp_path):
