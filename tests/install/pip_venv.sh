@@ -4,12 +4,21 @@
 # venv's interpreter, and the package imports from another folder with its version and commit.
 # To keep CI short, only the extension is compiled: the libraries come from this build
 # (-DCOLDBLAST_LIBRARIES_FROM, docs/python.md); the full route is the same CMake code as BUILD_DIR's.
-# Usage: pip_venv.sh PYTHON SOURCE_DIR BUILD_DIR WORK_DIR VERSION
+# With a 6th argument `borrow`, PYTHON is another interpreter of the same minor version (a pyenv
+# Python): offline it has no numpy, so its venv borrows Debian's numpy and pandas through a .pth
+# file, as a user would point a pyenv or conda Python at their own numpy; the build is for PYTHON.
+# Usage: pip_venv.sh PYTHON SOURCE_DIR BUILD_DIR WORK_DIR VERSION [borrow]
 set -eu
-python=$1 source=$2 build=$3 work=$4 version=$5
+python=$1 source=$2 build=$3 work=$4 version=$5 numpy=${6:-system}
 rm -rf "$work"
 mkdir -p "$work"
-"$python" -m venv --system-site-packages "$work/venv" || { echo "no venv: Debian's python3-venv is missing (scripts/bootstrap.sh)"; exit 1; }
+if [ "$numpy" = borrow ]; then
+  "$python" -m venv "$work/venv" || { echo "no venv from $python"; exit 1; }
+  "$work/venv/bin/python" -c 'import sysconfig; print(sysconfig.get_path("purelib"))' >"$work/site"
+  echo /usr/lib/python3/dist-packages >"$(cat "$work/site")/debian-dist-packages.pth"
+else
+  "$python" -m venv --system-site-packages "$work/venv" || { echo "no venv: Debian's python3-venv is missing (scripts/bootstrap.sh)"; exit 1; }
+fi
 venv=$work/venv/bin/python
 
 cd "$source"
