@@ -30,6 +30,7 @@
 #include "compare/run_data.hpp"
 #include "compare/verdict.hpp"
 #include "hydro/options.hpp"
+#include "hydro/result_files.hpp"
 #include "kinetic/tracer_config.hpp"
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
@@ -238,99 +239,28 @@ py::dict tvns_profile(const hydro::TvnsSolution& s,
 
 // ---- hydro ------------------------------------------------------------------------------------
 
+/// A result table (hydro/result_files.hpp) as {column: float64 array}.
+py::dict table_dict(const hydro::Table& table) {
+  py::dict columns;
+  for (const hydro::Column& c : table) columns[py::str(c.name)] = array(c.values);
+  return columns;
+}
+
+/// The result's one schema (hydro/result_files.hpp): the summary the CLI prints as JSON, and the
+/// tables of its files as arrays; python/coldblast/hydro.py makes the attributes from them.
 py::dict hydro_result(const hydro::NavierStokesResult& r) {
-  py::dict samples;
-  using S = hydro::NavierStokesSample;
-  const auto& ss = r.samples;
-  samples["t"] = column(ss, [](const S& s) { return s.t; });
-  samples["R_over_lambda"] = column(ss, [](const S& s) { return s.R_over_lambda; });
-  samples["R"] = column(ss, [](const S& s) { return s.R; });
-  samples["H"] = column(ss, [](const S& s) { return s.H; });
-  samples["H_density"] = column(ss, [](const S& s) { return s.H_density; });
-  samples["n0"] = column(ss, [](const S& s) { return s.n0; });
-  samples["T0"] = column(ss, [](const S& s) { return s.T0; });
-  samples["p0"] = column(ss, [](const S& s) { return s.p0; });
-  samples["energy"] = column(ss, [](const S& s) { return s.energy; });
-  samples["mass"] = column(ss, [](const S& s) { return s.mass; });
-  samples["energy_error"] = column(ss, [](const S& s) { return s.energy_error; });
-  samples["H_prefactor"] = column(ss, [](const S& s) { return s.H_prefactor; });
-  samples["n0_prefactor"] = column(ss, [](const S& s) { return s.n0_prefactor; });
-  samples["T0_prefactor"] = column(ss, [](const S& s) { return s.T0_prefactor; });
-  samples["p0_scaled"] = column(ss, [](const S& s) { return s.p0_scaled; });
-  py::dict exponents;
-  using E = hydro::RunningExponents;
-  const auto& es = r.exponents;
-  exponents["t"] = column(es, [](const E& e) { return e.t; });
-  exponents["R_over_lambda"] = column(es, [](const E& e) { return e.R_over_lambda; });
-  exponents["R"] = column(es, [](const E& e) { return e.R; });
-  exponents["H"] = column(es, [](const E& e) { return e.H; });
-  exponents["H_density"] = column(es, [](const E& e) { return e.H_density; });
-  exponents["n0"] = column(es, [](const E& e) { return e.n0; });
-  exponents["T0"] = column(es, [](const E& e) { return e.T0; });
-  exponents["H_in_R"] = column(es, [](const E& e) { return e.H_in_R; });
-  exponents["H_density_in_R"] = column(es, [](const E& e) { return e.H_density_in_R; });
-  exponents["n0_in_R"] = column(es, [](const E& e) { return e.n0_in_R; });
-  exponents["T0_in_R"] = column(es, [](const E& e) { return e.T0_in_R; });
   py::list profiles;
   for (const hydro::NavierStokesProfile& p : r.profiles) {
-    py::dict profile;
+    py::dict profile = table_dict(hydro::profile_table(p));
     profile["t"] = p.t;
     profile["R"] = p.R;
-    profile["r"] = array(p.r);
-    profile["r_over_R"] = array(p.r_over_R);
-    profile["density"] = array(p.density);
-    profile["velocity"] = array(p.velocity);
-    profile["temperature"] = array(p.temperature);
-    profile["pressure"] = array(p.pressure);
-    profile["heat_flux"] = array(p.heat_flux);
     profiles.append(profile);
   }
-  const hydro::RunningExponents f = r.final_exponents();
-  const hydro::NavierStokesSample& s = r.final_sample();
-  py::dict final_exponents;
-  final_exponents["H"] = f.H;
-  final_exponents["n0"] = f.n0;
-  final_exponents["T0"] = f.T0;
-  final_exponents["R"] = f.R;
-  py::dict prefactors;
-  prefactors["H"] = s.H_prefactor;
-  prefactors["n0"] = s.n0_prefactor;
-  prefactors["T0"] = s.T0_prefactor;
   py::dict out;
-  out["d"] = r.config.physics.d;
-  out["eos"] = hydro::to_string(r.config.physics.eos);
-  out["phi"] = r.config.physics.phi;
-  out["transport"] = hydro::to_string(r.config.physics.transport);
-  out["start"] = hydro::to_string(r.config.physics.start);
-  out["r0"] = r.config.physics.r0_over_lambda;
-  out["start_R_over_lambda"] = *r.config.numerics.start_R_over_lambda;
-  out["R_over_lambda"] = s.R_over_lambda;
-  out["final_exponents"] = final_exponents;
-  out["prefactors"] = prefactors;
-  out["p0_scaled"] = s.p0_scaled;
-  out["lambda"] = r.lambda;
-  out["kappa_prefactor"] = r.kappa_prefactor;
-  out["viscosity_prefactor"] = r.viscosity_prefactor;
-  out["A_reference"] = r.A_reference;
-  out["A_measured"] = r.A_measured;
-  out["energy_error"] = r.max_energy_error;
-  out["cells"] = r.config.numerics.cells;
-  out["wall_seconds"] = r.statistics.wall_seconds;
-  out["rhs_evaluations"] = r.statistics.rhs_evaluations;
-  out["samples"] = samples;
-  out["exponents"] = exponents;
+  out["summary"] = json_to_python(hydro::result_summary(r));
+  out["samples"] = table_dict(hydro::sample_table(r));
+  out["exponents"] = table_dict(hydro::exponent_table(r));
   out["profiles"] = profiles;
-  if (!r.config.physics.heat_conduction) {
-    const hydro::TvnsComparison c = hydro::compare_to_tvns(r);
-    py::dict tvns;
-    tvns["A_measured"] = c.A_measured;
-    tvns["A_exact"] = c.A_exact;
-    tvns["A_relative_error"] = c.A_relative_error;
-    tvns["L1_density"] = c.L1_density;
-    tvns["L1_velocity"] = c.L1_velocity;
-    tvns["L1_pressure"] = c.L1_pressure;
-    out["tvns"] = tvns;
-  }
   return out;
 }
 

@@ -16,7 +16,21 @@ def _run(euler, d, until, cells, viscosity, kappa_prefactor, progress, eos="idea
                                text(eos, "--eos"), number(phi, "--phi"), text(transport, "--transport"),
                                text(start, "--start"), number(r0, "--r0"),
                                _progress.callback(progress, label, "R/lambda", "{:.4g}"))
-    return SimpleNamespace(**raw)
+    return _result(raw)
+
+
+def _result(raw):
+    """The namespace of a result from its one schema (hydro/result_files.hpp): ``summary`` (the dict
+    ``coldblast hydro --format json`` prints), its keys and its model's keys as attributes, and the
+    tables of samples.csv, exponents.csv and the profiles as float64 arrays."""
+    summary = raw["summary"]
+    flat = {key: value for key, value in summary.items() if key not in ("exponents", "model")}
+    result = SimpleNamespace(summary=summary, samples=raw["samples"], exponents=raw["exponents"],
+                             profiles=raw["profiles"], **flat, **summary["model"])
+    result.r0 = summary["model"]["r0_over_lambda"]  # the name of the argument
+    if "exponents" in summary:  # core: the final running exponents (the theory's: ``theory``)
+        result.final_exponents = {name: e["measured"] for name, e in summary["exponents"].items()}
+    return result
 
 
 def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="ideal", phi=0.0, transport="dilute",
@@ -58,10 +72,14 @@ def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="id
         R, H, H_density, n0, T0) and in R/lambda (H_in_R, ...);
         ``profiles``: list of dicts (t, R and float64 arrays r, r_over_R, density, velocity,
         temperature, pressure, heat_flux), the last at R/lambda = until;
-        ``final_exponents`` (H, n0, T0, R), ``theory`` (the exact Fractions), ``prefactors``,
-        ``R_over_lambda``, ``p0_scaled``, ``kappa_prefactor``, ``viscosity_prefactor``,
-        ``energy_error``, ``cells``, ``wall_seconds``, ``rhs_evaluations`` (as the CLI's JSON);
-        ``start``, ``r0`` (r0/lambda) and ``start_R_over_lambda`` (the grid's R_ref/lambda at the start).
+        ``summary``: the dict ``coldblast hydro core --format json`` prints (docs/cli.md), whose keys
+        are also attributes: ``R_over_lambda``, ``prefactors``, ``p0_scaled``, ``lambda``,
+        ``kappa_prefactor``, ``viscosity_prefactor``, ``A_reference``, ``A_measured``,
+        ``energy_error``, ``energy_drift_before_projection``, ``cells``, ``wall_seconds``,
+        ``rhs_evaluations``, and its model's: ``eos``, ``phi``, ``transport``, ``start``,
+        ``r0_over_lambda`` (also ``r0``), ``start_R_over_lambda`` (the grid's R_ref/lambda at the start);
+        ``final_exponents`` (H, n0, T0, R: summary["exponents"][X]["measured"]) and ``theory`` (the
+        exact Fractions).
     Units: m = k_B = 1 with the CLI's E = 1, n = 1, a = 1/2 (lambda = 1 in 2D).
     Ctrl-C raises KeyboardInterrupt within a fraction of a second.
     """
@@ -74,7 +92,8 @@ def core(d=2, until=1e4, cells=0, viscosity=False, kappa_prefactor=None, eos="id
 def euler(d=2, until=500, cells=0, eos="ideal", phi=0.0, progress=True):
     """Euler limit (kappa = mu = 0) against the exact TvNS solution (``coldblast hydro euler``).
 
-    Same arguments and result as :func:`core`, plus ``tvns`` (A_measured, A_exact,
-    A_relative_error, L1_density, L1_velocity, L1_pressure).
+    Same arguments and result as :func:`core` (without final exponents), with the summary's TvNS
+    check as attributes: ``A_measured``, ``A_exact``, ``A_relative_error``, ``profile_L1_error``
+    ({density, velocity, pressure}), ``R_over_initial_width`` (``coldblast hydro euler --format json``).
     """
     return _run(True, d, until, cells, False, None, progress, eos, phi)
