@@ -32,25 +32,17 @@ namespace coldblast::cli {
 
 namespace {
 
+/// md run's flags: the scene, ensemble and folder options bind straight into the library's request.
 struct MdRunOptions {
-  std::string scene_file;
-  std::vector<std::string> set;
-  long long realizations = 0;
-  CLI::Option* realizations_option = nullptr;  // given or not: no value means "the scene's"
-  int threads = 1;
-  long long seed = 0;
-  CLI::Option* seed_option = nullptr;
+  run::MdRunRequest request;
   std::string out = "md-output";
-  std::string shard = "0/1";
-  CLI::Option* shard_option = nullptr;
   std::string resume;      // --resume DIR: continue the checkpoint in DIR/checkpoint
   bool out_given = false;  // --out on the command line (must then equal --resume)
-  bool overwrite = false;  // --overwrite: replace another run's files in --out
   Format format = Format::table;
 };
 
 struct MdStatesOptions {
-  MdRunOptions run;  // scene, --set, --realizations, --seed, --threads (no shards or checkpoints)
+  run::MdRunRequest request;  // scene, --set, --realizations, --seed, --threads (no shards or checkpoints)
   double time = 0.0;
   std::string out = "md-states";
   bool overwrite = false;
@@ -147,13 +139,7 @@ run::BlastResult run_ensemble(const md::BlastConfig& config, const run::RunOptio
 }
 
 void run_md(const MdRunOptions& o) {
-  run::MdRunRequest request;
-  request.scene_file = o.scene_file;
-  request.overrides = o.set;
-  if (o.realizations_option->count() > 0) request.realizations = o.realizations;
-  if (o.seed_option->count() > 0) request.seed = o.seed;
-  request.threads = o.threads;
-  if (o.shard_option->count() > 0) request.shard = o.shard;
+  run::MdRunRequest request = o.request;
   // Every finished realization is checkpointed in OUT/checkpoint (removed once the outputs are
   // written); --resume DIR continues there (DIR is the output directory) with its scene and shard.
   std::string out = o.out;
@@ -166,7 +152,6 @@ void run_md(const MdRunOptions& o) {
   }
   common::require_output_folder(out, o.resume.empty() ? "--out" : "--resume");
   request.out = out;
-  request.overwrite = o.overwrite;
   request.resume_hint = "coldblast md run --resume " + out;
   run::MdRunPlan plan = run::plan_md_run(request);
   const md::BlastConfig& config = plan.config;
@@ -192,18 +177,12 @@ void run_md(const MdRunOptions& o) {
 
 /// md states: the impurities' state at one time in every realization (run/impurity_states.hpp).
 void states_md(const MdStatesOptions& o) {
-  run::MdRunRequest request;
-  request.scene_file = o.run.scene_file;
-  request.overrides = o.run.set;
-  if (o.run.realizations_option->count() > 0) request.realizations = o.run.realizations;
-  if (o.run.seed_option->count() > 0) request.seed = o.run.seed;
-  request.threads = o.run.threads;
-  const run::MdRunPlan plan = run::plan_md_run(request);
+  const run::MdRunPlan plan = run::plan_md_run(o.request);
   common::require_output_folder(o.out, "--out");
   run::claim_output_folder(o.out, "--out", o.overwrite, "coldblast md run --resume " + o.out);
   const md::ResolvedScene scene = run::resolve_blast_scene(plan.config);
   Progress progress(o.time, "md states");
-  const auto states = run::impurity_states(scene, o.time, plan.config.realizations, o.run.threads,
+  const auto states = run::impurity_states(scene, o.time, plan.config.realizations, o.request.threads,
                                            [&progress](long long done, long long total) { progress(done, total); });
   const std::filesystem::path file = run::write_impurity_states(o.out, states, plan.config, o.time);
   if (o.format == Format::json) {
@@ -310,80 +289,82 @@ void equilibrium_md(const MdEquilibriumOptions& o) {
               r.wall_seconds, r.collisions_per_second);
 }
 
-}  // namespace
-
-void add_md_command(CLI::App& app) {
-  CLI::App* md =
-      app.add_subcommand("md", "Event-driven MD of the blast in a zero-temperature hard-sphere gas (paper Sec. V)");
-  md->require_subcommand(1);
-
-  auto run = std::make_shared<MdRunOptions>();
-  CLI::App* run_command =
-      md->add_subcommand("run", "Run an ensemble of blast realizations of a TOML scene (default: the embedded scene)");
-  run_command->add_option("SCENE", run->scene_file, "Scene file (TOML); keys in docs/md-output.md");
-  run_command->add_option("--set", run->set,
-                          "Override a scene key: key=value (repeatable; e.g. --set E=20 --set impurities.count=2)");
-  run->realizations_option =
-      run_command->add_option("--realizations", run->realizations, "Number of realizations (overrides the scene)");
-  run_command->add_option("--threads", run->threads, "Worker threads (results are identical for any count)")
+/// SCENE, --set, --realizations, --seed, --threads of md run and md states, into the library's request.
+void add_scene_options(CLI::App& command, run::MdRunRequest& request) {
+  command.add_option("SCENE", request.scene_file, "Scene file (TOML); keys in docs/md-output.md");
+  command.add_option("--set", request.overrides,
+                     "Override a scene key: key=value (repeatable; e.g. --set E=20 --set impurities.count=2)");
+  command.add_option_function<long long>(
+      "--realizations", [&request](const long long& n) { request.realizations = n; },
+      "Number of realizations (overrides the scene)");
+  command.add_option_function<long long>(
+      "--seed", [&request](const long long& seed) { request.seed = seed; }, "Master seed (overrides the scene; >= 0)");
+  command.add_option("--threads", request.threads, "Worker threads (results are identical for any count)")
       ->capture_default_str();
-  run->seed_option = run_command->add_option("--seed", run->seed, "Master seed (overrides the scene; >= 0)");
+}
+
+void add_run_command(CLI::App& md) {
+  auto run = std::make_shared<MdRunOptions>();
+  CLI::App* command =
+      md.add_subcommand("run", "Run an ensemble of blast realizations of a TOML scene (default: the embedded scene)");
+  add_scene_options(*command, run->request);
   CLI::Option* out_option =
-      run_command
+      command
           ->add_option("--out", run->out,
                        "Output directory: one run (files with its run id, manifest.json); finished realizations are "
                        "checkpointed in OUT/checkpoint until the run ends")
           ->capture_default_str();
-  run->shard_option =
-      run_command->add_option("--shard", run->shard, "Run only blocks i, i+n, ... of the ensemble: i/n (default 0/1)");
-  run_command->add_option("--resume", run->resume,
-                          "Continue a stopped or killed run in output directory DIR with the scene, options and run id "
-                          "of its checkpoint, running only the missing realizations (an option given again must "
-                          "agree with the checkpoint)");
-  run_command->add_flag("--overwrite", run->overwrite,
-                        "Replace the files of another run (or an unfinished run's checkpoint) in --out: exactly "
-                        "those of its manifest.json");
-  add_format_option(*run_command, run->format);
-  run_command->callback([run, out_option] {
+  command->add_option_function<std::string>(
+      "--shard", [run](const std::string& shard) { run->request.shard = shard; },
+      "Run only blocks i, i+n, ... of the ensemble: i/n (default 0/1)");
+  command->add_option("--resume", run->resume,
+                      "Continue a stopped or killed run in output directory DIR with the scene, options and run id "
+                      "of its checkpoint, running only the missing realizations (an option given again must "
+                      "agree with the checkpoint)");
+  command->add_flag("--overwrite", run->request.overwrite,
+                    "Replace the files of another run (or an unfinished run's checkpoint) in --out: exactly "
+                    "those of its manifest.json");
+  add_format_option(*command, run->format);
+  command->callback([run, out_option] {
     run->out_given = out_option->count() > 0;
     common::install_stop_handlers();  // SIGINT/SIGTERM end the run between realizations, blocks saved
     run_md(*run);
   });
+}
 
+void add_states_command(CLI::App& md) {
   auto states = std::make_shared<MdStatesOptions>();
-  CLI::App* states_command = md->add_subcommand(
+  CLI::App* command = md.add_subcommand(
       "states",
       "Write the impurities' positions, velocities and collision counts at one time in every realization "
       "(the realizations of md run; to start coldblast tracer --start states from)");
-  states_command->add_option("SCENE", states->run.scene_file, "Scene file (TOML); keys in docs/md-output.md");
-  states_command->add_option("--set", states->run.set, "Override a scene key: key=value (repeatable)");
-  states->run.realizations_option =
-      states_command->add_option("--realizations", states->run.realizations, "Realizations (overrides the scene)");
-  states->run.seed_option = states_command->add_option("--seed", states->run.seed, "Master seed (overrides the scene)");
-  states_command->add_option("--threads", states->run.threads, "Worker threads (results are identical for any count)")
+  add_scene_options(*command, states->request);
+  command->add_option("--time", states->time, "Time of the states, in (0, t_max] of the scene")->required();
+  command->add_option("--out", states->out, "Output directory (impurity_states.csv, manifest.json)")
       ->capture_default_str();
-  states_command->add_option("--time", states->time, "Time of the states, in (0, t_max] of the scene")->required();
-  states_command->add_option("--out", states->out, "Output directory (impurity_states.csv, manifest.json)")
-      ->capture_default_str();
-  states_command->add_flag("--overwrite", states->overwrite,
-                           "Replace the files of another run in --out (exactly those of its manifest.json)");
-  add_format_option(*states_command, states->format);
-  states_command->callback([states] {
+  command->add_flag("--overwrite", states->overwrite,
+                    "Replace the files of another run in --out (exactly those of its manifest.json)");
+  add_format_option(*command, states->format);
+  command->callback([states] {
     common::install_stop_handlers();
     states_md(*states);
   });
+}
 
+void add_merge_command(CLI::App& md) {
   auto merge = std::make_shared<MdMergeOptions>();
-  CLI::App* merge_command = md->add_subcommand("merge", "Combine the output directories of shards exactly");
+  CLI::App* merge_command = md.add_subcommand("merge", "Combine the output directories of shards exactly");
   merge_command->add_option("DIR", merge->inputs, "Shard output directories")->required();
   merge_command->add_option("--out", merge->out, "Output directory (a new run: its own run id)")->required();
   merge_command->add_flag("--overwrite", merge->overwrite,
                           "Replace the files of another run in --out (exactly those of its manifest.json)");
   add_format_option(*merge_command, merge->format);
   merge_command->callback([merge] { merge_md(*merge); });
+}
 
+void add_equilibrium_command(CLI::App& md) {
   auto eq = std::make_shared<MdEquilibriumOptions>();
-  CLI::App* eq_command = md->add_subcommand(
+  CLI::App* eq_command = md.add_subcommand(
       "equilibrium", "Equilibrium hard spheres in a periodic box: Z = beta P/n, the collision rate, self-diffusion");
   eq_command->add_option("--d", eq->config.d, "Dimension (2 or 3)")->capture_default_str();
   eq_command->add_option("--phi", eq->config.phi, "Packing fraction (0..0.7 in 2D, 0..0.5 in 3D)")
@@ -402,6 +383,18 @@ void add_md_command(CLI::App& app) {
       ->capture_default_str();
   add_format_option(*eq_command, eq->format);
   eq_command->callback([eq] { equilibrium_md(*eq); });
+}
+
+}  // namespace
+
+void add_md_command(CLI::App& app) {
+  CLI::App* md =
+      app.add_subcommand("md", "Event-driven MD of the blast in a zero-temperature hard-sphere gas (paper Sec. V)");
+  md->require_subcommand(1);
+  add_run_command(*md);
+  add_states_command(*md);
+  add_merge_command(*md);
+  add_equilibrium_command(*md);
 }
 
 }  // namespace coldblast::cli
