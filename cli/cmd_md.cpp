@@ -224,23 +224,8 @@ void merge_md(const MdMergeOptions& o) {
   print_summary(result, o.out, o.format);
 }
 
-void equilibrium_md(const MdEquilibriumOptions& o) {
-  // The library validates its fields; the messages name this command's flags.
-  static const common::FieldNames flags = {{"d", "--d"},
-                                           {"phi", "--phi"},
-                                           {"particles", "--particles"},
-                                           {"collisions", "--collisions"},
-                                           {"blocks", "--blocks"},
-                                           {"queue", "--queue"},
-                                           {"diffusion_lag", "--diffusion-lag"},
-                                           {"diffusion_windows", "--diffusion-windows"}};
-  common::with_field_names(flags, [&] { o.config.validate(); });
-  ProgressPacer pacer;
-  const md::EquilibriumResult r =
-      md::run_equilibrium(o.config, [&pacer](const char* stage, long long done, long long total) {
-        if (pacer.due(done == 0 || done == total))
-          std::fprintf(stderr, "md equilibrium: %s %lld/%lld\n", stage, done, total);
-      });
+/// md equilibrium --format json (keys in docs/cli.md).
+common::Json equilibrium_json(const md::EquilibriumResult& r) {
   common::Json j;
   j["d"] = r.config.d;
   j["phi"] = r.config.phi;
@@ -270,8 +255,28 @@ void equilibrium_md(const MdEquilibriumOptions& o) {
     j["diffusion_sample_interval"] = r.diffusion_sample_interval;
     j["center_of_mass_error"] = r.center_of_mass_error;
   }
+  return j;
+}
+
+void equilibrium_md(const MdEquilibriumOptions& o) {
+  // The library validates its fields; the messages name this command's flags.
+  static const common::FieldNames flags = {{"d", "--d"},
+                                           {"phi", "--phi"},
+                                           {"particles", "--particles"},
+                                           {"collisions", "--collisions"},
+                                           {"blocks", "--blocks"},
+                                           {"queue", "--queue"},
+                                           {"diffusion_lag", "--diffusion-lag"},
+                                           {"diffusion_windows", "--diffusion-windows"}};
+  common::with_field_names(flags, [&] { o.config.validate(); });
+  ProgressPacer pacer;
+  const md::EquilibriumResult r =
+      md::run_equilibrium(o.config, [&pacer](const char* stage, long long done, long long total) {
+        if (pacer.due(done == 0 || done == total))
+          std::fprintf(stderr, "md equilibrium: %s %lld/%lld\n", stage, done, total);
+      });
   if (o.format == Format::json) {
-    print_json(j);
+    print_json(equilibrium_json(r));
     return;
   }
   std::printf("hard %s, d = %d, phi = %g, N = %lld (periodic, T = 1)\n", r.config.d == 2 ? "discs" : "spheres",

@@ -9,7 +9,7 @@ build=${COLDBLAST_BUILD_DIR:-$here/build}
 packages=(build-essential cmake git pkg-config
           libsundials-dev libgsl-dev libeigen3-dev libboost-dev libhwy-dev
           catch2 libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-          libbenchmark-dev gnuplot-nox poppler-utils openmpi-bin libopenmpi-dev clang-format
+          libbenchmark-dev gnuplot-nox poppler-utils openmpi-bin libopenmpi-dev clang-format universal-ctags
           python3-dev pybind11-dev python3-numpy python3-pandas python3-pytest python3-matplotlib python3-ase python3-gsd python3-tqdm
           python3-venv python3-wheel)  # the pip route's test: a venv (its pip and setuptools) + wheel's bdist_wheel
 missing=()

@@ -116,3 +116,20 @@ def test_block_jackknife_of_a_mean_is_the_standard_error():
     means = np.array(parts) / 4
     assert np.allclose(value, means.mean(axis=0), rtol=1e-14)
     assert np.allclose(error, means.std(axis=0, ddof=1) / np.sqrt(25), rtol=1e-12)
+
+
+def test_code_sizes_lists_every_module_with_its_largest_file():
+    out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "code_sizes.py"), "--limit", "40", REPO],
+                         capture_output=True, text=True, check=True).stdout
+    rows = re.findall(r"^\| (\w+) \| (\S+) \((\d+)\) \| (\S+) in (\S+):(\d+) \((\d+)\) \|$", out, flags=re.M)
+    assert [r[0] for r in rows] == ["common", "theory", "hydro", "md", "run", "kinetic", "compare", "cli", "python"]
+    for module, largest, lines, _, where, first, length in rows:
+        folder = os.path.join(REPO, module)
+        counts = {name: sum(1 for _ in open(os.path.join(folder, name), encoding="utf-8"))
+                  for name in os.listdir(folder) if name.endswith((".cpp", ".hpp"))}
+        assert int(lines) == max(counts.values()) == counts[os.path.basename(largest)], module
+        assert where.startswith(module + "/") and int(first) >= 1
+    # Every function over the limit is listed, longest first, and the modules' longest is among them.
+    listed = [int(n) for n in re.findall(r"^ +(\d+)  ", out, flags=re.M)]
+    assert listed == sorted(listed, reverse=True) and all(n > 40 for n in listed)
+    assert max(int(r[6]) for r in rows) == listed[0]
