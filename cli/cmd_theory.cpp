@@ -92,7 +92,11 @@ void print_prefactors(int d) {
                "(R/lambda)^h_d,\n  Eq. (6); V_imp, Eq. (8); C_imp, Eq. (10)) computed by coldblast tracer (Monte Carlo "
                "of Eq. (36)), not\n  derived in the paper; +- block-jackknife standard error\n";
   char line[200];
-  std::snprintf(line, sizeof line, "  %-12s %-22s %-22s %-22s %s\n", "R/lambda", "R_imp", "V_imp", "C_imp", "source");
+  // The tracer's prefactor observables (R_imp, V_imp, C_imp), one column each.
+  const std::vector<std::string> columns = theory::observable_names(theory::is_tracer_prefactor);
+  if (columns.size() != 3) throw std::logic_error("coldblast theory: the prefactor table has 3 columns");
+  std::snprintf(line, sizeof line, "  %-12s %-22s %-22s %-22s %s\n", "R/lambda", columns[0].c_str(), columns[1].c_str(),
+                columns[2].c_str(), "source");
   std::cout << line;
   std::vector<double> times;
   for (const auto& p : all)
@@ -105,7 +109,10 @@ void print_prefactors(int d) {
     int source = -1;
     for (const auto& p : all) {
       if (p.t != t) continue;
-      const int column = std::string(p.observable) == "R_imp" ? 0 : std::string(p.observable) == "V_imp" ? 1 : 2;
+      const auto column =
+          static_cast<std::size_t>(std::find(columns.begin(), columns.end(), p.observable) - columns.begin());
+      if (column == columns.size())
+        throw std::logic_error(std::string("computed prefactor of ") + p.observable + ", not a prefactor observable");
       // ASCII "+-" keeps printf's byte widths aligned.
       std::string text = common::format_measurement(p.value, p.error);
       const std::string plus_minus = " ± ";

@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "common/jackknife.hpp"
 #include "compare/verdict.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
@@ -14,24 +16,13 @@ JackknifedValue jackknife_last(const std::vector<const BlockSeries*>& series,
   const std::size_t blocks = series.front()->block_count();
   for (const auto* s : series)
     if (s->block_count() != blocks) throw std::invalid_argument("blocks.csv: observables have different block counts");
-  const auto value = [&](long excluded) {
-    std::vector<double> args;
-    for (const auto* s : series) args.push_back(s->ensemble_values(excluded).back());
-    return f(args);
-  };
-  JackknifedValue result;
-  result.value = value(-1);
   if (blocks < 2) throw std::invalid_argument("blocks.csv: fewer than 2 blocks, no jackknife error");
-  std::vector<double> partial;
-  double mean = 0;
-  for (std::size_t b = 0; b < blocks; ++b) {
-    partial.push_back(value(static_cast<long>(b)));
-    mean += partial.back() / blocks;
-  }
-  double sum = 0;
-  for (double p : partial) sum += (p - mean) * (p - mean);
-  result.error = std::sqrt((blocks - 1.0) / blocks * sum);
-  return result;
+  const common::Jackknife j = common::block_jackknife(static_cast<long>(blocks), [&](long left_out) {
+    std::vector<double> args;
+    for (const auto* s : series) args.push_back(s->ensemble_values(left_out).back());
+    return std::vector<double>{f(args)};
+  });
+  return {j.value[0], j.error(0)};
 }
 
 namespace {
@@ -106,91 +97,109 @@ double core_knudsen(const ContinuumReference& continuum) {
   return std::isfinite(Kn) && Kn > 0 ? Kn : NAN;
 }
 
+namespace {
+
+/// What every amplitude of one run shares: its series, scene, the MD's last time and the NS values.
+struct AmplitudeInputs {
+  const RunData& run;
+  const BlockSeries& R;
+  double t, n, E;
+  const ContinuumAmplitudes &ns, &ns_error;
+};
+
+/// The shock radius, both sides in one definition when profiles.csv exists (the binned density's
+/// mid-height front in the MD's absolute shells, both in units of the MD's R), else the moving mass
+/// against the NS's conservative front, which differ by a fraction of the front's width (docs/compare.md).
+void measure_shock_radius(const AmplitudeInputs& in, AmplitudeVerdict& v) {
+  const JackknifedValue j = jackknife_last({&in.R}, [](const std::vector<double>& a) { return a[0]; });
+  const CoreSize front = md_front_radius(in.run, in.t);
+  if (std::isfinite(front.H_over_R) && std::isfinite(in.ns.front_over_R)) {
+    v.measured = front.H_over_R * j.value;
+    v.error = std::hypot(front.error * j.value, front.H_over_R * j.error);
+    v.reference = in.ns.front_over_R * j.value;
+    v.reference_error = in.ns_error.front_over_R * j.value;
+    return;
+  }
+  const int d = in.run.d;
+  v.definition = theory::amplitude_info(theory::Amplitude::R).definition_without_profiles;
+  v.measured = j.value;
+  v.error = j.error;
+  v.reference = theory::shock_radius(d, in.E, in.n, in.ns.A, in.t);  // Eq. (1) with the NS blast's A, at t
+  v.reference_error = v.reference * in.ns_error.A / (std::abs(in.ns.A) * (d + 2));
+}
+
+/// Fills `v` (its name, definition, MD and NS values) for amplitude `id`; false when the run does not
+/// record what it needs (n0, T0 in blocks.csv; H/R needs profiles.csv).
+bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, AmplitudeVerdict& v) {
+  const theory::AmplitudeInfo& info = theory::amplitude_info(id);
+  v.amplitude = id;
+  v.name = info.name;
+  v.definition = info.definition;
+  const auto& s = in.run.series;
+  switch (id) {
+    case theory::Amplitude::n0_over_n: {
+      if (!s.count("n0")) return false;
+      const double n = in.n;
+      const JackknifedValue j = jackknife_last({&s.at("n0")}, [n](const std::vector<double>& a) { return a[0] / n; });
+      v.measured = j.value;
+      v.error = j.error;
+      v.reference = in.ns.n0_over_n;
+      v.reference_error = in.ns_error.n0_over_n;
+      return true;
+    }
+    case theory::Amplitude::T0_over_Rdot2: {
+      if (!s.count("T0")) return false;
+      const JackknifedValue j = jackknife_last({&s.at("T0"), &in.R}, [&](const std::vector<double>& a) {
+        const double Rdot = theory::shock_speed_at(in.run.d, a[1], in.t);
+        return a[0] / (Rdot * Rdot);
+      });
+      v.measured = j.value;
+      v.error = j.error;
+      v.reference = in.ns.T0_over_Rdot2;
+      v.reference_error = in.ns_error.T0_over_Rdot2;
+      return true;
+    }
+    case theory::Amplitude::R:
+      measure_shock_radius(in, v);
+      return true;
+    case theory::Amplitude::H_over_R: {
+      const CoreSize H = md_core_size(in.run, in.t);
+      if (!std::isfinite(H.H_over_R)) return false;
+      v.measured = H.H_over_R;
+      v.error = H.error;
+      v.reference = in.ns.H_over_R;
+      v.reference_error = in.ns_error.H_over_R;
+      return true;
+    }
+  }
+  throw std::logic_error("unknown theory::Amplitude");
+}
+
+}  // namespace
+
 std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const ContinuumReference& continuum,
                                                  double sigma) {
   std::vector<AmplitudeVerdict> verdicts;
-  const auto& s = run.series;
-  if (!s.count("R")) return verdicts;
-  const BlockSeries& R = s.at("R");
-  const double t = R.t.back(), n = run.summary["n"].get<double>(), E = run.summary["E"].get<double>();
-  const int d = run.d;
-  const ContinuumAmplitudes& ns = continuum.amplitudes;
-  const ContinuumAmplitudes& ns_error = continuum.errors;
-  const double x = continuum.R_over_lambda_last;
+  if (!run.series.count("R")) return verdicts;
+  const BlockSeries& R = run.series.at("R");
+  const AmplitudeInputs in{run,
+                           R,
+                           R.t.back(),
+                           run.summary["n"].get<double>(),
+                           run.summary["E"].get<double>(),
+                           continuum.amplitudes,
+                           continuum.errors};
   // The first order NS drops: Burnett, O(Kn²), in the core with Kn of the NS core (the model's own
   // estimate of its validity, free of MD noise); λ/R at the shock, which is a few λ thick.
   const double Kn = core_knudsen(continuum);
-  const double core_bound = std::isfinite(Kn) && Kn > 0 ? Kn * Kn : 0.0;
-  AmplitudeVerdict base;
-  base.t = t;
-  base.R_over_lambda = x;
-  base.continuum_bound = core_bound;
-  if (s.count("n0")) {
-    AmplitudeVerdict v = base;
-    v.name = "n0/n";
-    v.definition = "particles per volume in the ball that held 100 particles at t = 0, over n";
-    const JackknifedValue j = jackknife_last({&s.at("n0")}, [n](const std::vector<double>& a) { return a[0] / n; });
-    v.measured = j.value;
-    v.error = j.error;
-    v.reference = ns.n0_over_n;
-    v.reference_error = ns_error.n0_over_n;
-    verdicts.push_back(judge_amplitude(v, sigma));
-  }
-  if (s.count("T0")) {
-    AmplitudeVerdict v = base;
-    v.name = "T0/Rdot^2";
-    v.definition = "(2/d) kinetic energy per particle in that ball, over (2R/((d+2)t))^2";
-    const JackknifedValue j = jackknife_last({&s.at("T0"), &R}, [&](const std::vector<double>& a) {
-      const double Rdot = theory::shock_speed_at(d, a[1], t);
-      return a[0] / (Rdot * Rdot);
-    });
-    v.measured = j.value;
-    v.error = j.error;
-    v.reference = ns.T0_over_Rdot2;
-    v.reference_error = ns_error.T0_over_Rdot2;
-    verdicts.push_back(judge_amplitude(v, sigma));
-  }
-  {
-    AmplitudeVerdict v = base;
-    v.name = "R";
-    v.continuum_bound = 1.0 / x;
-    const double R_ns = theory::shock_radius(d, E, n, ns.A, t);  // Eq. (1) with the NS blast's A, at t
-    const CoreSize front = md_front_radius(run, t);
-    if (std::isfinite(front.H_over_R) && std::isfinite(ns.front_over_R)) {
-      // One definition on both sides: the binned density's mid-height front in the MD's absolute shells.
-      v.definition =
-          "shock front: where the density in the MD's shells (profiles.csv) falls to the midpoint of its "
-          "peak and n, both sides in the same absolute shells at the MD's last time";
-      // Both fronts are in units of the MD's R (the NS's in the MD's absolute shells at the same t).
-      const JackknifedValue j = jackknife_last({&R}, [](const std::vector<double>& a) { return a[0]; });
-      v.measured = front.H_over_R * j.value;
-      v.error = std::hypot(front.error * j.value, front.H_over_R * j.error);
-      v.reference = ns.front_over_R * j.value;
-      v.reference_error = ns_error.front_over_R * j.value;
-    } else {
-      // Without profiles there is no shared definition: the moving mass against the NS's
-      // conservative front, which differ by a fraction of the front's width (docs/compare.md).
-      v.definition =
-          "shock radius from the moving mass; NS: (E t^2/(n A))^(1/(d+2)) with A of the NS blast at that "
-          "R/lambda (two definitions: no profiles.csv)";
-      const JackknifedValue j = jackknife_last({&R}, [](const std::vector<double>& a) { return a[0]; });
-      v.measured = j.value;
-      v.error = j.error;
-      v.reference = R_ns;
-      v.reference_error = R_ns * ns_error.A / (std::abs(ns.A) * (d + 2));
-    }
-    verdicts.push_back(judge_amplitude(v, sigma));
-  }
-  const CoreSize H = md_core_size(run, t);
-  if (std::isfinite(H.H_over_R)) {
-    AmplitudeVerdict v = base;
-    v.name = "H/R";
-    v.definition = "r/R where the density, in the MD's r/R bins, first reaches twice its innermost bin";
-    v.measured = H.H_over_R;
-    v.error = H.error;
-    v.reference = ns.H_over_R;
-    v.reference_error = ns_error.H_over_R;
-    verdicts.push_back(judge_amplitude(v, sigma));
+  for (const theory::AmplitudeInfo& info : theory::amplitude_catalogue()) {
+    AmplitudeVerdict v;
+    v.t = in.t;
+    v.R_over_lambda = continuum.R_over_lambda_last;
+    v.continuum_bound = info.id == theory::Amplitude::R ? 1.0 / continuum.R_over_lambda_last
+                        : std::isfinite(Kn) && Kn > 0   ? Kn * Kn
+                                                        : 0.0;
+    if (measure_amplitude(info.id, in, v)) verdicts.push_back(judge_amplitude(v, sigma));
   }
   return verdicts;
 }

@@ -9,6 +9,7 @@
 
 #include "compare/continuum.hpp"
 #include "compare/run_data.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::compare {
 
@@ -24,9 +25,10 @@ enum class Outcome { pass, miss, fail };
 std::string to_string(Outcome outcome);
 
 struct AmplitudeVerdict {
-  std::string name;        ///< "n0/n", "T0/Rdot^2", "R", "H/R"
-  std::string definition;  ///< one line: how both sides measure it
-  double t = 0;            ///< the MD time
+  theory::Amplitude amplitude = theory::Amplitude::R;  ///< its catalogue entry (theory/observables.hpp)
+  std::string name;                                    ///< the catalogue's: "n0/n", "T0/Rdot^2", "R", "H/R"
+  std::string definition;                              ///< one line: how both sides measure it
+  double t = 0;                                        ///< the MD time
   double R_over_lambda = 0;
   double measured = 0, error = 0;  ///< MD value and its error (jackknife; H, R: propagated bin errors)
   double reference = 0;            ///< NS at the same R/λ (R: at the same t)
@@ -43,8 +45,9 @@ struct AmplitudeVerdict {
 /// from measured ± error, reference ± reference_error, continuum_bound and k = sigma.
 AmplitudeVerdict judge_amplitude(AmplitudeVerdict v, double sigma);
 
-/// The amplitude verdicts for every amplitude the run records (n0 and T0 need n0, T0 and R in
-/// blocks.csv; R needs R; H needs profiles.csv), at the run's last recorded time; k = sigma.
+/// The amplitude verdicts, in the catalogue's order (theory::amplitude_catalogue), for every amplitude
+/// the run records (n0 and T0 need n0, T0 and R in blocks.csv; R needs R; H needs profiles.csv), at
+/// the run's last recorded time; k = sigma.
 std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const ContinuumReference& continuum, double sigma);
 
 /// Kn = λ n∞/(n0 H) of the continuum's core at the MD's last time (n0 in the MD's ball, H by the

@@ -68,32 +68,44 @@ double HydroReference::exponent(const std::string& observable, double R_over_lam
     throw std::invalid_argument("hydro reference: R/lambda = " + std::to_string(R_over_lambda) +
                                 " is outside the solved range [" + std::to_string(min_R_over_lambda()) + ", " +
                                 std::to_string(max_R_over_lambda()) + "]");
-  const theory::ObservableInfo* info = theory::find_observable(observable);
-  const theory::HydroProxy proxy = info ? info->hydro : theory::HydroProxy{};
-  const std::string quantity = proxy.quantity;
-  if (quantity == "collisions") {  // Eq. (10) [C-imp] integrated along the hydro solution
-    const double x = std::log(R_over_lambda);
-    const auto upper = std::upper_bound(log_R_over_lambda_.begin(), log_R_over_lambda_.end(), x);
-    const std::size_t i = std::min<std::size_t>(std::max<std::ptrdiff_t>(upper - log_R_over_lambda_.begin(), 1),
-                                                log_R_over_lambda_.size() - 1);
-    const double w = (x - log_R_over_lambda_[i - 1]) / (log_R_over_lambda_[i] - log_R_over_lambda_[i - 1]);
-    return (1 - w) * collision_exponent_[i - 1] + w * collision_exponent_[i];
-  }
-  // The catalogue's proxies: R_imp ~ H (Eq. (6) [R-imp]), V_imp ~ √T0 (Sec. III), u_imp ~ R_imp/t
-  // (Eq. (22)), and n0, T0, R, H themselves.
-  const hydro::RunningExponents e = result_.exponents_at(R_over_lambda);
+  const theory::ObservableInfo& info = theory::observable_info(observable);  // unknown: lists the catalogue
+  const theory::HydroProxy& proxy = info.hydro;
   double alpha = 0.0;
-  if (quantity == "H")
-    alpha = e.H;
-  else if (quantity == "T0")
-    alpha = e.T0;
-  else if (quantity == "n0")
-    alpha = e.n0;
-  else if (quantity == "R")
-    alpha = e.R;
-  else
-    throw std::invalid_argument("observable = " + observable + " has no hydro prediction");
+  // The catalogue's proxies: R_imp ~ H (Eq. (6) [R-imp]), V_imp ~ √T0 (Sec. III), u_imp ~ R_imp/t
+  // (Eq. (22)), C_imp from the collision integral (Eq. (10) [C-imp]), and n0, T0, R, H themselves.
+  switch (proxy.quantity) {
+    case theory::HydroQuantity::none:
+      throw std::invalid_argument("observable = " + observable + " has no hydro prediction; allowed: " +
+                                  theory::join_names(theory::observable_names([](const theory::ObservableInfo& o) {
+                                    return o.hydro.quantity != theory::HydroQuantity::none;
+                                  })));
+    case theory::HydroQuantity::collisions:
+      alpha = collision_exponent(R_over_lambda);
+      break;
+    case theory::HydroQuantity::H:
+      alpha = result_.exponents_at(R_over_lambda).H;
+      break;
+    case theory::HydroQuantity::n0:
+      alpha = result_.exponents_at(R_over_lambda).n0;
+      break;
+    case theory::HydroQuantity::T0:
+      alpha = result_.exponents_at(R_over_lambda).T0;
+      break;
+    case theory::HydroQuantity::R:
+      alpha = result_.exponents_at(R_over_lambda).R;
+      break;
+  }
   return proxy.scale * alpha + proxy.shift;
+}
+
+double HydroReference::collision_exponent(double R_over_lambda) const {
+  // d ln C / d ln t interpolated linearly in ln(R/λ) between the samples.
+  const double x = std::log(R_over_lambda);
+  const auto upper = std::upper_bound(log_R_over_lambda_.begin(), log_R_over_lambda_.end(), x);
+  const std::size_t i = std::min<std::size_t>(std::max<std::ptrdiff_t>(upper - log_R_over_lambda_.begin(), 1),
+                                              log_R_over_lambda_.size() - 1);
+  const double w = (x - log_R_over_lambda_[i - 1]) / (log_R_over_lambda_[i] - log_R_over_lambda_[i - 1]);
+  return (1 - w) * collision_exponent_[i - 1] + w * collision_exponent_[i];
 }
 
 }  // namespace coldblast::compare

@@ -19,8 +19,9 @@ class HydroReference {
   /// Wraps an existing Navier–Stokes result (its samples must span the R/λ asked for).
   explicit HydroReference(hydro::NavierStokesResult result);
 
-  /// Time exponent of `observable` (R_imp, C_imp, V_imp, u_imp, T0, n0, R, H) at R/λ; throws
-  /// std::invalid_argument outside the solved range or for an unknown observable.
+  /// Time exponent of `observable` at R/λ from its catalogue hydro proxy (theory::HydroProxy: R_imp,
+  /// V_imp, C_imp, u_imp, u_flow, n0, T0, R, H); throws std::invalid_argument outside the solved range,
+  /// for an unknown observable or one without a proxy, naming the observables allowed.
   double exponent(const std::string& observable, double R_over_lambda) const;
   /// Smallest and largest R/λ at which exponents are available.
   double min_R_over_lambda() const;
@@ -29,6 +30,8 @@ class HydroReference {
 
  private:
   void build_collision_exponents();
+  /// d ln C / d ln t at R/λ, C the collision integral (HydroQuantity::collisions).
+  double collision_exponent(double R_over_lambda) const;
   hydro::NavierStokesResult result_;
   std::vector<double> log_R_over_lambda_, collision_exponent_;  // d ln C / d ln t at the samples
 };

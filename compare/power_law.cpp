@@ -33,29 +33,21 @@ int recorded_times_in(const BlockSeries& series, double t_first, double t_last) 
   return static_cast<int>(times_inside(series, t_first, t_last).size());
 }
 
-JackknifeResult jackknife(const BlockSeries& series,
-                          const std::function<Eigen::VectorXd(const std::vector<double>&)>& estimator) {
+common::Jackknife jackknife(const BlockSeries& series,
+                            const std::function<std::vector<double>(const std::vector<double>&)>& estimator,
+                            common::JackknifeCovariance covariance) {
   const std::vector<long> used = used_blocks(series);
   if (used.size() < 2)
     throw std::invalid_argument("observable " + series.observable + ": " + std::to_string(used.size()) +
                                 " non-empty block(s); an error bar needs at least 2 (raise realizations "
                                 "or lower block_size)");
-  JackknifeResult result;
-  result.blocks = static_cast<int>(used.size());
-  result.value = estimator(series.ensemble_values());
-  const auto B = static_cast<double>(used.size());
-  std::vector<Eigen::VectorXd> samples;
-  samples.reserve(used.size());
-  Eigen::VectorXd mean = Eigen::VectorXd::Zero(result.value.size());
-  for (long b : used) {
-    samples.push_back(estimator(series.ensemble_values(b)));
-    mean += samples.back();
-  }
-  mean /= B;
-  result.covariance = Eigen::MatrixXd::Zero(result.value.size(), result.value.size());
-  for (const auto& sample : samples) result.covariance += (sample - mean) * (sample - mean).transpose();
-  result.covariance *= (B - 1.0) / B;
-  return result;
+  return common::block_jackknife(
+      static_cast<long>(used.size()),
+      [&](long left_out) {
+        return estimator(series.ensemble_values(
+            left_out == common::all_blocks ? common::all_blocks : used[static_cast<std::size_t>(left_out)]));
+      },
+      covariance);
 }
 
 std::vector<RunningExponent> running_exponents(const BlockSeries& series) {
@@ -64,18 +56,14 @@ std::vector<RunningExponent> running_exponents(const BlockSeries& series) {
     throw std::invalid_argument("observable " + series.observable +
                                 ": a running exponent needs at least 2 recording times");
   auto estimator = [&](const std::vector<double>& A) {
-    Eigen::VectorXd alpha(static_cast<Eigen::Index>(K - 1));
+    std::vector<double> alpha(K - 1);
     for (std::size_t k = 0; k + 1 < K; ++k)
-      alpha[static_cast<Eigen::Index>(k)] =
-          std::log(A[k + 1] / A[k]) / std::log(series.t[k + 1] / series.t[k]);  // Sec. V running exponent
+      alpha[k] = std::log(A[k + 1] / A[k]) / std::log(series.t[k + 1] / series.t[k]);  // Sec. V running exponent
     return alpha;
   };
-  const JackknifeResult j = jackknife(series, estimator);
+  const common::Jackknife j = jackknife(series, estimator);
   std::vector<RunningExponent> out(K - 1);
-  for (std::size_t k = 0; k + 1 < K; ++k) {
-    const auto i = static_cast<Eigen::Index>(k);
-    out[k] = {series.t[k], series.t[k + 1], j.value[i], std::sqrt(j.covariance(i, i))};
-  }
+  for (std::size_t k = 0; k + 1 < K; ++k) out[k] = {series.t[k], series.t[k + 1], j.value[k], j.error(k)};
   return out;
 }
 
@@ -94,15 +82,16 @@ PowerLawFit fit_power_law(const BlockSeries& series, double t_first, double t_la
   auto estimator = [&](const std::vector<double>& A) {
     Eigen::VectorXd y(static_cast<Eigen::Index>(inside.size()));
     for (std::size_t i = 0; i < inside.size(); ++i) y[static_cast<Eigen::Index>(i)] = std::log(A[inside[i]]);
-    return Eigen::VectorXd(qr.solve(y));
+    const Eigen::VectorXd parameters = qr.solve(y);
+    return std::vector<double>{parameters[0], parameters[1]};
   };
-  const JackknifeResult j = jackknife(series, estimator);
+  const common::Jackknife j = jackknife(series, estimator, common::JackknifeCovariance::full);
   PowerLawFit fit;
   fit.log_amplitude = j.value[0];
   fit.exponent = j.value[1];
-  fit.covariance = j.covariance;
-  fit.log_amplitude_error = std::sqrt(j.covariance(0, 0));
-  fit.exponent_error = std::sqrt(j.covariance(1, 1));
+  fit.covariance << j.covariance_at(0, 0), j.covariance_at(0, 1), j.covariance_at(1, 0), j.covariance_at(1, 1);
+  fit.log_amplitude_error = j.error(0);
+  fit.exponent_error = j.error(1);
   fit.t_first = series.t[inside.front()];
   fit.t_last = series.t[inside.back()];
   fit.points = static_cast<int>(inside.size());

@@ -8,24 +8,20 @@
 #include <functional>
 #include <vector>
 
+#include "common/jackknife.hpp"
 #include "compare/run_data.hpp"
 
 namespace coldblast::compare {
 
-/// Full-sample estimate with its jackknife covariance over blocks.
-struct JackknifeResult {
-  Eigen::VectorXd value;       ///< estimator on all blocks
-  Eigen::MatrixXd covariance;  ///< (B-1)/B Σ_b (θ_-b - θ̄)(θ_-b - θ̄)^T
-  int blocks = 0;
-};
-
 /// The blocks holding at least one realization: the samples a jackknife leaves out one at a time.
 int nonempty_blocks(const BlockSeries& series);
 
-/// Applies `estimator` (ensemble values A(t_k) -> parameter vector) to all blocks and to every
-/// leave-one-block-out sample. Throws std::invalid_argument with fewer than 2 non-empty blocks.
-JackknifeResult jackknife(const BlockSeries& series,
-                          const std::function<Eigen::VectorXd(const std::vector<double>&)>& estimator);
+/// common::block_jackknife over the series' non-empty blocks: `estimator` maps ensemble values A(t_k)
+/// (all blocks, or all but one) to a parameter vector. Throws std::invalid_argument naming the
+/// observable with fewer than 2 non-empty blocks.
+common::Jackknife jackknife(const BlockSeries& series,
+                            const std::function<std::vector<double>(const std::vector<double>&)>& estimator,
+                            common::JackknifeCovariance covariance = common::JackknifeCovariance::diagonal);
 
 /// One running exponent between two successive recording times.
 struct RunningExponent {

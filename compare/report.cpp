@@ -268,8 +268,8 @@ std::string amplitude_markdown(const CompareResult& result) {
   // core needs Kn ≪ 1 (docs/verification.md, "MD against the dense continuum").
   double n0 = NAN, H = NAN;
   for (const auto& a : result.amplitudes) {
-    if (a.name == "n0/n") n0 = a.measured;
-    if (a.name == "H/R") H = a.measured;
+    if (a.amplitude == theory::Amplitude::n0_over_n) n0 = a.measured;
+    if (a.amplitude == theory::Amplitude::H_over_R) H = a.measured;
   }
   if (std::isfinite(n0) && std::isfinite(H))
     md << "\nCore Knudsen number Kn = λ n∞/(n0 H) = "

@@ -44,21 +44,10 @@ bool same_time(double a, double b) {
 
 /// The catalogue transform of the ensemble mean at every time, with its block-jackknife error.
 std::pair<std::vector<double>, std::vector<double>> values_with_errors(const BlockSeries& s) {
-  const JackknifeResult j = jackknife(s, [](const std::vector<double>& v) {
-    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
-  });
-  std::vector<double> value(s.time_count()), error(s.time_count());
-  for (std::size_t k = 0; k < s.time_count(); ++k) {
-    value[k] = j.value[static_cast<Eigen::Index>(k)];
-    error[k] = std::sqrt(j.covariance(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)));
-  }
-  return {value, error};
-}
-
-const theory::Exponent& paper_exponent(const theory::ScalingExponents& e, const std::string& name) {
-  if (name == "R_imp") return e.R_imp;
-  if (name == "V_imp") return e.V_imp;
-  return e.C_imp;
+  const common::Jackknife j = jackknife(s, [](const std::vector<double>& v) { return v; });
+  std::vector<double> error(s.time_count());
+  for (std::size_t k = 0; k < s.time_count(); ++k) error[k] = j.error(k);
+  return {j.value, error};
 }
 
 /// The tracer's start time (summary.json's start_time; 0 when absent): its recording times before it
@@ -74,9 +63,7 @@ TracerMdSeries compare_series(const RunData& tracer, const RunData& md, const st
   const auto [vb, eb] = values_with_errors(b);
   TracerMdSeries out;
   out.observable = name;
-  // Held in a local: paper_exponent returns a reference into it (a temporary would dangle).
-  const theory::ScalingExponents exponents = theory::scaling_exponents(tracer.d);
-  const theory::Exponent& alpha = paper_exponent(exponents, name);
+  const theory::Exponent alpha = theory::observable_exponent(theory::observable_info(name), tracer.d);
   out.alpha = theory::to_double(alpha.in_time);
   out.alpha_rational = theory::to_string(alpha.in_time);
   const double start = tracer_start_time(tracer);
@@ -264,14 +251,15 @@ TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& 
   c.start_time = tracer_start_time(tracer);
   c.tracer_directory = tracer.directory;
   c.md_directory = md.directory;
-  for (const char* name : {"R_imp", "V_imp", "C_imp"})
+  const std::vector<std::string> names = theory::observable_names(theory::is_tracer_prefactor);
+  for (const std::string& name : names)
     if (tracer.series.count(name) && md.series.count(name)) {
       TracerMdSeries s = compare_series(tracer, md, name);
       if (!s.points.empty()) c.series.push_back(std::move(s));
     }
   if (c.series.empty())
     throw std::invalid_argument("--md-run: " + md.directory.string() + " and the tracer run " +
-                                tracer.directory.string() + " share no recording time of R_imp, V_imp or C_imp");
+                                tracer.directory.string() + " share no recording time of " + theory::join_names(names));
   c.distribution = compare_distribution(tracer, md);
   return c;
 }

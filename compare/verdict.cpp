@@ -199,9 +199,9 @@ ObservableVerdict judge_observable(const std::string& name, const BlockSeries& s
                                    const ReferenceExponents& reference, const AllowanceRule& rule) {
   ObservableVerdict v;
   v.name = name;
-  const std::string law = theory::observable_info(name).law;  // u_flow: the law of u_imp
-  v.alpha_theory = theory::to_double(exact.at(law).in_time);
-  v.alpha_theory_rational = theory::to_string(exact.at(law).in_time);
+  const theory::Exponent law = theory::observable_exponent(theory::observable_info(name), exact.d);  // u_flow: u_imp's
+  v.alpha_theory = theory::to_double(law.in_time);
+  v.alpha_theory_rational = theory::to_string(law.in_time);
   v.running = running_exponents(series);
   v.alpha_measured = v.running.back().alpha;
   v.alpha_error = v.running.back().error;

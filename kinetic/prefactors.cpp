@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/jackknife.hpp"
 #include "md/observers.hpp"
 #include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
@@ -12,13 +13,6 @@ namespace coldblast::kinetic {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-/// The paper's estimate of an observable with its O(1) factor set to 1 (theory::scaling_estimates).
-double estimate_of(const theory::ScalingEstimates& s, const std::string& name) {
-  if (name == "R_imp") return s.R_imp;  // Eq. (6) [R-imp]
-  if (name == "V_imp") return s.V_imp;  // Eq. (8) [V-imp-phi]
-  return s.C_imp;                       // Eq. (10) [C-imp]
-}
 
 /// What is jackknifed: per time k and observable j the observable X (Eq. (38)'s transform of the
 /// ensemble mean of its inner value).
@@ -57,17 +51,18 @@ Inputs make_inputs(const md::ResolvedScene& scene) {
   const md::ObservableLayout layout(scene);
   const theory::BlastParameters p{c.d, c.n, c.a, c.E, scene.A_d};
   Inputs in;
-  for (const std::string& name : prefactor_observables())
-    in.transform.push_back(theory::observable_info(name).transform);
+  std::vector<const theory::ObservableInfo*> observables;
+  for (const std::string& name : prefactor_observables()) observables.push_back(&theory::observable_info(name));
+  for (const theory::ObservableInfo* o : observables) in.transform.push_back(o->transform);
   const auto& times = scene.times;
   for (std::size_t k = 0; k < times.size(); ++k) {
     const theory::ScalingEstimates s = theory::scaling_estimates(p, times[k]);
     in.R_over_lambda.push_back(s.R_over_lambda);
     std::vector<int> entries;
     std::vector<double> estimates;
-    for (const std::string& name : prefactor_observables()) {
-      entries.push_back(layout.scalar(name, static_cast<int>(k)));
-      estimates.push_back(estimate_of(s, name));
+    for (const theory::ObservableInfo* o : observables) {
+      entries.push_back(layout.scalar(o->name, static_cast<int>(k)));
+      estimates.push_back(theory::scaling_estimate(*o, s));
     }
     in.entry.push_back(entries);
     in.estimate.push_back(estimates);
@@ -82,7 +77,7 @@ Inputs make_inputs(const md::ResolvedScene& scene) {
 }  // namespace
 
 const std::vector<std::string>& prefactor_observables() {
-  static const std::vector<std::string> names{"R_imp", "V_imp", "C_imp"};
+  static const std::vector<std::string> names = theory::observable_names(theory::is_tracer_prefactor);
   return names;
 }
 
@@ -97,19 +92,15 @@ std::vector<PrefactorRow> prefactor_rows(const md::ResolvedScene& scene,
     N += static_cast<double>(s.count);
   }
   if (total.empty() || N <= 0.0) return {};
-  const std::vector<double> full = quantities(in, total, N);
-  // Block jackknife: leave one block out.
-  const double B = static_cast<double>(blocks.size());
-  std::vector<double> mean(full.size(), 0.0), square(full.size(), 0.0);
-  for (const auto& [b, s] : blocks) {
+  std::vector<const md::BlockSums*> block_sums;
+  for (const auto& [b, s] : blocks) block_sums.push_back(&s);
+  const common::Jackknife jackknife = common::block_jackknife(static_cast<long>(block_sums.size()), [&](long left_out) {
+    if (left_out == common::all_blocks) return quantities(in, total, N);
+    const md::BlockSums& s = *block_sums[static_cast<std::size_t>(left_out)];
     std::vector<double> rest(total);
     for (std::size_t e = 0; e < rest.size(); ++e) rest[e] -= s.sum[e];
-    const std::vector<double> leave = quantities(in, rest, N - static_cast<double>(s.count));
-    for (std::size_t q = 0; q < full.size(); ++q) {
-      mean[q] += leave[q] / B;
-      square[q] += leave[q] * leave[q] / B;
-    }
-  }
+    return quantities(in, rest, N - static_cast<double>(s.count));
+  });
   const std::size_t J = in.transform.size();
   std::vector<PrefactorRow> rows;
   for (std::size_t k = 0; k < in.entry.size(); ++k) {
@@ -119,9 +110,9 @@ std::vector<PrefactorRow> prefactor_rows(const md::ResolvedScene& scene,
     for (std::size_t j = 0; j < J; ++j)
       for (int q = 0; q < 2; ++q) {
         const std::size_t i = 2 * (k * J + j) + static_cast<std::size_t>(q);
-        const double error = B > 1 ? std::sqrt(std::max(0.0, (B - 1) * (square[i] - mean[i] * mean[i]))) : nan;
-        (q == 0 ? row.prefactor : row.exponent).push_back(full[i]);
-        (q == 0 ? row.prefactor_error : row.exponent_error).push_back(std::isnan(full[i]) ? nan : error);
+        (q == 0 ? row.prefactor : row.exponent).push_back(jackknife.value[i]);
+        (q == 0 ? row.prefactor_error : row.exponent_error)
+            .push_back(std::isnan(jackknife.value[i]) ? nan : jackknife.error(i));
       }
     rows.push_back(row);
   }

@@ -13,7 +13,8 @@
 
 namespace coldblast::kinetic {
 
-/// The observables whose prefactors are measured, in column order.
+/// The observables whose prefactors are measured (the catalogue's TracerUse::prefactor: R_imp, V_imp,
+/// C_imp), in column order.
 const std::vector<std::string>& prefactor_observables();
 
 /// One recording time: for each of prefactor_observables() the prefactor X/X_estimate and the running

@@ -10,6 +10,7 @@
 #include "kinetic/batch.hpp"
 #include "kinetic/tracer_drivers.hpp"
 #include "md/observers.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::kinetic {
@@ -25,7 +26,7 @@ double scene_phi(const md::BlastConfig& c) {
 /// The scene as the md writers need it, without md::resolve_scene's particle-region sizing (the
 /// tracer has no particles, and R/λ = 1e6 would exceed its MD limits): A_d, φ, λ, radii, times.
 md::ResolvedScene tracer_scene(md::BlastConfig c, long long trajectories, double A_d, const std::string& A_d_source) {
-  c.observables = {"R_imp", "V_imp", "C_imp", "u_imp", "p_imp"};
+  c.observables = theory::observable_names(theory::is_tracer_recorded);  // what tracer_drivers.cpp records
   c.realizations = trajectories;
   // At most ~256 blocks: enough for jackknife errors, few enough for a small blocks.csv.
   c.block_size = static_cast<int>(std::max<long long>(c.block_size, (trajectories + 255) / 256));

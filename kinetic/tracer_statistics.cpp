@@ -1,8 +1,9 @@
 #include "kinetic/tracer_statistics.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+
+#include "common/jackknife.hpp"
 
 namespace coldblast::kinetic {
 
@@ -55,37 +56,37 @@ double rejection_rate(const TracerBlocks& blocks) {
 }
 
 std::vector<MomentRow> moment_rows(const std::vector<double>& times, const TracerBlocks& blocks) {
-  std::vector<MomentRow> rows;
-  // Totals, then leave-one-block-out values for the jackknife.
+  // ⟨r²⟩, ⟨r⁴⟩/⟨r²⟩², ⟨v²⟩, ⟨v⁴⟩/⟨v²⟩² at every time from the moment sums of all blocks or all but one.
   const std::size_t K = times.size();
   std::vector<double> total(4 * K, 0.0);
   double N = 0.0;
+  std::vector<const TracerBlock*> block_list;
   for (const auto& [b, s] : blocks) {
     for (std::size_t e = 0; e < total.size(); ++e) total[e] += s.moments[e];
     N += static_cast<double>(s.count);
+    block_list.push_back(&s);
   }
-  const auto values = [&](const std::vector<double>& sums, double count, std::size_t k) {
-    const double r2 = sums[4 * k] / count, r4 = sums[4 * k + 1] / count;
-    const double v2 = sums[4 * k + 2] / count, v4 = sums[4 * k + 3] / count;
-    return std::array<double, 4>{r2, r2 > 0 ? r4 / (r2 * r2) : 0.0, v2, v2 > 0 ? v4 / (v2 * v2) : 0.0};
-  };
-  const double B = static_cast<double>(blocks.size());
-  for (std::size_t k = 0; k < K; ++k) {
-    const auto full = values(total, N, k);
-    std::array<double, 4> mean{}, square{};
-    for (const auto& [b, s] : blocks) {
-      std::vector<double> rest(total);
-      for (std::size_t e = 4 * k; e < 4 * k + 4; ++e) rest[e] -= s.moments[e];
-      const auto leave = values(rest, N - static_cast<double>(s.count), k);
-      for (int q = 0; q < 4; ++q) {
-        mean[q] += leave[q] / B;
-        square[q] += leave[q] * leave[q] / B;
-      }
+  const auto values = [&](const std::vector<double>& sums, double count) {
+    std::vector<double> out;
+    for (std::size_t k = 0; k < K; ++k) {
+      const double r2 = sums[4 * k] / count, r4 = sums[4 * k + 1] / count;
+      const double v2 = sums[4 * k + 2] / count, v4 = sums[4 * k + 3] / count;
+      out.insert(out.end(), {r2, r2 > 0 ? r4 / (r2 * r2) : 0.0, v2, v2 > 0 ? v4 / (v2 * v2) : 0.0});
     }
-    std::array<double, 4> error{};
-    for (int q = 0; q < 4; ++q)
-      error[q] = B > 1 ? std::sqrt(std::max(0.0, (B - 1) * (square[q] - mean[q] * mean[q]))) : std::nan("");
-    rows.push_back({times[k], full[0], error[0], full[1], error[1], full[2], error[2], full[3], error[3]});
+    return out;
+  };
+  const common::Jackknife j = common::block_jackknife(static_cast<long>(block_list.size()), [&](long left_out) {
+    if (left_out == common::all_blocks) return values(total, N);
+    const TracerBlock& s = *block_list[static_cast<std::size_t>(left_out)];
+    std::vector<double> rest(total);
+    for (std::size_t e = 0; e < rest.size(); ++e) rest[e] -= s.moments[e];
+    return values(rest, N - static_cast<double>(s.count));
+  });
+  std::vector<MomentRow> rows;
+  for (std::size_t k = 0; k < K; ++k) {
+    const std::size_t i = 4 * k;
+    rows.push_back({times[k], j.value[i], j.error(i), j.value[i + 1], j.error(i + 1), j.value[i + 2], j.error(i + 2),
+                    j.value[i + 3], j.error(i + 3)});
   }
   return rows;
 }

@@ -50,6 +50,11 @@ double early_reach_bound(const BlastConfig& c, double impurity_radius, double sh
   return std::min(v_max * c.t_max, 3.0 * rms);
 }
 
+const std::vector<std::string>& default_observable_names() {
+  static const std::vector<std::string> names = theory::observable_names(theory::is_md_default);
+  return names;
+}
+
 const std::vector<std::string>& scalar_observable_names() {
   static const std::vector<std::string> names = theory::observable_names(theory::is_md_scalar);
   return names;

@@ -23,6 +23,10 @@ struct ImpurityConfig {
   bool recollide = true;
 };
 
+/// The observables a scene records when it names none: the catalogue's defaults (theory::is_md_default:
+/// R_imp, V_imp, C_imp, u_imp, n0, T0, R).
+const std::vector<std::string>& default_observable_names();
+
 /// One blast scene: physics, recording and ensemble keys (units: m = 1, k_B = 1, length = a units as given).
 struct BlastConfig {
   std::string name = "default";  ///< label written to the outputs
@@ -37,7 +41,7 @@ struct BlastConfig {
   long long realizations = 32;  ///< number of independent initial conditions, >= 1
   std::uint64_t seed = 1;       ///< master seed; realization i uses splitmix64(seed, i)
   int block_size = 16;          ///< realizations per block for jackknife errors (compare/)
-  std::vector<std::string> observables{"R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0", "R"};
+  std::vector<std::string> observables = default_observable_names();
   double box_margin = 3.0;  ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25 (3: safe for small blasts)
   double cell_width = 0.0;         ///< cell side (length); 0 = automatic
   std::string queue = "calendar";  ///< event calendar: "calendar" (bucketed) or "heap"

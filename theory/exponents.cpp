@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "common/validate.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::theory {
 
@@ -73,18 +74,23 @@ ScalingExponents scaling_exponents(int d) {
 }
 
 std::vector<std::pair<std::string, Exponent>> ScalingExponents::named() const {
-  return {{"R", R},         {"H", H},   {"R_imp", R_imp}, {"C_imp", C_imp}, {"V_imp", V_imp},
-          {"u_imp", u_imp}, {"n0", n0}, {"T0", T0},       {"D0", D0}};
+  // In the order of the fields, each named by the first catalogue entry whose law it is (u_imp, not u_flow).
+  std::vector<std::pair<std::string, Exponent>> out;
+  for (Exponent ScalingExponents::*law : {&ScalingExponents::R, &ScalingExponents::H, &ScalingExponents::R_imp,
+                                          &ScalingExponents::C_imp, &ScalingExponents::V_imp, &ScalingExponents::u_imp,
+                                          &ScalingExponents::n0, &ScalingExponents::T0, &ScalingExponents::D0}) {
+    const auto& catalogue = observable_catalogue();
+    const auto entry = std::find_if(catalogue.begin(), catalogue.end(), [&](const auto& o) { return o.law == law; });
+    if (entry == catalogue.end()) throw std::logic_error("observable catalogue: a scaling law without an entry");
+    out.emplace_back(entry->name, this->*law);
+  }
+  return out;
 }
 
 const Exponent& ScalingExponents::at(const std::string& name) const {
-  const std::pair<const char*, const Exponent*> table[] = {{"R", &R},         {"H", &H},         {"R_imp", &R_imp},
-                                                           {"C_imp", &C_imp}, {"V_imp", &V_imp}, {"u_imp", &u_imp},
-                                                           {"n0", &n0},       {"T0", &T0},       {"D0", &D0}};
-  for (const auto& [key, value] : table)
-    if (name == key) return *value;
-  throw std::invalid_argument("observable = " + name +
-                              " is unknown; allowed: R, H, R_imp, C_imp, V_imp, u_imp, n0, T0, D0");
+  const ObservableInfo& o = observable_info(name);  // an unknown name: the error lists the catalogue
+  if (!o.law) throw std::invalid_argument("observable = " + name + " has no scaling law");
+  return this->*o.law;
 }
 
 ConvectionDiffusionExponents convection_diffusion_exponents(int d) {

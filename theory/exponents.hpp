@@ -39,9 +39,11 @@ struct ScalingExponents {
   Rational h_d, omega_d;
   Exponent R, H, R_imp, C_imp, V_imp, u_imp, n0, T0, D0;
 
-  /// (name, exponent) in the stable order R, H, R_imp, C_imp, V_imp, u_imp, n0, T0, D0.
+  /// (name, exponent) in the stable order R, H, R_imp, C_imp, V_imp, u_imp, n0, T0, D0, named by the
+  /// observable catalogue (theory/observables.hpp; an observable's law: observable_exponent).
   std::vector<std::pair<std::string, Exponent>> named() const;
-  /// Looks up an exponent by its stable name; throws std::invalid_argument for an unknown name.
+  /// The scaling law of the catalogue observable `name` (u_flow: u_imp's); throws std::invalid_argument
+  /// for an unknown name (listing the catalogue) or one without a law.
   const Exponent& at(const std::string& name) const;
 };
 

@@ -1,14 +1,42 @@
 #pragma once
 // The observable catalogue: the one home of every quantity the paper measures or predicts (name,
-// figure label, Eq. (38)'s transform, equation, scaling law for any d, the paper's Table 1 value,
-// its hydro proxy). Scenes, observers, run files, compare's transforms, verdicts, reports and
-// `coldblast theory` read it; adding an observable means one entry here and one observer.
+// figure label, Eq. (38)'s transform, equation, scaling law and scaling estimate for any d, the
+// paper's Table 1 value, its hydro proxy, who records it by default) and of the amplitudes that
+// `compare --against hydro` judges. Scenes, observers, run files, compare's transforms, verdicts,
+// reports, the tracer and `coldblast theory` read it; adding an observable means one entry here and
+// one observer. Data-side modules dispatch on the enums (Observable, HydroQuantity, Amplitude) in one
+// exhaustive switch each, never on a name.
 #include <string>
 #include <vector>
 
 #include "theory/exponents.hpp"
+#include "theory/prefactors.hpp"
 
 namespace coldblast::theory {
+
+/// Every catalogue entry, in catalogue order: observable_catalogue()[static_cast<std::size_t>(o)] is o's.
+enum class Observable {
+  R_imp,
+  V_imp,
+  C_imp,
+  C_re,
+  dE_first,
+  dE_re,
+  g_front,
+  g_back,
+  u_front,
+  u_imp,
+  u_flow,
+  n0,
+  T0,
+  R,
+  H,
+  D0,
+  profiles,
+  p_imp,
+  snapshots,
+  trajectories
+};
 
 /// How the observable A is built from the ensemble mean m of its per-realization inner value.
 enum class Transform {
@@ -30,35 +58,57 @@ struct PaperValue {
   double error;
 };
 
-/// The hydro prediction of an observable's exponent: scale * alpha_hydro(quantity) + shift, quantity one
-/// of the Navier–Stokes running exponents "H", "n0", "T0", "R" (or "collisions" for C_imp's Eq. (10)).
+/// The Navier–Stokes quantity whose running exponent predicts an observable's (compare/hydro_reference.*).
+enum class HydroQuantity {
+  none,       ///< no hydro prediction
+  H,          ///< the core radius, Eq. (4) [size-dim]
+  n0,         ///< the core density
+  T0,         ///< the core temperature
+  R,          ///< the shock radius
+  collisions  ///< ∫ n0 √T0 dt along the NS solution: C_imp's Eq. (10) [C-imp]
+};
+
+/// The hydro prediction of an observable's exponent: scale * alpha_hydro(quantity) + shift.
 struct HydroProxy {
-  const char* quantity = "";  ///< "" = no hydro prediction
+  HydroQuantity quantity = HydroQuantity::none;
   double scale = 1.0;
   double shift = 0.0;
 };
 
-/// One catalogue entry.
-struct ObservableInfo {
-  const char* name;      ///< stable name in scenes, run files and the CLI
-  ObservableKind kind;   ///< who measures it
-  const char* label;     ///< gnuplot enhanced-text label for figures
-  Transform transform;   ///< how the ensemble mean becomes the observable
-  const char* equation;  ///< the paper's equation(s) with LaTeX labels
-  const char* inner;     ///< the per-realization inner value (docs/md-output.md), "" if none
-  const char* law;       ///< its scaling law in ScalingExponents::at, "" if none (u_flow: "u_imp")
-  int table1_row;        ///< column of the paper's Table 1, -1 if absent
-  PaperValue table1;     ///< the Table 1 value when table1_row >= 0
-  bool verdict;          ///< compared by `coldblast compare` by default (Table 1 rows and u_flow)
-  int table2_column;     ///< column of the paper's Table 2 as printed by `coldblast theory`, -1 if absent
-  HydroProxy hydro;      ///< its hydro prediction
+/// What the kinetic tracer (paper Eq. (36) [LB-full], kinetic/) does with an observable.
+enum class TracerUse {
+  none,      ///< not recorded by the tracer
+  recorded,  ///< recorded (observables.csv, blocks.csv)
+  prefactor  ///< recorded; its prefactor measured (prefactors.csv) and compared with the MD (compare/tracer_md.*)
 };
 
-/// Every entry, in the output order of observables.csv and blocks.csv.
+/// One catalogue entry.
+struct ObservableInfo {
+  Observable id;                       ///< its enumerator (the entry's index in the catalogue)
+  const char* name;                    ///< stable name in scenes, run files and the CLI
+  ObservableKind kind;                 ///< who measures it
+  const char* label;                   ///< gnuplot enhanced-text label for figures
+  Transform transform;                 ///< how the ensemble mean becomes the observable
+  const char* equation;                ///< the paper's equation(s) with LaTeX labels
+  const char* inner;                   ///< the per-realization inner value (docs/md-output.md), "" if none
+  Exponent ScalingExponents::*law;     ///< its scaling law, nullptr if none (u_flow: u_imp's)
+  double ScalingEstimates::*estimate;  ///< the paper's estimate with its O(1) factor 1, nullptr if none
+  int table1_row;                      ///< column of the paper's Table 1, -1 if absent
+  PaperValue table1;                   ///< the Table 1 value when table1_row >= 0
+  bool verdict;                        ///< compared by `coldblast compare` by default (Table 1 rows and u_flow)
+  int table2_column;                   ///< column of the paper's Table 2 as printed by `coldblast theory`, -1 if absent
+  HydroProxy hydro;                    ///< its hydro prediction
+  bool md_default;                     ///< in the MD scene's default list (md::BlastConfig::observables)
+  TracerUse tracer;                    ///< what the kinetic tracer does with it
+};
+
+/// Every entry, in the output order of observables.csv and blocks.csv (and of enum Observable).
 const std::vector<ObservableInfo>& observable_catalogue();
 /// The entry named `name`; throws std::invalid_argument "observable = <name> is unknown; allowed: ..."
 /// listing every catalogue name.
 const ObservableInfo& observable_info(const std::string& name);
+/// The entry of `id`.
+const ObservableInfo& observable_info(Observable id);
 /// Null when `name` is not in the catalogue.
 const ObservableInfo* find_observable(const std::string& name);
 
@@ -69,9 +119,12 @@ std::string join_names(const std::vector<std::string>& names);
 
 /// Predicates for observable_names.
 bool is_md_scalar(const ObservableInfo& o);
-bool is_md_requestable(const ObservableInfo& o);  ///< md_scalar or md_output: allowed in a scene's list
-bool is_block_scalar(const ObservableInfo& o);    ///< md_scalar or hydro_only: allowed in blocks.csv
-bool is_verdict(const ObservableInfo& o);         ///< compared by `coldblast compare` (any reference)
+bool is_md_requestable(const ObservableInfo& o);    ///< md_scalar or md_output: allowed in a scene's list
+bool is_block_scalar(const ObservableInfo& o);      ///< md_scalar or hydro_only: allowed in blocks.csv
+bool is_verdict(const ObservableInfo& o);           ///< compared by `coldblast compare` (any reference)
+bool is_md_default(const ObservableInfo& o);        ///< in the MD scene's default list
+bool is_tracer_recorded(const ObservableInfo& o);   ///< recorded by the kinetic tracer
+bool is_tracer_prefactor(const ObservableInfo& o);  ///< its prefactor measured by the tracer and compared with the MD
 
 /// Table 1 observables in the paper's column order.
 std::vector<std::string> table1_names();
@@ -91,5 +144,34 @@ const std::vector<ProfileField>& profile_fields();
 double apply_transform(Transform transform, double mean);
 /// The scaling law of `o` in dimension d; throws std::invalid_argument when it has none.
 Exponent observable_exponent(const ObservableInfo& o, int d);
+/// The paper's estimate of `o` in `estimates` (theory::scaling_estimates, O(1) factors 1); throws
+/// std::invalid_argument naming `o` and the observables that have one when it has none.
+double scaling_estimate(const ObservableInfo& o, const ScalingEstimates& estimates);
+
+/// The amplitudes `compare --against hydro` judges at the MD's last time (docs/compare.md, "Amplitudes"),
+/// in their catalogue order (that of amplitude_catalogue() and of the verdicts).
+enum class Amplitude {
+  n0_over_n,      ///< "n0/n"
+  T0_over_Rdot2,  ///< "T0/Rdot^2"
+  R,              ///< "R"
+  H_over_R        ///< "H/R"
+};
+
+/// One amplitude: its name in reports and verdict.json, how both sides measure it, and the paper's
+/// equation of the quantity.
+struct AmplitudeInfo {
+  Amplitude id;
+  const char* name;
+  const char* definition;
+  /// For R without profiles.csv: the two sides' different definitions ("" for the others).
+  const char* definition_without_profiles;
+  const char* equation;
+};
+
+/// Every amplitude, in the order of enum Amplitude.
+const std::vector<AmplitudeInfo>& amplitude_catalogue();
+const AmplitudeInfo& amplitude_info(Amplitude id);
+/// The amplitude named `name`; throws std::invalid_argument "amplitude = <name> is unknown; allowed: ...".
+const AmplitudeInfo& amplitude_info(const std::string& name);
 
 }  // namespace coldblast::theory

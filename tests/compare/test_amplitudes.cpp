@@ -64,6 +64,10 @@ TEST_CASE("amplitude verdicts: known n0, T0/Rdot^2 and R pass against the same N
     CHECK(v.pass);
   }
   CHECK(verdicts[0].name == "n0/n");
+  CHECK(verdicts[1].amplitude == coldblast::theory::Amplitude::T0_over_Rdot2);
+  // Without profiles.csv R is the moving mass against Eq. (1) with the NS's A: the catalogue's second definition.
+  CHECK(verdicts[2].definition ==
+        coldblast::theory::amplitude_info(coldblast::theory::Amplitude::R).definition_without_profiles);
   CHECK(verdicts[0].measured == Approx(n0 / 0.15).epsilon(1e-3));
   CHECK(verdicts[1].measured == Approx(T0 / (Rdot * Rdot)).epsilon(3e-3));
   CHECK(verdicts[2].reference == Approx(R).epsilon(1e-12));
@@ -304,6 +308,14 @@ TEST_CASE("campaign 1's shock radius: the same definition on both sides removes 
   const auto continuum = solve_continuum(run, default_hydro_model(2, run_packing_fraction(run)), 256);
   const std::vector<AmplitudeVerdict> verdicts = amplitude_verdicts(run, *continuum, 2.0);
   REQUIRE(verdicts.size() == 4);
+  // With profiles.csv every entry of the amplitude catalogue is measured, in its order.
+  const auto& catalogue = coldblast::theory::amplitude_catalogue();
+  REQUIRE(catalogue.size() == verdicts.size());
+  for (std::size_t i = 0; i < catalogue.size(); ++i) {
+    CHECK(verdicts[i].amplitude == catalogue[i].id);
+    CHECK(verdicts[i].name == catalogue[i].name);
+    CHECK(verdicts[i].definition == catalogue[i].definition);
+  }
   const AmplitudeVerdict& R = verdicts[2];
   REQUIRE(R.name == "R");
   CHECK(R.definition.find("shock front") == 0);

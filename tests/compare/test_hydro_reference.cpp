@@ -7,6 +7,7 @@
 #include "compare/continuum.hpp"
 #include "compare/hydro_reference.hpp"
 #include "theory/exponents.hpp"
+#include "theory/observables.hpp"
 
 using namespace coldblast;
 
@@ -67,4 +68,23 @@ TEST_CASE("the C_imp reference exponent does not depend on how far the Navier-St
   const hydro::RunningExponents e = to_1e4.result().exponents_at(34.84);
   INFO("1 + beta_local = " << 1 + e.n0 + e.T0 / 2);
   CHECK(std::abs(b - (1 + e.n0 + e.T0 / 2)) < 0.01);
+}
+
+TEST_CASE("hydro reference: every catalogue entry either has a proxy giving its exact law or is refused", "[fast]") {
+  // The synthetic blast obeys the exact 2D laws, so each proxy (H, n0, T0, R, the collision integral;
+  // theory::HydroQuantity) must return the entry's own law; an entry without one is an error listing those that have
+  // one.
+  const compare::HydroReference reference(synthetic_power_laws());
+  for (const theory::ObservableInfo& o : theory::observable_catalogue()) {
+    INFO(o.name);
+    if (o.hydro.quantity == theory::HydroQuantity::none)
+      CHECK_THROWS_WITH(reference.exponent(o.name, 100.0),
+                        std::string("observable = ") + o.name +
+                            " has no hydro prediction; allowed: R_imp, V_imp, C_imp, u_imp, u_flow, n0, T0, R, H");
+    else
+      CHECK(reference.exponent(o.name, 100.0) ==
+            Approx(theory::to_double(theory::observable_exponent(o, 2).in_time)).margin(1e-3));
+  }
+  CHECK_THROWS_WITH(reference.exponent("speed", 100.0),
+                    Catch::StartsWith("observable = speed is unknown; allowed: R_imp"));
 }
