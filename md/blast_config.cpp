@@ -27,6 +27,21 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 /// the mean density; the factor 2 covers the fluctuation of the 100th neighbour's distance and the
 /// guard band). count is capped at 100: the floor is for small blasts, not a way to make room for
 /// more impurities than the region holds, which stays an error.
+/// start.r0: within [hot_spot_min_radius, upper] for a hot spot, 0 for the other starts.
+void validate_start(const BlastConfig& c, double upper) {
+  if (c.start.kind != StartKind::hotspot) {
+    if (c.start.r0 != 0.0)
+      throw std::invalid_argument("start.r0 = " + format_number(c.start.r0) + " is given for start.kind = " +
+                                  start_kind_name(c.start.kind) + "; it applies to start.kind = hotspot only");
+    return;
+  }
+  if (!(c.n > 0.0) || c.impurities.count < 1) return;  // reported by their own checks
+  const double r_min = hot_spot_min_radius(c.d, c.n, c.impurities.count);
+  require_in_range("start.r0", c.start.r0, r_min, upper, Bound::closed, upper < inf ? Bound::closed : Bound::open,
+                   " (length: the ball must hold on average max(2, impurities.count) particles at density n" +
+                       std::string(upper < inf ? ", and lie within Eq. (1)'s R(t_max)" : "") + ")");
+}
+
 double minimum_region_radius(const BlastConfig& c) {
   const double per_volume = c.n * theory::unit_ball_volume(c.d);
   const double r_count = std::pow(std::min(c.impurities.count, 100) / per_volume, 1.0 / c.d);
@@ -35,12 +50,12 @@ double minimum_region_radius(const BlastConfig& c) {
 }
 }  // namespace
 
-double early_reach_bound(const BlastConfig& c, double impurity_radius, double shock_radius) {
-  // Derivation in scenes.hpp and docs/md-output.md ("Region size").
-  const double mu = c.impurities.mass, k = c.impurities.count;
-  const double E1 = k > 1 ? c.E * (k - 1.0) / k : c.E;
+namespace {
+/// early_reach_bound for one particle of mass mu (hosts 1) and radius `radius` that starts with
+/// energy at most E1 among resting hosts.
+double particle_reach(const BlastConfig& c, double mu, double radius, double E1, double shock_radius) {
   const double v0 = std::sqrt(2.0 * E1 / mu), v_max = v0 * std::max(1.0, 2.0 * mu / (1.0 + mu));
-  const double lambda_c = theory::mean_free_path(c.d, c.n, c.a + impurity_radius);  // Eq. (5) [eq:mfp]
+  const double lambda_c = theory::mean_free_path(c.d, c.n, c.a + radius);  // Eq. (5) [eq:mfp]
   const double f = 8.0 * mu / ((1.0 + mu) * (1.0 + mu) * (c.d + 1.0)), tau0 = lambda_c / v0;
   const double shock_speed = 2.0 / (c.d + 2.0) * shock_radius / c.t_max;  // dR/dt of Eq. (1) at t_max
   const double collisions =
@@ -48,6 +63,19 @@ double early_reach_bound(const BlastConfig& c, double impurity_radius, double sh
   const double g = 2.0 * mu / (1.0 + 2.0 * mu);
   const double rms = lambda_c * std::sqrt(2.0 * collisions / (1.0 - g));
   return std::min(v_max * c.t_max, 3.0 * rms);
+}
+}  // namespace
+
+double early_reach_bound(const BlastConfig& c, double impurity_radius, double shock_radius) {
+  // Derivation in blast_config.hpp and docs/md-output.md ("Region size").
+  const double mu = c.impurities.mass, k = c.impurities.count;
+  if (c.start.kind == StartKind::kick)
+    return particle_reach(c, mu, impurity_radius, k > 1 ? c.E * (k - 1.0) / k : c.E, shock_radius);
+  // A hot spot or a single kicked host: any particle, host or impurity, may end up with (nearly) all
+  // of E, and a hot spot's starts anywhere within r0.
+  const double fastest = std::max(particle_reach(c, 1.0, c.a, c.E, shock_radius),
+                                  particle_reach(c, mu, impurity_radius, c.E, shock_radius));
+  return fastest + (c.start.kind == StartKind::hotspot ? c.start.r0 : 0.0);
 }
 
 const std::vector<std::string>& default_observable_names() {
@@ -79,6 +107,7 @@ void BlastConfig::validate() const {
   require_in_range("impurities.radius", impurities.radius, 0.0, inf, Bound::closed, Bound::open, " (0 = a)");
   require_integer_in_range("impurities.count", impurities.count, 1, std::numeric_limits<int>::max(),
                            " (one impurity starts with momentum sqrt(2 m E); two or more with zero momentum)");
+  validate_start(*this, inf);
   require_in_range("t_max", t_max, 0.0, inf);
   require_in_range("t_min", t_min, 0.0, t_max, Bound::open, Bound::closed, " (t_min <= t_max)");
   require_integer_in_range("realizations", realizations, 1, 1000000000);
@@ -138,6 +167,7 @@ ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& am
     s.A_d_source = choice.source;
   }
   s.lambda = theory::mean_free_path(c.d, c.n, c.a);
+  validate_start(c, theory::shock_radius(theory::BlastParameters{c.d, c.n, c.a, c.E, s.A_d}, c.t_max));
   s.impurity_radius = c.impurities.radius > 0.0 ? c.impurities.radius : c.a;
   const theory::BlastParameters p{c.d, c.n, c.a, c.E, s.A_d};
   s.shock_radius_at_t_max = theory::shock_radius(p, c.t_max);  // Eq. (1) [R-shock]

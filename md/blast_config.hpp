@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "md/initial_state.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::md {
@@ -36,6 +37,9 @@ struct BlastConfig {
   double E = 10.0;               ///< injected energy (m length²/time²), > 0
   double A_d = 0.0;              ///< TvNS amplitude of Eq. (1); 0 = not given (the caller's AmplitudePolicy)
   ImpurityConfig impurities;
+  /// How E enters: kick (the impurities share it; default), hotspot (every particle within start.r0)
+  /// or single (the host nearest the origin); docs/md-output.md, "Starts".
+  StartConfig start;
   double t_min = 1.0;           ///< first recording time t_0 (time), in (0, t_max]
   double t_max = 200.0;         ///< last recording time (time), > 0
   long long realizations = 32;  ///< number of independent initial conditions, >= 1
@@ -95,6 +99,9 @@ using AmplitudePolicy = std::function<theory::AmplitudeChoice(int d, double phi)
 ///   -1/3), equal masses (the impurity keeps its tangential velocity, cos χ = sin α: 1/2 in 2D, 2/3
 ///   in 3D) and the heavy limit 1 (it ploughs straight on);
 /// - the bound: min(v_max t_max, 3 sqrt(<r²>)).
+/// That is the kick's (start.kind = kick). A hot spot or a single kicked host can leave (nearly) all of E
+/// on one particle, host or impurity: the larger of the two species' bounds with E1 = E, plus r0 for
+/// a hot spot (its particles start anywhere within r0).
 double early_reach_bound(const BlastConfig& config, double impurity_radius, double shock_radius);
 
 /// Quantities derived from a validated scene.

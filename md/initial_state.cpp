@@ -9,6 +9,7 @@
 #include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "md/multi_index.hpp"
+#include "theory/prefactors.hpp"
 
 namespace coldblast::md {
 
@@ -419,8 +420,8 @@ std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t
 }
 
 template <int D>
-KickReport kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
-                           double region_radius) {
+KickReport place_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count,
+                            double region_radius, std::vector<std::int32_t>& impurities) {
   const std::size_t n = state.size();
   if (impurity_count < 1 || impurity_count > n)
     throw std::invalid_argument("impurities = " + std::to_string(impurity_count) + " is outside [1, " +
@@ -433,7 +434,8 @@ KickReport kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::si
   };
   // Greedy in order of distance: a particle that would overlap an already chosen (larger)
   // impurity is skipped (and re-placed below), so the impurities are the nearest particles.
-  std::vector<std::int32_t> order;
+  std::vector<std::int32_t>& order = impurities;
+  order.clear();
   std::size_t sorted = 0;
   const double impurity_sigma = 2.0 * state.impurity.radius;
   for (std::size_t next = 0; order.size() < impurity_count; ++next) {
@@ -454,26 +456,102 @@ KickReport kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::si
   for (const std::int32_t id : order) state.species[id] = impurity_species;
 
   // Larger impurities: move the host particles they would overlap to new random places.
-  KickReport report;
-  if (state.impurity.radius > state.host.radius) report = replace_displaced_hosts<D>(rng, state, order, region_radius);
+  if (state.impurity.radius > state.host.radius) return replace_displaced_hosts<D>(rng, state, order, region_radius);
+  return KickReport{};
+}
 
-  // Random momenta, then exactly zero momentum and exactly energy E. A single impurity cannot have
-  // zero momentum: it gets energy E in a uniformly random direction (an isotropic Gaussian's
-  // direction), and the blast then carries momentum sqrt(2 m E), which collisions conserve.
-  const double m = state.impurity.mass;
+template <int D>
+void share_energy(std::mt19937_64& rng, InitialState<D>& state, const std::vector<std::int32_t>& ids, double E) {
+  if (ids.empty()) throw std::logic_error("share_energy: no particles to give the energy to");
+  // Velocities z/sqrt(w), z standard normal per component, w = m/m_first: a Maxwellian (any
+  // temperature; the scale is fixed below). Among equal masses w = 1 exactly, so the velocities,
+  // their mean and the scale are bit for bit those of the kick before other starts existed.
+  const auto mass = [&state](std::int32_t id) {
+    return state.species[id] == impurity_species ? state.impurity.mass : state.host.mass;
+  };
+  const double first_mass = mass(ids.front());
   Vec<D> mean = Vec<D>::Zero();
-  for (const std::int32_t id : order) {
-    for (int k = 0; k < D; ++k) state.velocity[id][k] = standard_normal(rng);
-    mean += state.velocity[id];
+  double weight = 0.0;
+  for (const std::int32_t id : ids) {
+    const double w = mass(id) / first_mass;
+    for (int k = 0; k < D; ++k) state.velocity[id][k] = standard_normal(rng) / std::sqrt(w);
+    mean += w * state.velocity[id];
+    weight += w;
   }
-  mean = impurity_count > 1 ? Vec<D>(mean / static_cast<double>(impurity_count)) : Vec<D>(Vec<D>::Zero());
+  // Subtract the centre-of-mass velocity (zero momentum); one particle keeps its random direction
+  // and carries momentum sqrt(2 m E), which collisions conserve.
+  mean = ids.size() > 1 ? Vec<D>(mean / weight) : Vec<D>(Vec<D>::Zero());
   double energy = 0.0;
-  for (const std::int32_t id : order) {
+  for (const std::int32_t id : ids) {
     state.velocity[id] -= mean;
-    energy += 0.5 * m * state.velocity[id].squaredNorm();
+    energy += 0.5 * mass(id) * state.velocity[id].squaredNorm();
   }
   const double scale = std::sqrt(E / energy);
-  for (const std::int32_t id : order) state.velocity[id] *= scale;
+  for (const std::int32_t id : ids) state.velocity[id] *= scale;
+}
+
+template <int D>
+KickReport kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
+                           double region_radius) {
+  std::vector<std::int32_t> impurities;
+  const KickReport report = place_impurities<D>(rng, state, impurity_count, region_radius, impurities);
+  share_energy<D>(rng, state, impurities, E);
+  return report;
+}
+
+const char* start_kind_name(StartKind kind) {
+  switch (kind) {
+    case StartKind::kick:
+      return "kick";
+    case StartKind::hotspot:
+      return "hotspot";
+    case StartKind::single:
+      return "single";
+  }
+  throw std::logic_error("unknown StartKind");
+}
+
+StartKind start_kind_from_name(const std::string& name) {
+  for (const StartKind kind : {StartKind::kick, StartKind::hotspot, StartKind::single})
+    if (name == start_kind_name(kind)) return kind;
+  throw std::invalid_argument("start.kind = " + name + " is not one of: kick, hotspot, single");
+}
+
+double hot_spot_min_radius(int d, double n, int impurity_count) {
+  return std::pow(std::max(2, impurity_count) / (n * theory::unit_ball_volume(d)), 1.0 / d);
+}
+
+template <int D>
+StartReport start_blast(std::mt19937_64& rng, InitialState<D>& state, const StartConfig& start,
+                        std::size_t impurity_count, double E, double region_radius) {
+  StartReport report;
+  std::vector<std::int32_t> impurities;
+  report.impurities = place_impurities<D>(rng, state, impurity_count, region_radius, impurities);
+  std::vector<std::int32_t>& heated = report.heated;
+  if (start.kind == StartKind::kick) {
+    heated = impurities;
+  } else if (start.kind == StartKind::hotspot) {
+    for (std::size_t i = 0; i < state.size(); ++i)
+      if (state.position[i].squaredNorm() <= start.r0 * start.r0) heated.push_back(static_cast<std::int32_t>(i));
+    const bool holds_impurities = std::all_of(impurities.begin(), impurities.end(), [&](std::int32_t id) {
+      return std::binary_search(heated.begin(), heated.end(), id);
+    });
+    if (heated.size() < 2 || !holds_impurities)
+      throw std::invalid_argument("start.r0 = " + common::format_number(start.r0) +
+                                  ": this realization's hot spot holds " + std::to_string(heated.size()) +
+                                  " particles" + (holds_impurities ? "" : ", not all the impurities") +
+                                  "; it needs at least 2 and every impurity: raise start.r0");
+  } else {
+    // The host nearest the origin (ties: the lower index).
+    std::int32_t nearest = -1;
+    for (std::size_t i = 0; i < state.size(); ++i)
+      if (state.species[i] == host_species &&
+          (nearest < 0 || state.position[i].squaredNorm() < state.position[nearest].squaredNorm()))
+        nearest = static_cast<std::int32_t>(i);
+    if (nearest < 0) throw std::invalid_argument("start.kind = single needs a host particle; the region holds none");
+    heated = {nearest};
+  }
+  share_energy<D>(rng, state, heated, E);
   return report;
 }
 
@@ -520,6 +598,16 @@ template std::vector<Vec<3>> random_sequential_addition_report<3>(std::mt19937_6
                                                                   RsaReport&, std::uint64_t);
 template std::vector<Vec<2>> random_sequential_addition<2>(std::mt19937_64&, std::size_t, double, double);
 template std::vector<Vec<3>> random_sequential_addition<3>(std::mt19937_64&, std::size_t, double, double);
+template KickReport place_impurities<2>(std::mt19937_64&, InitialState<2>&, std::size_t, double,
+                                        std::vector<std::int32_t>&);
+template KickReport place_impurities<3>(std::mt19937_64&, InitialState<3>&, std::size_t, double,
+                                        std::vector<std::int32_t>&);
+template void share_energy<2>(std::mt19937_64&, InitialState<2>&, const std::vector<std::int32_t>&, double);
+template void share_energy<3>(std::mt19937_64&, InitialState<3>&, const std::vector<std::int32_t>&, double);
+template StartReport start_blast<2>(std::mt19937_64&, InitialState<2>&, const StartConfig&, std::size_t, double,
+                                    double);
+template StartReport start_blast<3>(std::mt19937_64&, InitialState<3>&, const StartConfig&, std::size_t, double,
+                                    double);
 template KickReport kick_impurities<2>(std::mt19937_64&, InitialState<2>&, std::size_t, double, double);
 template KickReport kick_impurities<3>(std::mt19937_64&, InitialState<3>&, std::size_t, double, double);
 template InitialState<2> lattice_start<2>(std::mt19937_64&, std::size_t, double, const Vec<2>&, double);

@@ -1,12 +1,15 @@
 #pragma once
 // Initial configurations (paper Sec. V): random sequential addition (RSA) of non-overlapping
 // discs/spheres in a ball (blast) and lattice starts for periodic equilibrium runs; the impurity
-// kick with total energy exactly E and total momentum exactly zero; Maxwellian velocities.
+// kick with total energy exactly E and total momentum exactly zero, or the other starts (a hot spot,
+// a single kicked host); Maxwellian velocities.
 // Random numbers: one std::mt19937_64 per realization seeded by common::splitmix64 from (seed, index), so
 // a realization does not depend on which thread or shard runs it.
 #include <cstdint>
 #include <random>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "common/random_streams.hpp"
 #include "md/particles.hpp"
@@ -68,14 +71,64 @@ struct KickReport {
   double inner_radius = 0.0;         ///< r_in = farthest impurity + a + r_imp: moved hosts lie at |x| >= r_in
 };
 
-/// Blast set-up: the `impurity_count` particles nearest the origin become impurities (their own
-/// radius and mass) with random momenta: total kinetic energy exactly E, total momentum exactly zero.
-/// Host particles that would overlap a larger impurity move to new random places at |x| >= r_in
-/// (plain trials, then RSA's voxel phase after rsa_voxel_switch_default failures in a row); if they
-/// provably do not fit, std::invalid_argument naming impurities.radius.
+/// Blast set-up, first step: the `impurity_count` particles nearest the origin become impurities (their own
+/// radius and mass), returned in `impurities` by ascending index. Host particles that would overlap a
+/// larger impurity move to new random places at |x| >= r_in (plain trials, then RSA's voxel phase
+/// after rsa_voxel_switch_default failures in a row); if they provably do not fit,
+/// std::invalid_argument naming impurities.radius.
+template <int D>
+KickReport place_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count,
+                            double region_radius, std::vector<std::int32_t>& impurities);
+
+/// Gives the particles `ids` (non-empty, any species) random velocities of total kinetic energy
+/// exactly E: a Maxwellian (independent Gaussian components of variance ∝ 1/m), minus the
+/// centre-of-mass velocity when there are two or more (total momentum zero to round-off), then
+/// scaled to E. One particle gets E in a uniformly random direction (momentum sqrt(2 m E)).
+template <int D>
+void share_energy(std::mt19937_64& rng, InitialState<D>& state, const std::vector<std::int32_t>& ids, double E);
+
+/// place_impurities, then share_energy among the impurities: the paper's kick (Sec. V).
 template <int D>
 KickReport kick_impurities(std::mt19937_64& rng, InitialState<D>& state, std::size_t impurity_count, double E,
                            double region_radius);
+
+/// How the energy E enters a blast (the scene's [start] table; docs/md-output.md, "Starts"). In every
+/// start the impurities are the same particles, the impurities.count nearest the origin
+/// (place_impurities), so R_imp, V_imp, C_imp and p_imp follow the same tagged particles whatever
+/// the start; only who gets E differs.
+enum class StartKind {
+  kick,     ///< the impurities share E (the paper's start, Sec. V)
+  hotspot,  ///< every particle within r0 of the origin, impurities included, shares E (a Maxwellian)
+  single,   ///< the host particle nearest the origin gets E; the impurities start at rest
+};
+/// "kick", "hotspot", "single".
+const char* start_kind_name(StartKind kind);
+/// The kind named `name`; std::invalid_argument naming start.kind and the allowed names otherwise.
+StartKind start_kind_from_name(const std::string& name);
+
+struct StartConfig {
+  StartKind kind = StartKind::kick;
+  /// hotspot: the hot spot's radius (length), in [hot_spot_min_radius, R(t_max) of Eq. (1)]; 0 for the others.
+  double r0 = 0.0;
+};
+
+/// Smallest hot-spot radius (length): the ball that holds, on average at density n, max(2,
+/// impurity_count) particles (zero momentum needs two; the impurities must lie in the hot spot).
+double hot_spot_min_radius(int d, double n, int impurity_count);
+
+/// What start_blast did.
+struct StartReport {
+  KickReport impurities;             ///< place_impurities' report
+  std::vector<std::int32_t> heated;  ///< the particles that got E, by ascending index
+};
+
+/// Blast set-up: place_impurities, then E given as `start` says (share_energy over the impurities,
+/// over every particle with |x| <= r0, or to the host nearest the origin). Draws from `rng` in that
+/// order, so a kick is bit for bit kick_impurities. A hot spot that holds fewer than two particles
+/// or misses an impurity throws std::invalid_argument naming start.r0.
+template <int D>
+StartReport start_blast(std::mt19937_64& rng, InitialState<D>& state, const StartConfig& start,
+                        std::size_t impurity_count, double E, double region_radius);
 
 /// Periodic box start: `count` spheres on a simple cubic (square) lattice filling the box row by row,
 /// Maxwellian velocities at temperature T with zero total momentum, rescaled so that the kinetic

@@ -137,7 +137,7 @@ InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index)
   }
   state.velocity.assign(scene.particle_count, Vec<D>::Zero());
   state.species.assign(scene.particle_count, host_species);
-  kick_impurities<D>(rng, state, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+  start_blast<D>(rng, state, c.start, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
   return state;
 }
 template InitialState<2> blast_initial_state<2>(const ResolvedScene&, long long);

@@ -1,6 +1,6 @@
 #pragma once
 // One realization of a blast scene (paper Sec. V): its initial state (random sequential addition,
-// then the impurities' kick), its engine settings, and its run to t_max with the observers measuring
+// then the impurities and the scene's start), its engine settings, and its run to t_max with the observers measuring
 // at the recording times, returning the realization's record and, when asked, its snapshots and its
 // impurities' paths as data. Ensembles, files and checkpoints are run/'s (run/ensemble.hpp).
 #include <array>
@@ -17,7 +17,8 @@ namespace coldblast::md {
 
 /// The initial state of realization `index` of a resolved blast scene (paper Sec. V): random
 /// sequential addition at density n in the scene's region, then the impurities (the particles
-/// nearest the origin) kicked with total energy E and zero momentum; seeded from (seed, index).
+/// nearest the origin) and the energy E as the scene's start says (start_blast: the impurities'
+/// kick, a hot spot or a single kicked host); seeded from (seed, index).
 template <int D>
 InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index);
 

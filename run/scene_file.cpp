@@ -99,6 +99,18 @@ void apply_impurities(const toml::table& table, ImpurityConfig& impurities) {
   }
 }
 
+void apply_start(const toml::table& table, md::StartConfig& start) {
+  for (auto&& [key_view, node] : table) {
+    const std::string key(key_view.str());
+    if (key == "kind")
+      start.kind = md::start_kind_from_name(text(node, "start.kind"));
+    else if (key == "r0")
+      start.r0 = number(node, "start.r0");
+    else
+      throw std::invalid_argument("unknown scene key start." + key + " (allowed: kind, r0)");
+  }
+}
+
 BlastConfig config_from_table(const toml::table& table) {
   BlastConfig c;
   for (auto&& [key_view, node] : table) {
@@ -163,6 +175,9 @@ BlastConfig config_from_table(const toml::table& table) {
     } else if (key == "impurities") {
       if (!node.is_table()) throw std::invalid_argument("scene key impurities must be a table");
       apply_impurities(*node.as_table(), c.impurities);
+    } else if (key == "start") {
+      if (!node.is_table()) throw std::invalid_argument("scene key start must be a table ([start])");
+      apply_start(*node.as_table(), c.start);
     } else if (key == "hydro") {
       // The continuum model of `hydro core|euler --config` and `compare --hydro-config`
       // (hydro::read_hydro_model_keys, docs/hydro.md); not part of the MD.
@@ -170,7 +185,8 @@ BlastConfig config_from_table(const toml::table& table) {
     } else {
       throw std::invalid_argument(
           "unknown scene key " + key +
-          " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius,recollide}, t_min, t_max, realizations, "
+          " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius,recollide}, start.{kind,r0}, t_min, t_max, "
+          "realizations, "
           "seed, "
           "block_size, observables, box_margin, cell_width, queue, snapshot_times, snapshot_fractions, "
           "snapshot_particles, snapshot_margin, snapshot_stride, snapshot_realizations, profile_bins, p_imp_bins, "
@@ -292,6 +308,10 @@ std::string scene_toml(const BlastConfig& c) {
   // Written only when switched off, so the text of every ordinary scene (compared by merges and
   // resumes) is what it was before the key existed.
   if (!c.impurities.recollide) out << "recollide = false\n";
+  // Likewise: a kick scene's text does not name its start.
+  if (c.start.kind != md::StartKind::kick || c.start.r0 != 0.0)
+    out << "\n[start]\nkind = " << quoted(md::start_kind_name(c.start.kind)) << "\nr0 = " << format_number(c.start.r0)
+        << "\n";
   return out.str();
 }
 
