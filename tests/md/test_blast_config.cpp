@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/validate.hpp"
 #include "md/blast_config.hpp"
 #include "run/ensemble.hpp"
 #include "run/scene_file.hpp"
@@ -116,4 +117,59 @@ TEST_CASE("blasts that outrun Eq. (1) early run with the default box_margin", "[
     const coldblast::run::BlastResult result = coldblast::run::run_blast(scene, {});
     CHECK(result.energy_error_max() < 1e-12);
   }
+}
+
+TEST_CASE("start keys: r0's range names start.r0, and the early reach takes the start's fastest particle", "[fast]") {
+  using Catch::Contains;
+  const auto scene = [](std::vector<std::string> set) {
+    set.push_back("A_d=0.2238");
+    return parse_scene(default_scene_toml(), set);
+  };
+  // The smallest hot spot holds max(2, impurities.count) particles on average: r0 = sqrt(4/(pi n)) in
+  // 2D at n = 0.15, four impurities; the largest is Eq. (1)'s R(t_max).
+  const double r_min = std::sqrt(4.0 / (M_PI * 0.15));
+  CHECK(hot_spot_min_radius(2, 0.15, 4) == Approx(r_min).epsilon(1e-15));
+  CHECK(hot_spot_min_radius(3, 0.15, 1) == Approx(std::cbrt(2.0 / (4.0 / 3.0 * M_PI * 0.15))).epsilon(1e-15));
+  CHECK_THROWS_WITH(scene({"start.kind=hotspot", "start.r0=1"}),
+                    Contains("start.r0 = 1 is outside [" + coldblast::common::format_number(r_min) + ", inf)"));
+  CHECK_THROWS_WITH(scene({"start.kind=hotspot"}), Contains("start.r0 = 0 is outside"));
+  const ResolvedScene base = resolve_scene(scene({}));
+  CHECK_THROWS_WITH(resolve_scene(scene({"start.kind=hotspot", "start.r0=100"})),
+                    Contains("start.r0 = 100 is outside [") &&
+                        Contains(", " + coldblast::common::format_number(base.shock_radius_at_t_max) + "]") &&
+                        Contains("R(t_max)"));
+  CHECK_THROWS_WITH(scene({"start.r0=3"}), Contains("start.r0 = 3 is given for start.kind = kick"));
+  CHECK_THROWS_WITH(scene({"start.kind=single", "start.r0=3"}), Contains("start.kind = single"));
+  CHECK_THROWS_WITH(scene({"start.kind=blast"}), Contains("start.kind = blast is not one of: kick, hotspot, single"));
+  CHECK_NOTHROW(resolve_scene(scene({"start.kind=hotspot", "start.r0=" + std::to_string(r_min * 1.0001)})));
+
+  // The kick's reach is that of an impurity with E (k - 1)/k; a hot spot's and a single host's are
+  // those of a particle with all of E (host or impurity, the larger), a hot spot's plus r0.
+  const double R = base.shock_radius_at_t_max;
+  BlastConfig all_of_E = base.config;
+  all_of_E.impurities.count = 1;  // the kick bound with E1 = E
+  const double with_E = early_reach_bound(all_of_E, 0.5, R);
+  CHECK(early_reach_bound(base.config, 0.5, R) < with_E);
+  CHECK(early_reach_bound(scene({"start.kind=single"}), 0.5, R) == with_E);
+  CHECK(early_reach_bound(scene({"start.kind=hotspot", "start.r0=4"}), 0.5, R) == with_E + 4.0);
+  // A light impurity outruns the host: the single host's blast is sized by the impurity it hits.
+  BlastConfig light = scene({"start.kind=single", "impurities.mass=0.1"});
+  BlastConfig light_kick = light;
+  light_kick.start = StartConfig{};
+  light_kick.impurities.count = 1;
+  CHECK(early_reach_bound(light, 0.5, R) == early_reach_bound(light_kick, 0.5, R));
+}
+
+TEST_CASE("the paper scene with an MD-sized hot spot keeps Eq. (1)'s region", "[fast]") {
+  // r0 = lambda = 20/3 (about 21 discs: docs/verification.md, "The start's memory"): the early reach
+  // stays inside box_margin × R(t_max), so kick and hot spot run in the same region.
+  const std::vector<std::string> paper = {"n=0.15",          "E=5.7",          "A_d=0.22380034",
+                                          "t_min=0.9765625", "box_margin=1.6", "t_max=4000"};
+  std::vector<std::string> hot = paper;
+  hot.insert(hot.end(), {"start.kind=hotspot", "start.r0=6.666666666666667"});
+  const ResolvedScene kick = resolve_scene(parse_scene(default_scene_toml(), paper));
+  const ResolvedScene spot = resolve_scene(parse_scene(default_scene_toml(), hot));
+  CHECK(spot.region_radius == margin_region(spot));
+  CHECK(spot.region_radius == kick.region_radius);
+  CHECK(spot.particle_count == kick.particle_count);
 }

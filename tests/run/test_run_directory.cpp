@@ -126,7 +126,8 @@ TEST_CASE("a new run refuses another run's folder; --overwrite removes exactly t
   const MdRunPlan plan = plan_md_run(request);
   const BlastResult second = run_blast(plan.config, plan.options);
   finish_md_run(second, out);
-  std::set<std::string> expected(read_manifest(out)->files.begin(), read_manifest(out)->files.end());
+  const auto manifest = read_manifest(out);  // one object: begin() and end() of two temporaries would not pair
+  std::set<std::string> expected(manifest->files.begin(), manifest->files.end());
   expected.insert({"manifest.json", "notes.txt"});
   CHECK(files_in(out) == expected);
   CHECK(!fs::exists(out / "snapshots.extxyz"));

@@ -31,3 +31,25 @@ TEST_CASE("scene parsing: overrides, dotted keys, unknown keys and ranges", "[fa
   const BlastConfig again = parse_scene(scene_toml(c));
   CHECK(scene_toml(again) == scene_toml(c));
 }
+
+TEST_CASE("scene [start]: read from a table or --set, written only when not the kick", "[fast]") {
+  const std::string text = default_scene_toml() + "\n[start]\nkind = \"hotspot\"\nr0 = 6.5\n";
+  const BlastConfig hot = parse_scene(text);
+  CHECK(hot.start.kind == coldblast::md::StartKind::hotspot);
+  CHECK(hot.start.r0 == 6.5);
+  const BlastConfig single = parse_scene(default_scene_toml(), {"start.kind=single"});
+  CHECK(single.start.kind == coldblast::md::StartKind::single);
+  // Round trips: the hot spot's text names its start and reads back to the same scene; a kick
+  // scene's text is what it was before starts existed (no [start]: merges and resumes compare it).
+  CHECK(scene_toml(parse_scene(scene_toml(hot))) == scene_toml(hot));
+  CHECK(scene_toml(hot).find("[start]\nkind = \"hotspot\"\nr0 = 6.5\n") != std::string::npos);
+  CHECK(scene_toml(parse_scene(scene_toml(single))) == scene_toml(single));
+  const BlastConfig kick = parse_scene(default_scene_toml(), {"start.kind=kick"});
+  CHECK(scene_toml(kick) == scene_toml(parse_scene(default_scene_toml())));
+  CHECK(scene_toml(kick).find("start") == std::string::npos);
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"start.colour=1"}),
+                    Catch::Contains("unknown scene key start.colour (allowed: kind, r0)"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"start=3"}), Catch::Contains("start must be a table"));
+  CHECK_THROWS_WITH(parse_scene(default_scene_toml(), {"start.kind=3"}),
+                    Catch::Contains("start.kind must be a string"));
+}
