@@ -97,8 +97,15 @@ void print_summary(const run::BlastResult& result, const std::string& out, Forma
     print_json(summary);
     return;
   }
-  std::printf("scene %s (d = %d), %lld realizations, %llu collisions in %.2f s (%.3g collisions/s)\n",
-              result.scene.config.name.c_str(), result.scene.config.d, result.realizations(),
+  // A start other than the kick is named, with the hot spot's r0/λ (hydro core --start hotspot --r0).
+  const md::StartConfig& start = result.scene.config.start;
+  std::string start_text;
+  if (start.kind == md::StartKind::single) start_text = ", start single";
+  if (start.kind == md::StartKind::hotspot)
+    start_text = ", start hotspot r0 = " + common::format_number(start.r0) + " = " +
+                 common::format_number(start.r0 / result.scene.lambda) + " lambda";
+  std::printf("scene %s (d = %d%s), %lld realizations, %llu collisions in %.2f s (%.3g collisions/s)\n",
+              result.scene.config.name.c_str(), result.scene.config.d, start_text.c_str(), result.realizations(),
               static_cast<unsigned long long>(result.collisions()), result.wall_seconds,
               summary["collisions_per_second"].get<double>());
   std::printf("max relative energy error %.2g; output in %s\n", result.energy_error_max(), out.c_str());
