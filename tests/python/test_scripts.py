@@ -133,3 +133,56 @@ def test_code_sizes_lists_every_module_with_its_largest_file():
     listed = [int(n) for n in re.findall(r"^ +(\d+)  ", out, flags=re.M)]
     assert listed == sorted(listed, reverse=True) and all(n > 40 for n in listed)
     assert max(int(r[6]) for r in rows) == listed[0]
+
+
+def scaled_run(source, target, factors):
+    """A copy of run `source` (blocks.csv, p_imp.csv) with the inner sums of observables scaled:
+    factors {name: f} multiply every block's sum of that name."""
+    os.makedirs(target)
+    with open(os.path.join(source, "blocks.csv")) as f, open(os.path.join(target, "blocks.csv"), "w") as out:
+        for line in f:
+            if line.startswith("#") or line.startswith("block,"):
+                out.write(line)
+                continue
+            block, t, name, total, count = line.rstrip("\n").split(",")
+            out.write(f"{block},{t},{name},{float(total) * factors.get(name, 1.0)!r},{count}\n")
+    with open(os.path.join(source, "p_imp.csv")) as f, open(os.path.join(target, "p_imp.csv"), "w") as out:
+        out.write(f.read())
+
+
+def test_tracer_decomposition_adds_up_with_the_jackknife_errors(tmp_path):
+    """scripts/tracer_decomposition.py on runs made from the MD's own blocks with R_imp, C_imp scaled
+    by known factors (R_imp's inner value is r^2/2, so 1.21 makes R_imp 1.1 times the MD's): the total,
+    Eq. (36)'s and the background's parts are the known per cents and add up; the errors are the
+    closed forms of the block jackknife for runs that share the MD's noise (paired) and an
+    independent MD; p_imp's ratio differences vanish for equal histograms; the figure is drawn."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import numpy as np
+    import tracer_decomposition as td
+    from block_jackknife import time_series
+    md = os.path.join(REPO, "data", "campaign4-heavy")
+    ns, fields = str(tmp_path / "ns"), str(tmp_path / "fields")
+    scaled_run(md, ns, {"R_imp": 1.1 ** 2, "C_imp": 1.15})
+    scaled_run(md, fields, {"R_imp": 1.02 ** 2, "C_imp": 1.05})
+    result = td.decomposition(md, ns, fields, [15.625, 250.0, 4000.0])
+    assert result["times"] == [15.625, 250.0, 4000.0]
+    assert all(result["paired"].values())
+    t, value, error = time_series(md, ["R_imp"], lambda x, count: np.sqrt(x / count))
+    for name, (total, own) in (("R_imp", (10.0, 2.0)), ("C_imp", (15.0, 5.0)), ("V_imp", (0.0, 0.0))):
+        for t_k, tot, tot_e, o, o_e, bg, bg_e, m, dm in result[name]:
+            assert abs(tot - total) < 1e-9 and abs(o - own) < 1e-9 and abs(bg - (total - own)) < 1e-9
+            assert abs(tot - (o + bg)) < 1e-9
+            relative = dm / m
+            assert abs(tot_e - 100 * (1 + total / 100) * np.sqrt(2) * relative) < 1e-9
+            assert abs(o_e - 100 * (1 + own / 100) * np.sqrt(2) * relative) < 1e-9
+            # paired: (a - b) has the MD's relative noise, (total - own) % of it; MD's independent
+            assert abs(bg_e - (total - own) * np.sqrt(2) * relative) < 1e-9
+            if name == "R_imp":
+                assert abs(dm - error[list(t).index(t_k)][0]) < 1e-12
+    for t_k, m, dm, a, da, b, db in result["p_imp"]:
+        assert m == a == b and 1.0 < m < 2.0 and 0 < dm < 0.05
+    out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "tracer_decomposition.py"), md, ns, fields,
+                          "--times", "250,4000", "--figure", str(tmp_path / "d.png")],
+                         capture_output=True, text=True, check=True).stdout
+    assert "| 4000 |" in out and "+10.0 ± " in out and "paired jackknife" in out
+    assert (tmp_path / "d.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
