@@ -186,3 +186,39 @@ def test_tracer_decomposition_adds_up_with_the_jackknife_errors(tmp_path):
                          capture_output=True, text=True, check=True).stdout
     assert "| 4000 |" in out and "+10.0 ± " in out and "paired jackknife" in out
     assert (tmp_path / "d.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_coarsen_profiles_keeps_mass_momentum_and_energy(tmp_path):
+    """scripts/coarsen_profiles.py merges bins as md run bins particles: per kept time the mass
+    (density x shell volume), the radial momentum (particles x u) and the kinetic energy
+    (particles x (d T + u^2)) of the merged bins equal the original bins'; every second time is
+    kept; merging nothing reproduces the file."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import coarsen_profiles
+    md = os.path.join(REPO, "data", "campaign1-paper-2d")
+    _, rows = coarsen_profiles.read(os.path.join(md, "profiles.csv"))
+    merged = coarsen_profiles.coarsen(rows, 2, 3, 2)
+    times = sorted({float(r["t"]) for r in rows})
+    assert sorted({float(r["t"]) for r in merged}) == times[::2]
+    assert len(merged) == len(times[::2]) * 10
+    def totals(table, t):
+        part = [r for r in table if float(r["t"]) == t]
+        mass = sum(float(r["density_over_n"]) * (float(r["r_over_R_hi"]) ** 2 - float(r["r_over_R_lo"]) ** 2)
+                   for r in part)
+        momentum = sum(float(r["particles"]) * float(r["radial_velocity"]) for r in part)
+        energy = sum(float(r["particles"]) * (2 * float(r["temperature"]) + float(r["radial_velocity"]) ** 2)
+                     for r in part)
+        return mass, momentum, energy
+    for t in (times[0], times[20], times[-1]):
+        for a, b in zip(totals(rows, t), totals(merged, t)):
+            assert abs(a - b) <= 1e-12 * abs(a) + 1e-300
+    same = coarsen_profiles.coarsen(rows, 2, 1, 1)
+    for a, b in zip(rows, same):
+        for key in ("density_over_n", "radial_velocity", "temperature", "particles"):
+            assert abs(float(a[key]) - float(b[key])) <= 1e-13 * abs(float(a[key])) + 1e-18
+    out = tmp_path / "coarse"
+    subprocess.run([sys.executable, os.path.join(REPO, "scripts", "coarsen_profiles.py"), md, str(out)],
+                   capture_output=True, text=True, check=True)
+    assert (out / "summary.json").exists() and (out / "observables.csv").exists()
+    _, written = coarsen_profiles.read(str(out / "profiles.csv"))
+    assert len(written) == len(times[::2]) * 15  # the defaults: 2 bins merged, every second time
