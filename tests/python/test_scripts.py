@@ -188,16 +188,17 @@ def test_tracer_decomposition_adds_up_with_the_jackknife_errors(tmp_path):
     assert (tmp_path / "d.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_coarsen_profiles_keeps_mass_momentum_and_energy(tmp_path):
-    """scripts/coarsen_profiles.py merges bins as md run bins particles: per kept time the mass
+def test_profile_variants_keep_mass_momentum_and_energy_and_perturb_by_the_errors(tmp_path):
+    """scripts/profile_variants.py merges bins as md run bins particles: per kept time the mass
     (density x shell volume), the radial momentum (particles x u) and the kinetic energy
     (particles x (d T + u^2)) of the merged bins equal the original bins'; every second time is
-    kept; merging nothing reproduces the file."""
+    kept; merging nothing reproduces the file. --noise moves every bin by deviates whose
+    distribution, in units of the stated errors, has mean 0 and variance 1."""
     sys.path.insert(0, os.path.join(REPO, "scripts"))
-    import coarsen_profiles
+    import profile_variants
     md = os.path.join(REPO, "data", "campaign1-paper-2d")
-    _, rows = coarsen_profiles.read(os.path.join(md, "profiles.csv"))
-    merged = coarsen_profiles.coarsen(rows, 2, 3, 2)
+    _, rows = profile_variants.read(os.path.join(md, "profiles.csv"))
+    merged = profile_variants.coarsen(rows, 2, 3, 2)
     times = sorted({float(r["t"]) for r in rows})
     assert sorted({float(r["t"]) for r in merged}) == times[::2]
     assert len(merged) == len(times[::2]) * 10
@@ -212,13 +213,28 @@ def test_coarsen_profiles_keeps_mass_momentum_and_energy(tmp_path):
     for t in (times[0], times[20], times[-1]):
         for a, b in zip(totals(rows, t), totals(merged, t)):
             assert abs(a - b) <= 1e-12 * abs(a) + 1e-300
-    same = coarsen_profiles.coarsen(rows, 2, 1, 1)
+    same = profile_variants.coarsen(rows, 2, 1, 1)
     for a, b in zip(rows, same):
         for key in ("density_over_n", "radial_velocity", "temperature", "particles"):
             assert abs(float(a[key]) - float(b[key])) <= 1e-13 * abs(float(a[key])) + 1e-18
     out = tmp_path / "coarse"
-    subprocess.run([sys.executable, os.path.join(REPO, "scripts", "coarsen_profiles.py"), md, str(out)],
-                   capture_output=True, text=True, check=True)
+    subprocess.run([sys.executable, os.path.join(REPO, "scripts", "profile_variants.py"), md, str(out),
+                    "--bins", "2", "--times", "2"], capture_output=True, text=True, check=True)
     assert (out / "summary.json").exists() and (out / "observables.csv").exists()
-    _, written = coarsen_profiles.read(str(out / "profiles.csv"))
-    assert len(written) == len(times[::2]) * 15  # the defaults: 2 bins merged, every second time
+    _, written = profile_variants.read(str(out / "profiles.csv"))
+    assert len(written) == len(times[::2]) * 15
+    import numpy as np
+    noisy = profile_variants.perturb(rows, 2, 30000, 7)
+    z = {"density_over_n": [], "radial_velocity": [], "temperature": []}
+    for a, b in zip(rows, noisy):
+        count, T = float(a["particles"]) * 30000, float(a["temperature"])
+        if count < 100 or T <= 0:
+            continue
+        errors = {"density_over_n": float(a["density_stderr"]), "radial_velocity": (T / count) ** 0.5,
+                  "temperature": T * (2 / (2 * count)) ** 0.5}
+        for key, e in errors.items():
+            z[key].append((float(b[key]) - float(a[key])) / e)
+    for key, values in z.items():
+        values = np.array(values)
+        assert len(values) > 1000
+        assert abs(values.mean()) < 4 / len(values) ** 0.5 and abs(values.var() - 1) < 0.15, key
