@@ -70,7 +70,7 @@ std::vector<double> measured_nodes(const MeasuredProfiles& profiles) {
 }
 
 std::unique_ptr<GridBackground> make_md_background(const MeasuredProfiles& profiles, const ContactModel& contact,
-                                                   std::string* description) {
+                                                   std::string* description, bool self_similar_after) {
   profiles.validate();
   if (contact.d != profiles.d)
     throw std::invalid_argument("profiles: d = " + std::to_string(profiles.d) +
@@ -90,13 +90,14 @@ std::unique_ptr<GridBackground> make_md_background(const MeasuredProfiles& profi
   }
   const double edge = profiles.edges.back();
   if (description)
-    *description = "MD profiles: " + std::to_string(profiles.edges.size() - 1) + " bins of r/R in [0, " +
-                   common::format_significant(edge, 4) + "), " + std::to_string(frames.size()) +
-                   " recorded times t in [" + common::format_significant(frames.front().t, 4) + ", " +
+    *description = "MD profiles: " + std::to_string(profiles.edges.size() - 1) + " bins of r/R from 0 to " +
+                   common::format_significant(edge, 4) + ", " + std::to_string(frames.size()) +
+                   " recorded times t from " + common::format_significant(frames.front().t, 4) + " to " +
                    common::format_significant(frames.back().t, 4) +
-                   "], linear in r/R between the bins' volume centroids and in ln t; ambient gas at rest beyond";
-  return std::make_unique<GridBackground>(profiles.d, std::move(x), edge, std::move(frames), profiles.n, contact, false,
-                                          false);
+                   ", linear in r/R between the bins' volume centroids and in ln t; ambient gas at rest beyond" +
+                   (self_similar_after ? "; self-similar (TvNS scaling) after the last time" : "");
+  return std::make_unique<GridBackground>(profiles.d, std::move(x), edge, std::move(frames), profiles.n, contact,
+                                          self_similar_after, false);
 }
 
 }  // namespace coldblast::kinetic

@@ -46,8 +46,10 @@ std::vector<double> measured_nodes(const MeasuredProfiles& profiles);
 /// measured_nodes (at x = 0: u = 0 by symmetry, n and T of the first bin), linear in x between
 /// nodes, held from the last node to the last edge, and the ambient gas at rest (n∞, u = 0, T = 0)
 /// beyond it; between recorded times linear in ln t with the scale R log-linear in t (a
-/// GridBackground). No data before the first or after the last recorded time: bound() throws there.
+/// GridBackground). No data before the first recorded time: bound() throws there; after the last
+/// likewise, unless `self_similar_after` (then continued with the TvNS scaling of GridBackground:
+/// for a run's end t_max, less than one recording interval after its last recorded time).
 std::unique_ptr<GridBackground> make_md_background(const MeasuredProfiles& profiles, const ContactModel& contact,
-                                                   std::string* description = nullptr);
+                                                   std::string* description = nullptr, bool self_similar_after = false);
 
 }  // namespace coldblast::kinetic

@@ -87,7 +87,9 @@ std::unique_ptr<Background> make_background(const TracerConfig& config, std::str
     if (!config.md_profiles)
       throw std::invalid_argument("--md-run = " + config.md_run +
                                   ": the profiles were not read (run::with_input_files)");
-    return make_md_background(*config.md_profiles, contact, description);
+    // After the MD's last recorded time, up to its t_max (run::with_input_files checks the tracer's
+    // t_max against it): the TvNS continuation, as the ns background's.
+    return make_md_background(*config.md_profiles, contact, description, true);
   }
   return make_navier_stokes_background(c, contact, config.frames_per_decade, config.cells, description, progress);
 }

@@ -6,7 +6,6 @@
 #include "common/input.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
-#include "md/impurity_state.hpp"
 #include "run/run_directory.hpp"
 #include "run/scene_file.hpp"
 
@@ -118,12 +117,20 @@ MdRunFields read_md_run_fields(const fs::path& directory, const std::string& opt
 }
 
 std::string scene_physics_difference(const md::BlastConfig& md_scene, const md::BlastConfig& tracer_scene) {
-  const auto md_keys = md::states_scene_keys(md_scene), tracer_keys = md::states_scene_keys(tracer_scene);
-  for (std::size_t i = 0; i < md_keys.size(); ++i) {
-    if (md_keys[i].first == "impurities.recollide") continue;  // the tracer has no recollisions either way
-    if (md_keys[i].second != tracer_keys[i].second)
-      return "its " + md_keys[i].first + " is " + md_keys[i].second + ", " + tracer_keys[i].second + " here";
-  }
+  const auto& m = md_scene;
+  const auto& t = tracer_scene;
+  const std::pair<const char*, std::pair<double, double>> keys[] = {
+      {"d", {m.d, t.d}},
+      {"n", {m.n, t.n}},
+      {"a", {m.a, t.a}},
+      {"E", {m.E, t.E}},
+      {"impurities.count", {m.impurities.count, t.impurities.count}},
+      {"impurities.mass", {m.impurities.mass, t.impurities.mass}},
+      {"impurities.radius", {m.impurities.radius, t.impurities.radius}}};  // recollide: the tracer has none
+  for (const auto& [key, values] : keys)
+    if (values.first != values.second)
+      return std::string("its ") + key + " is " + common::format_number(values.first) + ", " +
+             common::format_number(values.second) + " here";
   return {};
 }
 

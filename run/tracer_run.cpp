@@ -69,6 +69,11 @@ kinetic::TracerConfig with_input_files(kinetic::TracerConfig config) {
     if (!config.md_run_id.empty() && config.md_run_id != fields.run_id)
       throw std::invalid_argument(named + " now holds run " + fields.run_id + ", not run " + config.md_run_id +
                                   " whose fields the checkpoint's blocks ran in");
+    if (config.scene.t_max > fields.scene.t_max)
+      throw std::invalid_argument(named + " ran to t_max = " + common::format_number(fields.scene.t_max) +
+                                  " (recorded up to t = " + common::format_number(fields.profiles.frames.back().t) +
+                                  "); the tracer's t_max = " + common::format_number(config.scene.t_max) +
+                                  " is beyond it");
     config.md_run_id = fields.run_id;
     config.md_profiles = std::make_shared<const kinetic::MeasuredProfiles>(std::move(fields.profiles));
   }

@@ -263,6 +263,15 @@ TEST_CASE("md background: exact for flat n and T and u linear in r/R, ambient be
   CHECK_THROWS_AS(bg->bound(0.99), std::runtime_error);  // before the first recorded time
   CHECK_THROWS_AS(bg->bound(4.01), std::runtime_error);  // after the last
   CHECK_NOTHROW(bg->bound(4.0));
+  // Continued after the last time with the TvNS scaling (a run's t_max after its last recorded
+  // time): at fixed r/s, n held, T ∝ t^(−2d/(d+2)) and s ∝ t^(2/(d+2)).
+  const auto continued = make_md_background(p, ContactModel{d, 0.5, 0.5, false}, nullptr, true);
+  CHECK(std::isinf(continued->t_last()));
+  const double later = 4.0 * std::pow(2.0, 0.25), x = 0.7;
+  const HostState before = continued->at(x * 2.0, 4.0, continued->bound(4.0));
+  const HostState after = continued->at(x * 2.0 * std::pow(later / 4.0, 2.0 / (d + 2)), later, continued->bound(later));
+  CHECK(after.n == Approx(before.n).epsilon(1e-12));
+  CHECK(after.T == Approx(before.T * std::pow(later / 4.0, -2.0 * d / (d + 2))).epsilon(1e-12));
 }
 
 TEST_CASE("md background: bad profiles name what is wrong") {
