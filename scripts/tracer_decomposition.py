@@ -16,9 +16,14 @@ the MD is independent of both. p_imp's <r^4>/<r^2>^2 is each run's p_imp.csv his
 with its error propagated from the bins' errors (compare/figures.cpp's way); differences absolute.
 Nothing is fitted.
 
+--variants DIR...: other tracer-in-MD-fields runs, made in the fields of scripts/profile_variants.py
+(coarser or perturbed profiles) with TRACER_MD_DIR's seed, and their paired changes from
+TRACER_MD_DIR in per cent of the MD (p_imp's ratio: absolute): what the first bracket owes to the
+profiles' binning and noise.
+
 Usage:
     scripts/tracer_decomposition.py MD_DIR TRACER_NS_DIR TRACER_MD_DIR [--times 15.625,250,4000]
-                                     [--figure decomposition.png] [--title TEXT]
+                                     [--figure decomposition.png] [--title TEXT] [--variants DIR...]
 Prints markdown tables (all common times unless --times) and draws the figure with gnuplot.
 """
 import argparse
@@ -124,6 +129,38 @@ def decomposition(md, ns, md_fields, times=None):
     return out
 
 
+def variant_changes(md, base, variants, times):
+    """{name: rows (t, [(change, error) per variant])}: each variant's R_imp, V_imp, C_imp minus the
+    base run's (paired jackknife when their blocks match), in per cent of the MD's value; "p_imp":
+    the ratio's change, errors in quadrature."""
+    out = {}
+    for name in OBSERVABLES:
+        m, _ = observable(md, name, times)
+        columns = [tracer_difference(v, base, name, times)[:2] for v in variants]
+        out[name] = [(t, [(100 * c[0][k] / m[k], 100 * c[1][k] / m[k]) for c in columns])
+                     for k, t in enumerate(times)]
+    rows = []
+    for t in times:
+        b, db = moment_ratio(base, t)
+        rows.append((t, [(r - b, float(np.hypot(dr, db))) for r, dr in (moment_ratio(v, t) for v in variants)]))
+    out["p_imp"] = rows
+    return out
+
+
+def variants_markdown(changes, variants):
+    head = "| t | " + " | ".join(os.path.basename(os.path.normpath(v)) for v in variants) + " |"
+    rule = "|---" * (len(variants) + 1) + "|"
+    lines = []
+    for name in OBSERVABLES + ("p_imp",):
+        unit = "per cent of the MD's value" if name != "p_imp" else "⟨r⁴⟩/⟨r²⟩², absolute"
+        lines += [f"**{name}**, variant − tracer-in-MD-fields ({unit}):", "", head, rule]
+        digits = 3 if name == "p_imp" else 2
+        for t, cells in changes[name]:
+            lines.append(f"| {t:.4g} | " + " | ".join(pm(c, e, digits) for c, e in cells) + " |")
+        lines.append("")
+    return "\n".join(lines)
+
+
 def pm(value, error, digits=1):
     return f"{value:+.{digits}f} ± {error:.{digits}f}"
 
@@ -191,6 +228,7 @@ def main():
     parser.add_argument("--times", help="comma-separated recorded times of the tables (default: all)")
     parser.add_argument("--figure", help="PNG to draw (all common times)")
     parser.add_argument("--title", default="tracer - MD = [Eq. (36) in the MD's fields] + [NS background]")
+    parser.add_argument("--variants", nargs="+", default=[], help="tracer runs in profile_variants.py's fields")
     args = parser.parse_args()
     times = [float(x) for x in args.times.split(",")] if args.times else None
     result = decomposition(args.md, args.tracer_ns, args.tracer_md_fields, times)
@@ -200,6 +238,9 @@ def main():
     paired = [n for n, p in result["paired"].items() if p]
     print(f"\n(background term: {'paired jackknife' if paired else 'independent errors'}; "
           f"MD independent)")
+    if args.variants:
+        print("\n" + variants_markdown(variant_changes(args.md, args.tracer_md_fields, args.variants,
+                                                        result["times"]), args.variants))
     if args.figure:
         draw(decomposition(args.md, args.tracer_ns, args.tracer_md_fields), args.figure, args.title)
 

@@ -181,10 +181,20 @@ def test_tracer_decomposition_adds_up_with_the_jackknife_errors(tmp_path):
                 assert abs(dm - error[list(t).index(t_k)][0]) < 1e-12
     for t_k, m, dm, a, da, b, db in result["p_imp"]:
         assert m == a == b and 1.0 < m < 2.0 and 0 < dm < 0.05
+    # --variants: a run in other fields, R_imp 1.03 times the MD's, changes by +1 % of the MD from
+    # the 1.02 run, its paired error 1 % times the MD's relative error (the runs share the MD's noise).
+    variant = str(tmp_path / "variant")
+    scaled_run(md, variant, {"R_imp": 1.03 ** 2, "C_imp": 1.05})
+    changes = td.variant_changes(md, fields, [variant], [250.0, 4000.0])
+    for name, change in (("R_imp", 1.0), ("C_imp", 0.0), ("V_imp", 0.0)):
+        for (t_k, [(c, e)]), row in zip(changes[name], [r for r in result[name] if r[0] in (250.0, 4000.0)]):
+            assert abs(c - change) < 1e-9 and abs(e - change * row[8] / row[7]) < 1e-9
+    assert all(c == 0.0 for t_k, [(c, e)] in changes["p_imp"])
     out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "tracer_decomposition.py"), md, ns, fields,
-                          "--times", "250,4000", "--figure", str(tmp_path / "d.png")],
+                          "--times", "250,4000", "--figure", str(tmp_path / "d.png"), "--variants", variant],
                          capture_output=True, text=True, check=True).stdout
     assert "| 4000 |" in out and "+10.0 ± " in out and "paired jackknife" in out
+    assert "| t | variant |" in out and "| 4000 | +1.00 ± " in out
     assert (tmp_path / "d.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
