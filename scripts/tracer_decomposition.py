@@ -109,6 +109,7 @@ def decomposition(md, ns, md_fields, times=None):
     common = recorded_times(md, "R_imp") & recorded_times(ns, "R_imp") & recorded_times(md_fields, "R_imp")
     times = sorted(common if times is None else [t for t in common if any(abs(t / x - 1) < 1e-6 for x in times)])
     out = {"times": times, "paired": {}}
+    np.seterr(divide="ignore", invalid="ignore")  # an MD value of 0 (C_imp at t_min) gives NaN, drawn as a gap
     for name in OBSERVABLES:
         m, dm = observable(md, name, times)
         a, da = observable(ns, name, times)
