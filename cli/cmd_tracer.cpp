@@ -1,5 +1,5 @@
 // coldblast tracer: Monte Carlo of the impurity's Lorentz–Boltzmann equation (paper Eq. (36)
-// [LB-full]) in a Navier–Stokes, TvNS or equilibrium background. Maps flags onto a
+// [LB-full]) in a Navier–Stokes, TvNS, equilibrium or measured MD background. Maps flags onto a
 // kinetic::TracerConfig, calls run::run_tracer and writes the `md run` run directory
 // (docs/kinetic.md), over MPI ranks under mpirun (MPI build). Shards are combined with `coldblast md merge`.
 #include <cmath>
@@ -15,6 +15,7 @@
 #include "kinetic/tracer_config.hpp"
 #include "run/checkpoint.hpp"
 #include "run/ensemble.hpp"
+#include "run/md_fields.hpp"
 #include "run/progress.hpp"
 #include "run/scene_file.hpp"
 #include "run/tracer_files.hpp"
@@ -73,6 +74,9 @@ void run(TracerOptions& o) {
   common::require_output_folder(out, o.resume.empty() ? "--out" : "--resume");
   run::SceneRequest scene;
   scene.file = o.scene_file;
+  // --background md without SCENE: the MD run's own scene (its physics must be the tracer's).
+  if (o.config.background == "md" && o.scene_file.empty() && !o.config.md_run.empty())
+    scene.text = run::md_run_scene_toml(o.config.md_run, "--md-run");
   scene.overrides = o.set;
   if (o.seed_option->count() > 0) scene.seed = o.seed;
   scene.md_snapshots = false;  // the tracer records no particles
@@ -140,8 +144,12 @@ void add_tracer_command(CLI::App& app) {
       "tracer", "Monte Carlo of the impurity's Lorentz-Boltzmann equation (paper Eq. 36) in a hydrodynamic background");
   c->add_option("SCENE", o->scene_file, "Scene file (TOML, the keys of md run); default: the embedded scene");
   c->add_option("--set", o->set, "Override a scene key: key=value (repeatable)");
-  c->add_option("--background", o->config.background, "Host background: ns, tvns or equilibrium")
+  c->add_option("--background", o->config.background,
+                "Host background: ns, tvns, equilibrium, or md (the measured mean fields of an MD run: --md-run)")
       ->capture_default_str();
+  c->add_option("--md-run", o->config.md_run,
+                "--background md: an `md run` folder that recorded the observables profiles and R; its scene is the "
+                "tracer's unless SCENE is given (d, n, a, E and impurities must agree)");
   c->add_option(
        "--transport", o->config.transport,
        "dilute (chi = 1; ideal-gas Navier-Stokes) or enskog (chi(n) at contact; dense Navier-Stokes at the scene's "

@@ -65,7 +65,8 @@ WindowBound EquilibriumBackground::bound(double) const {
 }
 
 GridBackground::GridBackground(int d, std::vector<double> x, double edge, std::vector<BackgroundFrame> frames,
-                               double n_inf, const ContactModel& contact, bool self_similar_after)
+                               double n_inf, const ContactModel& contact, bool self_similar_after,
+                               bool self_similar_before)
     : d_(d),
       x_(std::move(x)),
       edge_(edge),
@@ -73,7 +74,8 @@ GridBackground::GridBackground(int d, std::vector<double> x, double edge, std::v
       phi_per_n_(contact.packing_per_density()),
       frames_(std::move(frames)),
       contact_(contact),
-      self_similar_after_(self_similar_after) {
+      self_similar_after_(self_similar_after),
+      self_similar_before_(self_similar_before) {
   if (x_.size() < 2) throw std::invalid_argument("background grid: fewer than 2 cells");
   if (frames_.empty()) throw std::invalid_argument("background grid: no frames");
   for (std::size_t i = 1; i < x_.size(); ++i)
@@ -151,6 +153,10 @@ WindowCoefficients GridBackground::coefficients(const WindowBound& window) const
   c.log_t = log_t_[c.k0];
   c.log_scale = log_scale_[c.k0];
   return c;
+}
+
+double GridBackground::t_first() const {
+  return self_similar_before_ ? 0.0 : frames_.front().t;
 }
 
 double GridBackground::t_last() const {
@@ -386,6 +392,9 @@ WindowBound GridBackground::bound(double t) const {
   WindowBound w;
   w.n_chi_max = n_chi_max_;
   if (t < t0) {
+    if (!self_similar_before_)
+      throw std::runtime_error("background: no data at t = " + format_number(t) +
+                               " (it starts at t = " + format_number(t0) + ")");
     if (!(t > 0.0)) throw std::runtime_error("background: t = 0 has no finite majorant; start at t > 0");
     long j = static_cast<long>(std::floor(std::log(t0 / t) / std::log(q))) + 1;
     while (t0 * ratio_power(-j) > t) ++j;

@@ -167,12 +167,13 @@ struct BackgroundFrame {
 /// Radial fields on a fixed self-similar grid x (ascending cell centres), stored at frame times.
 /// For x > edge the gas is ambient (n_inf, at rest, T = 0); between the last centre and `edge`
 /// the last cell's values hold; below the first centre, the first cell's. Before the first frame
-/// (and after the last if `self_similar_after`) the blast is continued self-similarly:
-/// s ∝ t^(2/(d+2)), u ∝ t^(-d/(d+2)), T ∝ t^(-2d/(d+2)), n(x) fixed (TvNS scaling, paper Eq. (1)).
+/// (if `self_similar_before`) and after the last (if `self_similar_after`) the blast is continued
+/// self-similarly: s ∝ t^(2/(d+2)), u ∝ t^(-d/(d+2)), T ∝ t^(-2d/(d+2)), n(x) fixed (TvNS scaling,
+/// paper Eq. (1)); without a continuation bound() throws there (a background of measured data).
 class GridBackground final : public Background {
  public:
   GridBackground(int d, std::vector<double> x, double edge, std::vector<BackgroundFrame> frames, double n_inf,
-                 const ContactModel& contact, bool self_similar_after);
+                 const ContactModel& contact, bool self_similar_after, bool self_similar_before = true);
   int dimension() const override { return d_; }
   TimeSlice slice(const WindowBound& window, double t) const override;
   /// For t/t_a − 1 in [0, 2^-8]: ln(t/t_a) and the exponentials of the slice by their Taylor
@@ -185,7 +186,7 @@ class GridBackground final : public Background {
   WindowBound local_bound(const WindowBound& window, const TimeSlice& now, double t_end, double r_lo,
                           double r_hi) const override;
   double bound_length(const TimeSlice& now, double r) const override;
-  double t_first() const override { return 0.0; }
+  double t_first() const override;
   double t_last() const override;
   std::size_t frame_count() const { return frames_.size(); }
   /// The data in the 8-lane kernel's layout, and a window's interpolation coefficients (the same
@@ -237,7 +238,7 @@ class GridBackground final : public Background {
   std::vector<double> window_scale_exponent_;  // α_k = ln(s_{k+1}/s_k) / ln(t_{k+1}/t_k): s ∝ t^α_k in window k
   std::vector<BackgroundFrame> frames_;
   ContactModel contact_;
-  bool self_similar_after_;
+  bool self_similar_after_, self_similar_before_;
   double n_chi_max_ = 0.0;
   std::size_t band_width_ = 1;            // cell pairs per band
   std::vector<double> band_start_;        // x of each band's first centre, then x_.back()

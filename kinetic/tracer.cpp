@@ -16,6 +16,7 @@
 namespace coldblast::kinetic {
 
 using common::Bound;
+using common::format_number;
 
 namespace {
 
@@ -124,6 +125,16 @@ TracerRun::TracerRun(const TracerConfig& config, const BackgroundProgress& progr
   result.start_time = config.start == "states" ? states_time : config.resolved_start_time();
 
   x.background = make_background(config, &result.background_description, progress);
+  // A background of measured data (md) has nothing to continue before its first recorded time.
+  const std::string source = config.background == "md" ? "--md-run = " + config.md_run + "'s first recorded time"
+                                                       : "the " + config.background + " background's first time";
+  if (result.start_time < x.background->t_first())
+    throw std::invalid_argument("the tracer starts at t = " + format_number(result.start_time) +
+                                " (--start-time, or the scene's t_min), before " + source +
+                                ", t = " + format_number(x.background->t_first()));
+  if (scene.config.t_max > x.background->t_last())
+    throw std::invalid_argument("t_max = " + format_number(scene.config.t_max) + " is after the " + config.background +
+                                " background's last time, t = " + format_number(x.background->t_last()));
   if (const auto* grid = dynamic_cast<const GridBackground*>(x.background.get()))
     result.background_frames = grid->frame_count();
   const ImpurityModel impurity{scene.config.d, scene.config.impurities.mass, scene.config.a + scene.impurity_radius};

@@ -28,8 +28,12 @@ double scene_packing_fraction(const md::BlastConfig& c) {
 
 void TracerConfig::validate() const {
   scene.validate();
-  if (background != "ns" && background != "tvns" && background != "equilibrium")
-    throw std::invalid_argument("--background = " + background + " is not one of: ns, tvns, equilibrium");
+  if (background != "ns" && background != "tvns" && background != "equilibrium" && background != "md")
+    throw std::invalid_argument("--background = " + background + " is not one of: ns, tvns, equilibrium, md");
+  if ((background == "md") != !md_run.empty())
+    throw std::invalid_argument(background == "md" ? "--background = md needs --md-run DIR (an `md run` folder that "
+                                                     "recorded the observables profiles and R)"
+                                                   : "--md-run is only for --background md");
   if (transport != "dilute" && transport != "enskog")
     throw std::invalid_argument("--transport = " + transport + " is not one of: dilute, enskog");
   if (transport == "enskog" && background == "tvns")
@@ -43,7 +47,7 @@ void TracerConfig::validate() const {
                                                   : "--start-states is only for --start states");
   if (start == "states" && (background == "equilibrium" || start_time != 0.0))
     throw std::invalid_argument(background == "equilibrium"
-                                    ? "--start = states is for the blast backgrounds ns and tvns, not equilibrium"
+                                    ? "--start = states is for the blast backgrounds ns, tvns and md, not equilibrium"
                                     : "--start-time is the states file's time with --start = states; leave it out");
   common::require_integer_in_range("--trajectories", trajectories, 0, 1000000000000LL, "(0 = scene default)");
   common::require_integer_in_range("--threads", threads, 1, 1024);
@@ -79,6 +83,14 @@ std::unique_ptr<Background> make_background(const TracerConfig& config, std::str
     return std::make_unique<EquilibriumBackground>(c.d, n, config.T, contact);
   }
   if (config.background == "tvns") return make_tvns_background(c, contact, description);
+  if (config.background == "md") {
+    if (!config.md_profiles)
+      throw std::invalid_argument("--md-run = " + config.md_run +
+                                  ": the profiles were not read (run::with_input_files)");
+    // After the MD's last recorded time, up to its t_max (run::with_input_files checks the tracer's
+    // t_max against it): the TvNS continuation, as the ns background's.
+    return make_md_background(*config.md_profiles, contact, description, true);
+  }
   return make_navier_stokes_background(c, contact, config.frames_per_decade, config.cells, description, progress);
 }
 

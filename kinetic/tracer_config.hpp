@@ -9,6 +9,7 @@
 
 #include "hydro/navier_stokes_config.hpp"
 #include "kinetic/background.hpp"
+#include "kinetic/md_background.hpp"
 #include "md/blast_config.hpp"
 #include "md/impurity_state.hpp"
 
@@ -18,7 +19,13 @@ namespace coldblast::kinetic {
 /// p_imp_bins) plus the background and the Monte Carlo options.
 struct TracerConfig {
   md::BlastConfig scene;
-  std::string background = "ns";         ///< "ns" (Navier–Stokes core), "tvns" (exact Euler) or "equilibrium"
+  /// "ns" (Navier–Stokes core), "tvns" (exact Euler), "equilibrium" or "md" (an MD run's own
+  /// measured profiles: md_run)
+  std::string background = "ns";
+  std::string md_run;     ///< background = "md": the `md run` folder (recorded, and in messages)
+  std::string md_run_id;  ///< background = "md": that run's id (recorded; empty for a run before run ids)
+  /// background = "md": the profiles read from md_run (run::with_input_files).
+  std::shared_ptr<const MeasuredProfiles> md_profiles;
   std::string transport = "dilute";      ///< "dilute" (chi = 1) or "enskog" (chi(n) at contact; ns: the dense NS)
   long long trajectories = 0;            ///< impurity trajectories, >= 1; 0 = scene realizations × impurities.count
   int threads = 1;                       ///< worker threads, [1, 1024]

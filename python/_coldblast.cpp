@@ -34,6 +34,7 @@
 #include "kinetic/tracer_config.hpp"
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
+#include "run/md_fields.hpp"
 #include "run/md_run.hpp"
 #include "run/run_directory.hpp"
 #include "run/scene_file.hpp"
@@ -386,6 +387,7 @@ struct TracerOptions {
   int frames_per_decade = 40, cells = hydro::default_core_cells;
   std::string start_states;
   std::string kernel = "auto";
+  std::string md_run;
 };
 
 py::list tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
@@ -395,6 +397,9 @@ py::list tracer_run(const std::string& scene_file, const std::string& scene_text
   run::SceneRequest scene;
   scene.file = scene_file;
   scene.text = scene_text;
+  // background="md" without a scene: the MD run's own (as `tracer --background md --md-run DIR`).
+  if (o.background == "md" && scene_file.empty() && scene_text.empty() && !o.md_run.empty())
+    scene.text = run::md_run_scene_toml(o.md_run, "--md-run");
   scene.overrides = std::move(overrides);
   scene.seed = seed;
   scene.md_snapshots = false;  // the tracer records no particles
@@ -412,6 +417,7 @@ py::list tracer_run(const std::string& scene_file, const std::string& scene_text
   config.frames_per_decade = o.frames_per_decade;
   config.cells = o.cells;
   config.kernel = o.kernel;
+  config.md_run = o.md_run;
   // resume=OUT: the checkpoint's scene and options; an argument given again must agree with them.
   if (resume) config = run::resume_tracer_config(out, config, given);
   Progress progress(progress_callback);
@@ -556,14 +562,15 @@ PYBIND11_MODULE(_coldblast, m) {
          std::optional<long long> seed, const std::string& background, const std::string& transport,
          const std::string& start, long long trajectories, int threads, double T, std::optional<double> phi,
          double start_time, int frames_per_decade, int cells, const std::string& start_states,
-         const std::string& kernel, const std::string& out, bool resume, bool overwrite,
+         const std::string& kernel, const std::string& md_run, const std::string& out, bool resume, bool overwrite,
          const std::vector<std::string>& given, const py::object& progress) {
-        const TracerOptions options{background, transport,         start, trajectories, threads, T, phi,
-                                    start_time, frames_per_decade, cells, start_states, kernel};
+        const TracerOptions options{background, transport,         start, trajectories, threads, T,     phi,
+                                    start_time, frames_per_decade, cells, start_states, kernel,  md_run};
         return tracer_run(scene_file, scene_text, overrides, seed, options, out, resume, overwrite, given, progress);
       },
       py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("seed"), py::arg("background"),
       py::arg("transport"), py::arg("start"), py::arg("trajectories"), py::arg("threads"), py::arg("T"), py::arg("phi"),
       py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("kernel"),
-      py::arg("out"), py::arg("resume"), py::arg("overwrite"), py::arg("given"), py::arg("progress"));
+      py::arg("md_run"), py::arg("out"), py::arg("resume"), py::arg("overwrite"), py::arg("given"),
+      py::arg("progress"));
 }

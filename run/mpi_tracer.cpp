@@ -47,7 +47,7 @@ TracerResult run_tracer_mpi(const kinetic::TracerConfig& config, const TracerPro
   const auto started = std::chrono::steady_clock::now();
   config.validate();
   // Every rank: validation (bad input ends every rank alike), the start states and the background.
-  const kinetic::TracerRun run(with_start_states(config), progress.background);
+  const kinetic::TracerRun run(with_input_files(config), progress.background);
   // Rank 0: the folder, the checkpoint and the blocks still to run (an error ends every rank).
   TracerPlan plan = MpiSession::rank() == 0 ? plan_tracer(run, files) : TracerPlan{};
   std::mutex mutex;  // guards the blocks and done

@@ -50,6 +50,10 @@ common::Json tracer_summary(const TracerResult& result) {
   j["background"] = c.background;
   j["background_description"] = result.background_description;
   j["background_frames"] = result.background_frames;
+  if (c.background == "md") {  // the MD run whose measured fields the tracer ran in
+    j["md_run"] = c.md_run;
+    j["md_run_id"] = c.md_run_id;
+  }
   j["transport"] = c.transport;
   j["kernel"] = result.kernel;
   j["start"] = c.start;
@@ -168,6 +172,10 @@ common::Json read_tracer_summary(const std::filesystem::path& path) {
     take(key, true);
   if (!keys.at("background_frames").is_number_unsigned()) throw bad("'background_frames' is not a count");
   if (keys.at("background") == "equilibrium") take("T", true);
+  if (keys.at("background") == "md") {
+    take("md_run", false);
+    take("md_run_id", false);
+  }
   if (s.contains("kernel"))
     take("kernel", false);
   else
@@ -251,6 +259,10 @@ TracerResult merge_tracer_outputs(const std::vector<std::filesystem::path>& dire
   c.start = first.at("start").get<std::string>();
   if (first.contains("start_states")) c.start_states = first.at("start_states").get<std::string>();
   if (first.contains("T")) c.T = first.at("T").get<double>();
+  if (first.contains("md_run")) {
+    c.md_run = first.at("md_run").get<std::string>();
+    c.md_run_id = first.at("md_run_id").get<std::string>();
+  }
   c.trajectories = scene.config.realizations;
   c.threads = merged.ensemble.threads;
   merged.start_time = c.start_time = first.at("start_time").get<double>();

@@ -14,6 +14,7 @@
 #include "run/checkpoint.hpp"
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
+#include "run/md_fields.hpp"
 #include "run/run_directory.hpp"
 #include "run/scene_file.hpp"
 #include "run/tracer_files.hpp"
@@ -46,10 +47,36 @@ double TracerResult::rejection_rate() const {
   return kinetic::rejection_rate(blocks);
 }
 
-kinetic::TracerConfig with_start_states(kinetic::TracerConfig config) {
-  if (config.start != "states" || config.states || config.start_states.empty()) return config;
-  config.states = std::make_shared<const md::ImpurityStates>(
-      read_impurity_states(config.start_states, config.scene.d, "--start-states"));
+std::string md_run_path(const std::string& md_run) {
+  if (md_run.empty()) return md_run;
+  std::filesystem::path path = std::filesystem::absolute(md_run).lexically_normal();
+  if (path.filename().empty()) path = path.parent_path();  // "DIR/": the folder itself
+  return path.string();
+}
+
+kinetic::TracerConfig with_input_files(kinetic::TracerConfig config) {
+  if (config.start == "states" && !config.states && !config.start_states.empty())
+    config.states = std::make_shared<const md::ImpurityStates>(
+        read_impurity_states(config.start_states, config.scene.d, "--start-states"));
+  if (config.background == "md" && !config.md_profiles && !config.md_run.empty()) {
+    config.md_run = md_run_path(config.md_run);
+    MdRunFields fields = read_md_run_fields(config.md_run, "--md-run");
+    const std::string named = "--md-run = " + config.md_run;
+    const std::string difference = scene_physics_difference(fields.scene, config.scene);
+    if (!difference.empty())
+      throw std::invalid_argument(named + " is of another scene: " + difference +
+                                  " (leave SCENE and --set of these keys out to take the MD run's scene)");
+    if (!config.md_run_id.empty() && config.md_run_id != fields.run_id)
+      throw std::invalid_argument(named + " now holds run " + fields.run_id + ", not run " + config.md_run_id +
+                                  " whose fields the checkpoint's blocks ran in");
+    if (config.scene.t_max > fields.scene.t_max)
+      throw std::invalid_argument(named + " ran to t_max = " + common::format_number(fields.scene.t_max) +
+                                  " (recorded up to t = " + common::format_number(fields.profiles.frames.back().t) +
+                                  "); the tracer's t_max = " + common::format_number(config.scene.t_max) +
+                                  " is beyond it");
+    config.md_run_id = fields.run_id;
+    config.md_profiles = std::make_shared<const kinetic::MeasuredProfiles>(std::move(fields.profiles));
+  }
   return config;
 }
 
@@ -131,6 +158,8 @@ std::map<std::string, std::string> tracer_option_values(const kinetic::TracerCon
           {"--start", c.start},
           {"--start-time", option_text(c.start_time)},
           {"--start-states", c.start_states},
+          {"--md-run", md_run_path(c.md_run)},
+          {"md_run_id", c.md_run_id},
           {"--frames-per-decade", std::to_string(c.frames_per_decade)},
           {"--cells", std::to_string(c.cells)},
           {"--kernel", c.kernel},
@@ -164,6 +193,9 @@ kinetic::TracerConfig resume_tracer_config(const std::filesystem::path& out, con
     c.start = value("--start");
     c.start_time = std::stod(value("--start-time"));
     c.start_states = value("--start-states");
+    // Absent from checkpoints made before --background md: no MD run.
+    c.md_run = run.options.contains("--md-run") ? value("--md-run") : "";
+    c.md_run_id = run.options.contains("md_run_id") ? value("md_run_id") : "";
     c.frames_per_decade = std::stoi(value("--frames-per-decade"));
     c.cells = std::stoi(value("--cells"));
     c.kernel = value("--kernel");
@@ -231,7 +263,7 @@ TracerResult run_tracer(const kinetic::TracerConfig& config, const TracerProgres
                         const TracerRunFiles& files) {
   const auto started = std::chrono::steady_clock::now();
   config.validate();  // before the states are read: a missing --start-states is named as such
-  const kinetic::TracerRun run(with_start_states(config), progress.background);
+  const kinetic::TracerRun run(with_input_files(config), progress.background);
   TracerPlan plan = plan_tracer(run, files);
   const std::vector<long long>& owned = plan.pending;
   std::vector<kinetic::TracerBlockSums> outputs(owned.size());

@@ -61,7 +61,7 @@ struct TracerRunFiles {
 
 /// The options a checkpoint records and --resume OUT alone restores: flag name → value text
 /// (--background, --transport, --trajectories, --T, --phi, --start, --start-time, --start-states,
-/// --frames-per-decade, --cells, --kernel, --shard).
+/// --md-run (md_run_path's form) and md_run_id, --frames-per-decade, --cells, --kernel, --shard).
 std::map<std::string, std::string> tracer_option_values(const kinetic::TracerConfig& config);
 /// --resume OUT: the config of OUT's checkpoint (its scene as given and its options), with
 /// `requested`'s threads. Each flag in `given` (e.g. "--background", or "SCENE" and "--set" for the
@@ -69,9 +69,13 @@ std::map<std::string, std::string> tracer_option_values(const kinetic::TracerCon
 kinetic::TracerConfig resume_tracer_config(const std::filesystem::path& out, const kinetic::TracerConfig& requested,
                                            const std::vector<std::string>& given);
 
-/// The config with its start states read (start = "states" and none given yet: from
-/// config.start_states, naming --start-states in errors); otherwise the config unchanged.
-kinetic::TracerConfig with_start_states(kinetic::TracerConfig config);
+/// The config with the files it names read, once: its start states (start = "states": from
+/// config.start_states, naming --start-states in errors) and its MD fields (background = "md": from
+/// config.md_run, made absolute; the MD's scene must have the tracer's physics, and a recorded
+/// md_run_id, e.g. a checkpoint's, must be the folder's run), otherwise the config unchanged.
+kinetic::TracerConfig with_input_files(kinetic::TracerConfig config);
+/// --md-run's folder as the run records it: absolute, normalised, without a trailing separator.
+std::string md_run_path(const std::string& md_run);
 
 /// The result of a prepared run with the blocks it finished, `wall_seconds` and `ranks` recorded.
 TracerResult tracer_result(const kinetic::TracerRunInfo& info, double wall_seconds, int ranks = 1);

@@ -12,7 +12,7 @@ from .md import scene_arguments
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
         start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=_coldblast.default_core_cells,
-        progress=True, start_states=None, kernel="auto", overwrite=False, resume=None, **overrides):
+        progress=True, start_states=None, kernel="auto", overwrite=False, resume=None, md_run=None, **overrides):
     """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
 
     Parameters
@@ -21,7 +21,12 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         The MD scene the tracer matches (keys of ``md run``: d, n, a, E, impurities.*, t_min, t_max,
         seed, block_size): None for the embedded default scene, a TOML path, or a dict.
     background : str
-        "ns" (the Navier-Stokes core), "tvns" (exact Euler) or "equilibrium" (uniform bath).
+        "ns" (the Navier-Stokes core), "tvns" (exact Euler), "equilibrium" (uniform bath) or "md"
+        (an MD run's own measured mean fields: ``md_run``).
+    md_run : str, os.PathLike or None
+        background="md": an ``md run`` folder that recorded the observables profiles and R (``coldblast
+        tracer --md-run``); its scene is the tracer's when ``scene`` is None (d, n, a, E and the
+        impurities must agree).
     trajectories : int or None
         Impurity trajectories, >= 1; None: the scene's realizations x impurities.count.
     threads : int
@@ -87,7 +92,8 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         ("--background", background, "ns"), ("--transport", transport, "dilute"), ("--start", start, "kick"),
         ("--trajectories", trajectories, None), ("--T", T, 1.0), ("--phi", phi, None),
         ("--start-time", start_time, None), ("--frames-per-decade", frames_per_decade, 40), ("--cells", cells, 256),
-        ("--start-states", start_states, None), ("--kernel", kernel, "auto")) if value != default]
+        ("--start-states", start_states, None), ("--kernel", kernel, "auto"), ("--md-run", md_run, None))
+        if value != default]
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
     with sigterm_stops():
         raw = _coldblast.tracer_run(scene_file, scene_text, sets, None if seed is None else integer(seed, "--seed"),
@@ -99,6 +105,7 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
                                     0.0 if start_time is None else number(start_time, "--start-time"),
                                     integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
                                     "" if start_states is None else os.fspath(start_states),
-                                    text(kernel, "--kernel"), "" if out is None else os.fspath(out), resume is not None,
+                                    text(kernel, "--kernel"), "" if md_run is None else os.fspath(md_run),
+                                    "" if out is None else os.fspath(out), resume is not None,
                                     bool(overwrite), given, _progress.callback(progress, "tracer", "blocks"))
     return Run(raw, out, "tracer")

@@ -133,3 +133,118 @@ def test_code_sizes_lists_every_module_with_its_largest_file():
     listed = [int(n) for n in re.findall(r"^ +(\d+)  ", out, flags=re.M)]
     assert listed == sorted(listed, reverse=True) and all(n > 40 for n in listed)
     assert max(int(r[6]) for r in rows) == listed[0]
+
+
+def scaled_run(source, target, factors):
+    """A copy of run `source` (blocks.csv, p_imp.csv) with the inner sums of observables scaled:
+    factors {name: f} multiply every block's sum of that name."""
+    os.makedirs(target)
+    with open(os.path.join(source, "blocks.csv")) as f, open(os.path.join(target, "blocks.csv"), "w") as out:
+        for line in f:
+            if line.startswith("#") or line.startswith("block,"):
+                out.write(line)
+                continue
+            block, t, name, total, count = line.rstrip("\n").split(",")
+            out.write(f"{block},{t},{name},{float(total) * factors.get(name, 1.0)!r},{count}\n")
+    with open(os.path.join(source, "p_imp.csv")) as f, open(os.path.join(target, "p_imp.csv"), "w") as out:
+        out.write(f.read())
+
+
+def test_tracer_decomposition_adds_up_with_the_jackknife_errors(tmp_path):
+    """scripts/tracer_decomposition.py on runs made from the MD's own blocks with R_imp, C_imp scaled
+    by known factors (R_imp's inner value is r^2/2, so 1.21 makes R_imp 1.1 times the MD's): the total,
+    Eq. (36)'s and the background's parts are the known per cents and add up; the errors are the
+    closed forms of the block jackknife for runs that share the MD's noise (paired) and an
+    independent MD; p_imp's ratio differences vanish for equal histograms; the figure is drawn."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import numpy as np
+    import tracer_decomposition as td
+    from block_jackknife import time_series
+    md = os.path.join(REPO, "data", "campaign4-heavy")
+    ns, fields = str(tmp_path / "ns"), str(tmp_path / "fields")
+    scaled_run(md, ns, {"R_imp": 1.1 ** 2, "C_imp": 1.15})
+    scaled_run(md, fields, {"R_imp": 1.02 ** 2, "C_imp": 1.05})
+    result = td.decomposition(md, ns, fields, [15.625, 250.0, 4000.0])
+    assert result["times"] == [15.625, 250.0, 4000.0]
+    assert all(result["paired"].values())
+    t, value, error = time_series(md, ["R_imp"], lambda x, count: np.sqrt(x / count))
+    for name, (total, own) in (("R_imp", (10.0, 2.0)), ("C_imp", (15.0, 5.0)), ("V_imp", (0.0, 0.0))):
+        for t_k, tot, tot_e, o, o_e, bg, bg_e, m, dm in result[name]:
+            assert abs(tot - total) < 1e-9 and abs(o - own) < 1e-9 and abs(bg - (total - own)) < 1e-9
+            assert abs(tot - (o + bg)) < 1e-9
+            relative = dm / m
+            assert abs(tot_e - 100 * (1 + total / 100) * np.sqrt(2) * relative) < 1e-9
+            assert abs(o_e - 100 * (1 + own / 100) * np.sqrt(2) * relative) < 1e-9
+            # paired: (a - b) has the MD's relative noise, (total - own) % of it; MD's independent
+            assert abs(bg_e - (total - own) * np.sqrt(2) * relative) < 1e-9
+            if name == "R_imp":
+                assert abs(dm - error[list(t).index(t_k)][0]) < 1e-12
+    for t_k, m, dm, a, da, b, db in result["p_imp"]:
+        assert m == a == b and 1.0 < m < 2.0 and 0 < dm < 0.05
+    # --variants: a run in other fields, R_imp 1.03 times the MD's, changes by +1 % of the MD from
+    # the 1.02 run, its paired error 1 % times the MD's relative error (the runs share the MD's noise).
+    variant = str(tmp_path / "variant")
+    scaled_run(md, variant, {"R_imp": 1.03 ** 2, "C_imp": 1.05})
+    changes = td.variant_changes(md, fields, [variant], [250.0, 4000.0])
+    for name, change in (("R_imp", 1.0), ("C_imp", 0.0), ("V_imp", 0.0)):
+        for (t_k, [(c, e)]), row in zip(changes[name], [r for r in result[name] if r[0] in (250.0, 4000.0)]):
+            assert abs(c - change) < 1e-9 and abs(e - change * row[8] / row[7]) < 1e-9
+    assert all(c == 0.0 for t_k, [(c, e)] in changes["p_imp"])
+    out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "tracer_decomposition.py"), md, ns, fields,
+                          "--times", "250,4000", "--figure", str(tmp_path / "d.png"), "--variants", variant],
+                         capture_output=True, text=True, check=True).stdout
+    assert "| 4000 |" in out and "+10.0 ± " in out and "paired jackknife" in out
+    assert "| t | variant |" in out and "| 4000 | +1.00 ± " in out
+    assert (tmp_path / "d.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_profile_variants_keep_mass_momentum_and_energy_and_perturb_by_the_errors(tmp_path):
+    """scripts/profile_variants.py merges bins as md run bins particles: per kept time the mass
+    (density x shell volume), the radial momentum (particles x u) and the kinetic energy
+    (particles x (d T + u^2)) of the merged bins equal the original bins'; every second time is
+    kept; merging nothing reproduces the file. --noise moves every bin by deviates whose
+    distribution, in units of the stated errors, has mean 0 and variance 1."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import profile_variants
+    md = os.path.join(REPO, "data", "campaign1-paper-2d")
+    _, rows = profile_variants.read(os.path.join(md, "profiles.csv"))
+    merged = profile_variants.coarsen(rows, 2, 3, 2)
+    times = sorted({float(r["t"]) for r in rows})
+    assert sorted({float(r["t"]) for r in merged}) == times[::2]
+    assert len(merged) == len(times[::2]) * 10
+    def totals(table, t):
+        part = [r for r in table if float(r["t"]) == t]
+        mass = sum(float(r["density_over_n"]) * (float(r["r_over_R_hi"]) ** 2 - float(r["r_over_R_lo"]) ** 2)
+                   for r in part)
+        momentum = sum(float(r["particles"]) * float(r["radial_velocity"]) for r in part)
+        energy = sum(float(r["particles"]) * (2 * float(r["temperature"]) + float(r["radial_velocity"]) ** 2)
+                     for r in part)
+        return mass, momentum, energy
+    for t in (times[0], times[20], times[-1]):
+        for a, b in zip(totals(rows, t), totals(merged, t)):
+            assert abs(a - b) <= 1e-12 * abs(a) + 1e-300
+    same = profile_variants.coarsen(rows, 2, 1, 1)
+    for a, b in zip(rows, same):
+        for key in ("density_over_n", "radial_velocity", "temperature", "particles"):
+            assert abs(float(a[key]) - float(b[key])) <= 1e-13 * abs(float(a[key])) + 1e-18
+    out = tmp_path / "coarse"
+    subprocess.run([sys.executable, os.path.join(REPO, "scripts", "profile_variants.py"), md, str(out),
+                    "--bins", "2", "--times", "2"], capture_output=True, text=True, check=True)
+    assert (out / "summary.json").exists() and (out / "observables.csv").exists()
+    _, written = profile_variants.read(str(out / "profiles.csv"))
+    assert len(written) == len(times[::2]) * 15
+    import numpy as np
+    noisy = profile_variants.perturb(rows, 2, 30000, 7)
+    z = {"density_over_n": [], "radial_velocity": [], "temperature": []}
+    for a, b in zip(rows, noisy):
+        count, T = float(a["particles"]) * 30000, float(a["temperature"])
+        if count < 100 or T <= 0:
+            continue
+        errors = {"density_over_n": float(a["density_stderr"]), "radial_velocity": (T / count) ** 0.5,
+                  "temperature": T * (2 / (2 * count)) ** 0.5}
+        for key, e in errors.items():
+            z[key].append((float(b[key]) - float(a[key])) / e)
+    for key, values in z.items():
+        values = np.array(values)
+        assert len(values) > 1000
+        assert abs(values.mean()) < 4 / len(values) ** 0.5 and abs(values.var() - 1) < 0.15, key

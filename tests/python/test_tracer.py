@@ -1,12 +1,14 @@
-"""coldblast.tracer.run against `coldblast tracer` (same files, same numbers), the exact equilibrium
-collision rate, and coldblast.compare(..., md_run=...) against `coldblast compare --md-run`."""
+"""coldblast.tracer.run against `coldblast tracer` (same files, same numbers; the md background
+too), the exact equilibrium collision rate, and coldblast.compare(..., md_run=...) against
+`coldblast compare --md-run`."""
+import json
 import math
 import os
 
 import pytest
 
 import coldblast
-from conftest import REPO, cli_error, cli_json
+from conftest import REPO, cli_error, cli_json, run_cli
 
 TINY = dict(t_max=50)  # the embedded 2D scene, cut at t = 50
 
@@ -105,3 +107,25 @@ def test_scene_snapshot_times_do_not_refuse_a_shorter_t_max():
     result = coldblast.tracer.run(scene, background="tvns", trajectories=8, progress=False, t_max=1000)
     assert result.estimates["R_imp"]["t"][-1] <= 1000.0
     assert "snapshot_times = []" in result.summary["scene_toml"]
+
+
+def test_md_background_equals_cli(tmp_path):
+    # tracer.run(background="md", md_run=DIR) is `coldblast tracer --background md --md-run DIR`:
+    # the MD run's scene by default, the same files, the MD run's id and path in summary.json.
+    md = tmp_path / "md"
+    coldblast.md.run(realizations=4, seed=3, out=md, progress=False, block_size=1,
+                     observables=["R_imp", "V_imp", "C_imp", "R", "profiles", "p_imp"], **TINY)
+    run_cli("tracer", "--background", "md", "--md-run", md, "--trajectories", 64, "--out", tmp_path / "cli")
+    coldblast.tracer.run(background="md", md_run=md, trajectories=64, out=tmp_path / "py", progress=False)
+    for name in ("observables.csv", "blocks.csv", "p_imp.csv", "moments.csv", "prefactors.csv"):
+        assert lines(tmp_path / "py" / name) == lines(tmp_path / "cli" / name), name
+    summary = json.loads((tmp_path / "py" / "summary.json").read_text())
+    assert summary["background"] == "md"
+    assert summary["md_run"] == str(md)
+    assert summary["md_run_id"] == json.loads((md / "summary.json").read_text())["run_id"]
+    assert summary["scene"]["t_max"] == 50  # the MD run's scene
+    for kwargs, flags in (({}, []), ({"md_run": tmp_path / "none"}, ["--md-run", tmp_path / "none"]),
+                          ({"md_run": md, "E": 20}, ["--md-run", md, "--set", "E=20"])):
+        with pytest.raises(ValueError) as error:
+            coldblast.tracer.run(background="md", progress=False, **kwargs)
+        assert str(error.value) == cli_error("tracer", "--background", "md", *flags)
