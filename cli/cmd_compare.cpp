@@ -43,41 +43,35 @@ std::vector<std::string> split_list(const std::string& text) {
   return items;
 }
 
-void print_table(const compare::CompareResult& result) {
-  std::printf(
-      "%s (d = %d) against %s: errors by delete-one-block jackknife; pass within %g sigma%s, miss within that + the "
-      "row's allowance, else FAIL\nallowance: %s\n\n",
-      compare::run_label(result.run).c_str(), result.d, compare::to_string(result.against).c_str(), result.sigma,
-      result.against == compare::Reference::paper ? " (combined with the paper's error)" : "",
-      result.allowance_rule.c_str());
-  std::printf("%-7s %-10s %-17s %-24s %-19s %8s %6s  %s\n", "obs", "alpha_T", "reference", "alpha_S(last two t)",
-              "window fit", "dev/sig", "allow", "verdict");
-  for (const auto& v : result.observables) {
-    char reference[64], measured[64], window[64];
-    std::snprintf(reference, sizeof reference, v.alpha_reference_error > 0 ? "%.4f±%.3f" : "%.4f", v.alpha_reference,
-                  v.alpha_reference_error);
-    // An exponent (or its jackknife error) is undefined when the observable's ensemble mean, or a
-    // delete-one-block mean, is <= 0 at one of its times (u_flow: the thermal-noise correction
-    // exceeds the signal); say so instead of printing nan.
-    if (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error))
-      std::snprintf(measured, sizeof measured, "%.4f±%.4f @%g", v.alpha_measured, v.alpha_error, v.t_measured);
-    else
-      std::snprintf(measured, sizeof measured, "undefined @%g", v.t_measured);
-    if (v.window.points < 2)
-      std::snprintf(window, sizeof window, "none (%d time)", v.window.points);
-    else if (std::isfinite(v.window.exponent) && std::isfinite(v.window.exponent_error))
-      std::snprintf(window, sizeof window, "%.4f±%.4f", v.window.exponent, v.window.exponent_error);
-    else
-      std::snprintf(window, sizeof window, "undefined");
-    char deviation[32];
-    if (std::isfinite(v.deviation_sigma))
-      std::snprintf(deviation, sizeof deviation, "%+8.2f", v.deviation_sigma);
-    else
-      std::snprintf(deviation, sizeof deviation, "%8s", "-");
-    std::printf("%-7s %-10s %-17s %-24s %-19s %s %6.3f  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(),
-                reference, measured, window, deviation, v.allowance, compare::to_string(v.outcome).c_str());
-  }
-  for (const auto& note : result.notes) std::printf("note: %s\n", note.c_str());
+/// One exponent row of the table.
+void print_exponent_row(const compare::ObservableVerdict& v) {
+  char reference[64], measured[64], window[64];
+  std::snprintf(reference, sizeof reference, v.alpha_reference_error > 0 ? "%.4f±%.3f" : "%.4f", v.alpha_reference,
+                v.alpha_reference_error);
+  // An exponent (or its jackknife error) is undefined when the observable's ensemble mean, or a
+  // delete-one-block mean, is <= 0 at one of its times (u_flow: the thermal-noise correction
+  // exceeds the signal); say so instead of printing nan.
+  if (std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error))
+    std::snprintf(measured, sizeof measured, "%.4f±%.4f @%g", v.alpha_measured, v.alpha_error, v.t_measured);
+  else
+    std::snprintf(measured, sizeof measured, "undefined @%g", v.t_measured);
+  if (v.window.points < 2)
+    std::snprintf(window, sizeof window, "none (%d time)", v.window.points);
+  else if (std::isfinite(v.window.exponent) && std::isfinite(v.window.exponent_error))
+    std::snprintf(window, sizeof window, "%.4f±%.4f", v.window.exponent, v.window.exponent_error);
+  else
+    std::snprintf(window, sizeof window, "undefined");
+  char deviation[32];
+  if (std::isfinite(v.deviation_sigma))
+    std::snprintf(deviation, sizeof deviation, "%+8.2f", v.deviation_sigma);
+  else
+    std::snprintf(deviation, sizeof deviation, "%8s", "-");
+  std::printf("%-7s %-10s %-17s %-24s %-19s %s %6.3f  %s\n", v.name.c_str(), v.alpha_theory_rational.c_str(), reference,
+              measured, window, deviation, v.allowance, compare::to_string(v.outcome).c_str());
+}
+
+/// The amplitudes of --against hydro (or why there are none).
+void print_amplitudes(const compare::CompareResult& result) {
   if (result.against == compare::Reference::hydro && result.continuum && result.amplitudes.empty())
     std::printf("\namplitudes: none (they need n0, T0 and R in blocks.csv, or profiles.csv; this %s run has none)\n",
                 compare::run_label(result.run).c_str());
@@ -101,26 +95,42 @@ void print_table(const compare::CompareResult& result) {
         "(sigma combines the MD error and the NS value's numerical error; a miss is beyond k sigma but within\n"
         " the bound, the first order NS drops: Kn^2 in the core, lambda/R at the shock; docs/compare.md)\n");
   }
-  if (result.tracer_md) {
-    const compare::TracerMdComparison& c = *result.tracer_md;
-    std::printf("\ntracer%s against the MD run %s%s (tracer/MD - 1, combined jackknife error):\n",
-                c.tracer_from_md_states
-                    ? (" (started from its impurities at t = " + common::format_number(c.start_time) + ")").c_str()
-                    : "",
-                c.md_directory.string().c_str(), c.md_recollisions_off ? ", recollisions switched off" : "");
-    for (const auto& s : c.series) {
-      const compare::TracerMdPoint& p = s.points.back();
-      std::printf("  %-6s t = %-9g tracer %s, MD %s: %s%s\n", s.observable.c_str(), p.t,
-                  common::format_measurement(p.tracer, p.tracer_error).c_str(),
-                  common::format_measurement(p.md, p.md_error).c_str(), p.ratio >= 0 ? "+" : "",
-                  common::format_measurement(p.ratio, p.ratio_error).c_str());
-    }
-    if (c.distribution)
-      std::printf("  p_imp  t = %-9g <r^4>/<r^2>^2 tracer %s, MD %s, Gaussian %.4f; chi2/dof %.3g\n", c.distribution->t,
-                  common::format_measurement(c.distribution->ratio_tracer, c.distribution->ratio_tracer_error).c_str(),
-                  common::format_measurement(c.distribution->ratio_md, c.distribution->ratio_md_error).c_str(),
-                  c.distribution->ratio_gaussian, c.distribution->chi2_per_dof);
+}
+
+/// A tracer run against its MD run at their last common time.
+void print_tracer_md(const compare::TracerMdComparison& c) {
+  std::printf("\ntracer%s against the MD run %s%s (tracer/MD - 1, combined jackknife error):\n",
+              c.tracer_from_md_states
+                  ? (" (started from its impurities at t = " + common::format_number(c.start_time) + ")").c_str()
+                  : "",
+              c.md_directory.string().c_str(), c.md_recollisions_off ? ", recollisions switched off" : "");
+  for (const auto& s : c.series) {
+    const compare::TracerMdPoint& p = s.points.back();
+    std::printf("  %-6s t = %-9g tracer %s, MD %s: %s%s\n", s.observable.c_str(), p.t,
+                common::format_measurement(p.tracer, p.tracer_error).c_str(),
+                common::format_measurement(p.md, p.md_error).c_str(), p.ratio >= 0 ? "+" : "",
+                common::format_measurement(p.ratio, p.ratio_error).c_str());
   }
+  if (c.distribution)
+    std::printf("  p_imp  t = %-9g <r^4>/<r^2>^2 tracer %s, MD %s, Gaussian %.4f; chi2/dof %.3g\n", c.distribution->t,
+                common::format_measurement(c.distribution->ratio_tracer, c.distribution->ratio_tracer_error).c_str(),
+                common::format_measurement(c.distribution->ratio_md, c.distribution->ratio_md_error).c_str(),
+                c.distribution->ratio_gaussian, c.distribution->chi2_per_dof);
+}
+
+void print_table(const compare::CompareResult& result) {
+  std::printf(
+      "%s (d = %d) against %s: errors by delete-one-block jackknife; pass within %g sigma%s, miss within that + the "
+      "row's allowance, else FAIL\nallowance: %s\n\n",
+      compare::run_label(result.run).c_str(), result.d, compare::to_string(result.against).c_str(), result.sigma,
+      result.against == compare::Reference::paper ? " (combined with the paper's error)" : "",
+      result.allowance_rule.c_str());
+  std::printf("%-7s %-10s %-17s %-24s %-19s %8s %6s  %s\n", "obs", "alpha_T", "reference", "alpha_S(last two t)",
+              "window fit", "dev/sig", "allow", "verdict");
+  for (const auto& v : result.observables) print_exponent_row(v);
+  for (const auto& note : result.notes) std::printf("note: %s\n", note.c_str());
+  print_amplitudes(result);
+  if (result.tracer_md) print_tracer_md(*result.tracer_md);
   std::printf("\nverdict: %s\n", compare::verdict_summary(result).c_str());
 }
 

@@ -23,86 +23,105 @@ namespace coldblast::compare {
 namespace fs = std::filesystem;
 using common::format_number;
 
+namespace {
+
+/// One exponent verdict of verdict.json.
+common::Json observable_json(const ObservableVerdict& v) {
+  common::Json running = common::Json::array();
+  for (const auto& r : v.running) running.push_back({{"t", r.t}, {"alpha", r.alpha}, {"error", r.error}});
+  return {{"name", v.name},
+          {"alpha_theory", v.alpha_theory},
+          {"alpha_theory_rational", v.alpha_theory_rational},
+          {"alpha_reference", v.alpha_reference},
+          {"alpha_reference_error", v.alpha_reference_error},
+          {"alpha_measured", v.alpha_measured},
+          {"alpha_error", v.alpha_error},
+          {"t_measured", v.t_measured},
+          {"window",
+           {{"exponent", v.window.exponent},
+            {"error", v.window.exponent_error},
+            {"t_first", v.window.t_first},
+            {"t_last", v.window.t_last},
+            {"points", v.window.points}}},
+          {"deviation_sigma", v.deviation_sigma},
+          {"tolerance", v.tolerance},
+          {"allowance", v.allowance},
+          {"allowance_origin", v.allowance_origin},
+          {"verdict", to_string(v.outcome)},
+          {"pass", v.pass},
+          {"running", running}};
+}
+
+/// One amplitude verdict of verdict.json.
+common::Json amplitude_json(const AmplitudeVerdict& a) {
+  return {{"name", a.name},
+          {"definition", a.definition},
+          {"t", a.t},
+          {"R_over_lambda", a.R_over_lambda},
+          {"measured", a.measured},
+          {"error", a.error},
+          {"reference", a.reference},
+          {"reference_error", a.reference_error},
+          {"continuum_bound", a.continuum_bound},
+          {"outcome", to_string(a.outcome)},
+          {"deviation_sigma", a.deviation_sigma},
+          {"relative_difference", a.relative_difference},
+          {"tolerance", a.tolerance},
+          {"verdict", to_string(a.outcome)},
+          {"pass", a.pass}};
+}
+
+/// hydro_model: the Navier–Stokes model of --against hydro, else null.
+common::Json hydro_model_json(const CompareResult& result) {
+  if (result.against != Reference::hydro || !result.continuum) return nullptr;
+  const HydroModel& m = result.continuum->model;
+  return {{"description", m.describe()},
+          {"eos", hydro::to_string(m.eos)},
+          {"phi", m.phi},
+          {"transport", hydro::to_string(m.transport)},
+          {"cells", result.continuum->ns.config.numerics.cells}};
+}
+
+/// tracer_vs_md: a tracer run against its MD run at their last common time, else null.
+common::Json tracer_md_json(const CompareResult& result) {
+  if (!result.tracer_md) return nullptr;
+  const TracerMdComparison& c = *result.tracer_md;
+  common::Json tracer_md = {
+      {"md_run", c.md_directory.string()}, {"observables", common::Json::array()}, {"p_imp", nullptr}};
+  for (const auto& s : c.series) {
+    const TracerMdPoint& p = s.points.back();
+    tracer_md["observables"].push_back({{"name", s.observable},
+                                        {"t", p.t},
+                                        {"tracer", p.tracer},
+                                        {"tracer_error", p.tracer_error},
+                                        {"md", p.md},
+                                        {"md_error", p.md_error},
+                                        {"ratio_minus_1", p.ratio},
+                                        {"ratio_minus_1_error", p.ratio_error}});
+  }
+  if (c.distribution) {
+    const TracerMdDistribution& h = *c.distribution;
+    tracer_md["p_imp"] = {{"t", h.t},
+                          {"moment_ratio_tracer", h.ratio_tracer},
+                          {"moment_ratio_tracer_error", h.ratio_tracer_error},
+                          {"moment_ratio_md", h.ratio_md},
+                          {"moment_ratio_md_error", h.ratio_md_error},
+                          {"moment_ratio_gaussian", h.ratio_gaussian},
+                          {"chi2_per_dof", h.chi2_per_dof},
+                          {"bins", h.dof}};
+  }
+  return tracer_md;
+}
+
+}  // namespace
+
 common::Json verdict_json(const CompareResult& result) {
   common::Json observables = common::Json::array();
-  for (const auto& v : result.observables) {
-    common::Json running = common::Json::array();
-    for (const auto& r : v.running) running.push_back({{"t", r.t}, {"alpha", r.alpha}, {"error", r.error}});
-    observables.push_back({{"name", v.name},
-                           {"alpha_theory", v.alpha_theory},
-                           {"alpha_theory_rational", v.alpha_theory_rational},
-                           {"alpha_reference", v.alpha_reference},
-                           {"alpha_reference_error", v.alpha_reference_error},
-                           {"alpha_measured", v.alpha_measured},
-                           {"alpha_error", v.alpha_error},
-                           {"t_measured", v.t_measured},
-                           {"window",
-                            {{"exponent", v.window.exponent},
-                             {"error", v.window.exponent_error},
-                             {"t_first", v.window.t_first},
-                             {"t_last", v.window.t_last},
-                             {"points", v.window.points}}},
-                           {"deviation_sigma", v.deviation_sigma},
-                           {"tolerance", v.tolerance},
-                           {"allowance", v.allowance},
-                           {"allowance_origin", v.allowance_origin},
-                           {"verdict", to_string(v.outcome)},
-                           {"pass", v.pass},
-                           {"running", running}});
-  }
+  for (const auto& v : result.observables) observables.push_back(observable_json(v));
   common::Json amplitudes = common::Json::array();
-  for (const auto& a : result.amplitudes)
-    amplitudes.push_back({{"name", a.name},
-                          {"definition", a.definition},
-                          {"t", a.t},
-                          {"R_over_lambda", a.R_over_lambda},
-                          {"measured", a.measured},
-                          {"error", a.error},
-                          {"reference", a.reference},
-                          {"reference_error", a.reference_error},
-                          {"continuum_bound", a.continuum_bound},
-                          {"outcome", to_string(a.outcome)},
-                          {"deviation_sigma", a.deviation_sigma},
-                          {"relative_difference", a.relative_difference},
-                          {"tolerance", a.tolerance},
-                          {"verdict", to_string(a.outcome)},
-                          {"pass", a.pass}});
-  common::Json hydro_model = nullptr;
-  if (result.against == Reference::hydro && result.continuum) {
-    const HydroModel& m = result.continuum->model;
-    hydro_model = {{"description", m.describe()},
-                   {"eos", hydro::to_string(m.eos)},
-                   {"phi", m.phi},
-                   {"transport", hydro::to_string(m.transport)},
-                   {"cells", result.continuum->ns.config.numerics.cells}};
-  }
-  common::Json tracer_md = nullptr;
-  if (result.tracer_md) {
-    const TracerMdComparison& c = *result.tracer_md;
-    tracer_md = {{"md_run", c.md_directory.string()}, {"observables", common::Json::array()}, {"p_imp", nullptr}};
-    for (const auto& s : c.series) {
-      const TracerMdPoint& p = s.points.back();
-      tracer_md["observables"].push_back({{"name", s.observable},
-                                          {"t", p.t},
-                                          {"tracer", p.tracer},
-                                          {"tracer_error", p.tracer_error},
-                                          {"md", p.md},
-                                          {"md_error", p.md_error},
-                                          {"ratio_minus_1", p.ratio},
-                                          {"ratio_minus_1_error", p.ratio_error}});
-    }
-    if (c.distribution) {
-      const TracerMdDistribution& h = *c.distribution;
-      tracer_md["p_imp"] = {{"t", h.t},
-                            {"moment_ratio_tracer", h.ratio_tracer},
-                            {"moment_ratio_tracer_error", h.ratio_tracer_error},
-                            {"moment_ratio_md", h.ratio_md},
-                            {"moment_ratio_md_error", h.ratio_md_error},
-                            {"moment_ratio_gaussian", h.ratio_gaussian},
-                            {"chi2_per_dof", h.chi2_per_dof},
-                            {"bins", h.dof}};
-    }
-  }
+  for (const auto& a : result.amplitudes) amplitudes.push_back(amplitude_json(a));
+  const common::Json hydro_model = hydro_model_json(result);
+  const common::Json tracer_md = tracer_md_json(result);
   return {{"d", result.d},
           {"against", to_string(result.against)},
           {"hydro_model", hydro_model},
@@ -329,21 +348,9 @@ std::string tracer_md_markdown(const TracerMdComparison& c, bool figures) {
   return md.str();
 }
 
-std::string markdown(const CompareResult& result, bool figures, const std::optional<DistributionFit>& fit,
-                     const ExtraFigures& extra) {
+/// The exponent table's rows, one per observable.
+std::string exponent_rows(const CompareResult& result) {
   std::ostringstream md;
-  md << "# coldblast comparison: " << run_label(result.run) << " against " << to_string(result.against) << "\n\n"
-     << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
-     << ", recorded times up to t = " << format_number(result.until) << ". Verdict: **" << verdict_word(result)
-     << "**; errors: delete-one-block jackknife over realizations.\n\n";
-  for (const auto& warning : result.warnings) md << "> **Warning:** " << warning << "\n\n";
-  md << "Each exponent: **pass** within " << format_number(result.sigma)
-     << " σ of the combined errors; **miss** beyond that but within it plus the row's finite-R/λ allowance; **FAIL** "
-        "beyond that too (docs/compare.md, \"Verdicts\"). Allowance: "
-     << result.allowance_rule << ".\n\n"
-     << "| observable | alpha_T | reference | alpha_S (last two times) | window fit | deviation / sigma | allowance "
-        "| verdict |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
   char buffer[512];
   for (const auto& v : result.observables) {
     // Undefined exponents (an ensemble mean <= 0 at some time, e.g. u_flow lost in noise) are named, not printed as
@@ -372,31 +379,54 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
                   markdown_word(v.outcome));
     md << buffer;
   }
+  return md.str();
+}
+
+/// The paper's Fig. 3 section: the Gaussian fit of p_imp and its shape.
+std::string distribution_markdown(const DistributionFit& f, const ExtraFigures& extra) {
+  std::ostringstream md;
+  md << "\n## Impurity radial distribution (paper Fig. 3)\n\nAt t = " << common::format_significant(f.t, 6)
+     << ", a least-squares fit of the Gaussian radial density (Eq. (39) in 2D, Eq. (35) in general) with R_imp = b t^"
+     << format_number(f.spread) << " gives b = " << common::format_measurement(f.b_fit, f.b_fit_error)
+     << " (unweighted least squares, rms residual " << common::format_significant(f.residual_rms, 2) << " over "
+     << f.bins << " bins); directly, R_imp/t^" << format_number(f.spread) << " = "
+     << common::format_significant(f.b_direct, 4)
+     << ". The paper reports b = 1.75 (fit) and 1.71 (direct) at t = 4000.\n";
+  char shape[400];
+  std::snprintf(shape, sizeof shape,
+                "\nShape: χ²/dof = %.3g of the fitted Gaussian against the per-bin errors (%d bins); "
+                "⟨r⁴⟩/⟨r²⟩² = %.4f ± %.4f against %.4f for any Gaussian, %+.1fσ (χ²/dof ≫ 1 or many σ: "
+                "the shape is not the Gaussian; docs/verification.md, Campaign 1).\n",
+                f.chi2_per_dof, f.weighted_bins, f.moment_ratio, f.moment_ratio_error, f.moment_ratio_gaussian,
+                (f.moment_ratio - f.moment_ratio_gaussian) / f.moment_ratio_error);
+  md << shape;
+  if (!extra.distribution.empty()) md << "\n![p_imp collapse](figures/" << extra.distribution << ")\n";
+  return md.str();
+}
+
+std::string markdown(const CompareResult& result, bool figures, const std::optional<DistributionFit>& fit,
+                     const ExtraFigures& extra) {
+  std::ostringstream md;
+  md << "# coldblast comparison: " << run_label(result.run) << " against " << to_string(result.against) << "\n\n"
+     << "Run directory: `" << result.run.directory.string() << "`, d = " << result.d
+     << ", recorded times up to t = " << format_number(result.until) << ". Verdict: **" << verdict_word(result)
+     << "**; errors: delete-one-block jackknife over realizations.\n\n";
+  for (const auto& warning : result.warnings) md << "> **Warning:** " << warning << "\n\n";
+  md << "Each exponent: **pass** within " << format_number(result.sigma)
+     << " σ of the combined errors; **miss** beyond that but within it plus the row's finite-R/λ allowance; **FAIL** "
+        "beyond that too (docs/compare.md, \"Verdicts\"). Allowance: "
+     << result.allowance_rule << ".\n\n"
+     << "| observable | alpha_T | reference | alpha_S (last two times) | window fit | deviation / sigma | allowance "
+        "| verdict |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  md << exponent_rows(result);
   for (const auto& note : result.notes) md << "\n- " << note << "\n";
   const std::vector<std::string> reasons = verdict_reasons(result);
   if (!reasons.empty()) md << "\nNot a pass:\n\n";
   for (const auto& reason : reasons) md << "- " << reason << "\n";
   if (result.against == Reference::hydro && result.continuum) md << amplitude_markdown(result);
   if (figures) md << "\n![Observables with running exponents](figures/observables.png)\n";
-  if (fit) {
-    md << "\n## Impurity radial distribution (paper Fig. 3)\n\nAt t = " << common::format_significant(fit->t, 6)
-       << ", a least-squares fit of the Gaussian radial density (Eq. (39) in 2D, Eq. (35) in general) with R_imp = b t^"
-       << format_number(fit->spread) << " gives b = " << common::format_measurement(fit->b_fit, fit->b_fit_error)
-       << " (unweighted least squares, rms residual " << common::format_significant(fit->residual_rms, 2) << " over "
-       << fit->bins << " bins); directly, R_imp/t^" << format_number(fit->spread) << " = "
-       << common::format_significant(fit->b_direct, 4)
-       << ". The paper reports b = 1.75 (fit) and 1.71 (direct) at t = 4000.\n";
-    char shape[400];
-    std::snprintf(shape, sizeof shape,
-                  "\nShape: χ²/dof = %.3g of the fitted Gaussian against the per-bin errors (%d bins); "
-                  "⟨r⁴⟩/⟨r²⟩² = %.4f ± %.4f against %.4f for any Gaussian, %+.1fσ (χ²/dof ≫ 1 or many σ: "
-                  "the shape is not the Gaussian; docs/verification.md, Campaign 1).\n",
-                  fit->chi2_per_dof, fit->weighted_bins, fit->moment_ratio, fit->moment_ratio_error,
-                  fit->moment_ratio_gaussian,
-                  (fit->moment_ratio - fit->moment_ratio_gaussian) / fit->moment_ratio_error);
-    md << shape;
-    if (!extra.distribution.empty()) md << "\n![p_imp collapse](figures/" << extra.distribution << ")\n";
-  }
+  if (fit) md << distribution_markdown(*fit, extra);
   if (!extra.blast.empty())
     md << "\n## The blast (paper Fig. 1)\n\nRealization 0 at its snapshot times: moving and resting particles, the "
           "impurities' paths, R_imp of Eq. (38) (the ensemble value) and the TvNS shock radius of Eq. (1).\n\n"
