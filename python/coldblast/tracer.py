@@ -91,7 +91,8 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         ("SCENE", scene, None), ("--set", overrides or None, None), ("--seed", seed, None),
         ("--background", background, "ns"), ("--transport", transport, "dilute"), ("--start", start, "kick"),
         ("--trajectories", trajectories, None), ("--T", T, 1.0), ("--phi", phi, None),
-        ("--start-time", start_time, None), ("--frames-per-decade", frames_per_decade, 40), ("--cells", cells, 256),
+        ("--start-time", start_time, None), ("--frames-per-decade", frames_per_decade, 40),
+        ("--cells", cells, _coldblast.default_core_cells),
         ("--start-states", start_states, None), ("--kernel", kernel, "auto"), ("--md-run", md_run, None))
         if value != default]
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
