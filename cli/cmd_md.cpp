@@ -149,15 +149,8 @@ void run_md(const MdRunOptions& o) {
   run::MdRunRequest request = o.request;
   // Every finished realization is checkpointed in OUT/checkpoint (removed once the outputs are
   // written); --resume DIR continues there (DIR is the output directory) with its scene and shard.
-  std::string out = o.out;
-  if (!o.resume.empty()) {
-    if (o.out_given &&
-        std::filesystem::path(o.out).lexically_normal() != std::filesystem::path(o.resume).lexically_normal())
-      throw std::invalid_argument("--resume = " + o.resume + " must be the output directory (--out = " + o.out + ")");
-    out = o.resume;
-    request.resume = true;
-  }
-  common::require_output_folder(out, o.resume.empty() ? "--out" : "--resume");
+  const std::string out = run_folder(o.out, o.out_given, o.resume);
+  request.resume = !o.resume.empty();
   request.out = out;
   request.resume_hint = "coldblast md run --resume " + out;
   run::MdRunPlan plan = run::plan_md_run(request);

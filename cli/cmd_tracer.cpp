@@ -62,16 +62,9 @@ run::TracerResult run_tracer_blocks(const kinetic::TracerConfig& config, const r
 }
 
 void run(TracerOptions& o) {
-  std::string out = o.out;
-  if (!o.resume.empty()) {
-    if (o.out_given &&
-        std::filesystem::path(o.out).lexically_normal() != std::filesystem::path(o.resume).lexically_normal())
-      throw std::invalid_argument("--resume = " + o.resume + " must be the output directory (--out = " + o.out + ")");
-    if (o.overwrite)
-      throw std::invalid_argument("--overwrite starts a new run; --resume continues the one in the folder: give one");
-    out = o.resume;
-  }
-  common::require_output_folder(out, o.resume.empty() ? "--out" : "--resume");
+  if (!o.resume.empty() && o.overwrite)
+    throw std::invalid_argument("--overwrite starts a new run; --resume continues the one in the folder: give one");
+  const std::string out = run_folder(o.out, o.out_given, o.resume);
   run::SceneRequest scene;
   scene.file = o.scene_file;
   // --background md without SCENE: the MD run's own scene (its physics must be the tracer's).

@@ -66,6 +66,11 @@ class ProgressPacer {
   double decade_ = 0.0;
 };
 
+/// The output folder of a run that checkpoints (md run, tracer): --resume DIR when given (then a
+/// given --out must name the same folder, else std::invalid_argument naming both), else --out; checked
+/// by common::require_output_folder under the flag that named it.
+std::string run_folder(const std::string& out, bool out_given, const std::string& resume);
+
 /// Prints a JSON document to stdout (2-space indentation, trailing newline).
 void print_json(const common::Json& document);
 

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -17,11 +18,23 @@
 #include "cli/commands.hpp"
 #include "coldblast/build_info.hpp"
 #include "common/interrupt.hpp"
+#include "common/output.hpp"
 #if COLDBLAST_HAVE_MPI
 #include "run/mpi_ensemble.hpp"
 #endif
 
 namespace coldblast::cli {
+std::string run_folder(const std::string& out, bool out_given, const std::string& resume) {
+  if (resume.empty()) {
+    common::require_output_folder(out, "--out");
+    return out;
+  }
+  if (out_given && std::filesystem::path(out).lexically_normal() != std::filesystem::path(resume).lexically_normal())
+    throw std::invalid_argument("--resume = " + resume + " must be the output directory (--out = " + out + ")");
+  common::require_output_folder(resume, "--resume");
+  return resume;
+}
+
 void print_json(const common::Json& document) {
   std::cout << document.dump(2) << '\n';
 }
