@@ -21,6 +21,7 @@
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
 #include "run/md_run.hpp"
+#include "run/merge.hpp"
 #include "run/progress.hpp"
 #include "run/run_directory.hpp"
 #include "run/tracer_files.hpp"
@@ -104,10 +105,14 @@ void print_summary(const run::BlastResult& result, const std::string& out, Forma
   if (start.kind == md::StartKind::hotspot)
     start_text = ", start hotspot r0 = " + common::format_number(start.r0) + " = " +
                  common::format_number(start.r0 / result.scene.lambda) + " lambda";
-  std::printf("scene %s (d = %d%s), %lld realizations, %llu collisions in %.2f s (%.3g collisions/s)\n",
-              result.scene.config.name.c_str(), result.scene.config.d, start_text.c_str(), result.realizations(),
-              static_cast<unsigned long long>(result.collisions()), result.wall_seconds,
-              summary["collisions_per_second"].get<double>());
+  // Realizations loaded from checkpoints (a resume, a merge of a run in progress) were not timed here.
+  char cost[96] = " (loaded, not run here: no timing)";
+  if (result.realizations() > result.resumed_realizations)
+    std::snprintf(cost, sizeof cost, " in %.2f s (%.3g collisions/s)", result.wall_seconds,
+                  summary["collisions_per_second"].get<double>());
+  std::printf("scene %s (d = %d%s), %lld realizations, %llu collisions%s\n", result.scene.config.name.c_str(),
+              result.scene.config.d, start_text.c_str(), result.realizations(),
+              static_cast<unsigned long long>(result.collisions()), cost);
   std::printf("max relative energy error %.2g; output in %s\n", result.energy_error_max(), out.c_str());
   print_final_estimates(result);
 }
@@ -218,7 +223,9 @@ void merge_md(const MdMergeOptions& o) {
     write_tracer_run(result, o.out, o.format);
     return;
   }
-  const run::BlastResult result = run::merge_blast_outputs(inputs);
+  std::vector<std::string> notes;
+  const run::BlastResult result = run::merge_blast_outputs(inputs, &notes);
+  for (const std::string& note : notes) std::cerr << note << '\n';
   if (const std::string note = run::partial_merge_note(result); !note.empty()) std::cerr << note << '\n';
   run::write_blast_outputs(result, o.out);
   print_summary(result, o.out, o.format);
@@ -358,8 +365,11 @@ void add_states_command(CLI::App& md) {
 
 void add_merge_command(CLI::App& md) {
   auto merge = std::make_shared<MdMergeOptions>();
-  CLI::App* merge_command = md.add_subcommand("merge", "Combine the output directories of shards exactly");
-  merge_command->add_option("DIR", merge->inputs, "Shard output directories")->required();
+  CLI::App* merge_command = md.add_subcommand(
+      "merge",
+      "Combine the output directories of shards exactly; a run still in progress gives the finished blocks of its "
+      "checkpoint (read only), to look at a long run while it goes on");
+  merge_command->add_option("DIR", merge->inputs, "Shard output directories, finished or in progress")->required();
   merge_command->add_option("--out", merge->out, "Output directory (a new run: its own run id)")->required();
   merge_command->add_flag("--overwrite", merge->overwrite,
                           "Replace the files of another run in --out (exactly those of its manifest.json)");

@@ -11,7 +11,7 @@
 
 #include "compare/run_data.hpp"
 #include "fuzz/fuzz_check.hpp"
-#include "run/run_files.hpp"
+#include "run/merge.hpp"
 
 using namespace coldblast;
 namespace fs = std::filesystem;

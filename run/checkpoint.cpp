@@ -73,9 +73,9 @@ std::string checkpoint_block_text(long long block, const BlockSums& sums, const 
 }
 
 BlockSums parse_checkpoint_block(const std::string& text, long long block, std::size_t entries, long long count,
-                                 const std::string& source, std::string* extra) {
+                                 const std::string& source, std::string* extra, const std::string& option) {
   const auto bad = [&](const std::string& what) {
-    return std::invalid_argument("--resume: malformed checkpoint " + source + ": " + what +
+    return std::invalid_argument(option + ": malformed checkpoint " + source + ": " + what +
                                  " (delete the file to rerun its block)");
   };
   std::istringstream in(text);
@@ -212,6 +212,10 @@ Checkpoint load_checkpoint(const fs::path& directory, const md::ResolvedScene& s
   if (saved != current)
     throw std::invalid_argument("--resume: the checkpoint in " + directory.string() +
                                 " ran a different scene: " + scene_difference(saved, current));
+  return read_checkpoint(directory, scene, "--resume");
+}
+
+Checkpoint read_checkpoint(const fs::path& directory, const md::ResolvedScene& scene, const std::string& option) {
   const md::ObservableLayout layout(scene);
   Checkpoint checkpoint;
   checkpoint.run = checkpoint_run(directory);
@@ -222,10 +226,11 @@ Checkpoint load_checkpoint(const fs::path& directory, const md::ResolvedScene& s
     if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
     const long long block = std::stoll(digits);
     const long long count = md::block_realizations(scene.config, block);
-    if (count == 0) throw std::invalid_argument("--resume: " + entry.path().string() + " is beyond the scene's blocks");
+    if (count == 0)
+      throw std::invalid_argument(option + ": " + entry.path().string() + " is beyond the scene's blocks");
     std::string extra;
-    BlockSums sums = parse_checkpoint_block(common::read_text(entry.path(), "--resume"), block, layout.size(), count,
-                                            entry.path().string(), &extra);
+    BlockSums sums = parse_checkpoint_block(common::read_text(entry.path(), option), block, layout.size(), count,
+                                            entry.path().string(), &extra, option);
     (sums.count == count ? checkpoint.blocks : checkpoint.partial)[block] = std::move(sums);
     if (!extra.empty()) checkpoint.extra[block] = std::move(extra);
   }
@@ -235,7 +240,7 @@ Checkpoint load_checkpoint(const fs::path& directory, const md::ResolvedScene& s
       for (const auto& entry : fs::directory_iterator(directory / folder)) {
         const std::string name = entry.path().filename().string();
         if (name.find(".tmp.") == std::string::npos)
-          checkpoint.files.push_back({name, common::read_text(entry.path(), "--resume")});
+          checkpoint.files.push_back({name, common::read_text(entry.path(), option)});
       }
   std::sort(checkpoint.files.begin(), checkpoint.files.end());
   return checkpoint;

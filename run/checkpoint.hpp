@@ -46,9 +46,10 @@ struct Checkpoint {
 std::string checkpoint_block_text(long long block, const md::BlockSums& sums, const std::string& extra = "");
 /// Parses checkpoint_block_text: checks the block index, the number of entries and a count in
 /// [1, `count`] (below `count`: a block in progress); the lines after the sums go to `extra`.
-/// Throws std::invalid_argument naming --resume and `source` when the text is malformed.
+/// Throws std::invalid_argument naming `option` and `source` when the text is malformed.
 md::BlockSums parse_checkpoint_block(const std::string& text, long long block, std::size_t entries, long long count,
-                                     const std::string& source, std::string* extra = nullptr);
+                                     const std::string& source, std::string* extra = nullptr,
+                                     const std::string& option = "--resume");
 
 /// Starts a fresh checkpoint in `directory`: scene.toml and run.json (the folder holds none yet:
 /// run/run_directory.hpp's claim cleared it).
@@ -70,6 +71,11 @@ std::string scene_difference(const std::string& there, const std::string& now);
 /// checkpoint, when its scene differs from `scene` (naming the first differing key) or when a file
 /// is malformed.
 Checkpoint load_checkpoint(const std::filesystem::path& directory, const md::ResolvedScene& scene);
+/// load_checkpoint's reading alone, for a checkpoint another process may still be writing (md merge
+/// of a run in progress): it changes nothing in `directory` (a killed write's temporaries are
+/// skipped, not removed) and does not compare scenes. Errors name `option`.
+Checkpoint read_checkpoint(const std::filesystem::path& directory, const md::ResolvedScene& scene,
+                           const std::string& option);
 /// Removes OUT/checkpoint once the run's outputs and manifest are written: renamed to
 /// OUT/checkpoint.removed, then deleted, so that a kill meanwhile never leaves part of it.
 void remove_checkpoint(const std::filesystem::path& out);

@@ -1,7 +1,7 @@
 #pragma once
 // Run directories (docs/md-output.md): a finished ensemble's block sums, the estimates and files
 // written from them (observables.csv, blocks.csv, accumulators.csv, block_totals.csv, profiles.csv,
-// p_imp.csv, summary.json), and the exact merge of shard directories. Any producer of per-realization
+// p_imp.csv, summary.json); md merge reads them back (run/merge.hpp). Any producer of per-realization
 // records laid out by md::ObservableLayout (run/ensemble.*, or the kinetic tracer, run/tracer_run.*)
 // writes through here:
 //   md::ObservableLayout layout(scene); BlastResult result{scene};
@@ -23,6 +23,11 @@ namespace coldblast::run {
 /// Files of single realizations (snapshot_<t>.csv, snapshots.extxyz, trajectories.csv and those of other
 /// realizations, run/snapshot_files.hpp): name → content.
 using NamedFiles = std::vector<std::pair<std::string, std::string>>;
+
+/// The column headers of accumulators.csv and block_totals.csv: the exact block sums, which md merge
+/// reads back (run/merge.hpp).
+inline constexpr const char* accumulator_header = "block,entry,channel,t,bin,sum,sum_squares";
+inline constexpr const char* block_totals_header = "block,count,collisions,energy_error_max";
 
 /// A finished (or merged) ensemble.
 struct BlastResult {
@@ -63,11 +68,6 @@ struct ObservableEstimate {
   long long count;
 };
 
-/// Empty when `merged` holds every block of its scene; otherwise a one-line note for stderr, e.g.
-/// "md merge: 2 of the scene's 4 realizations (blocks 1, 3 missing): a partial ensemble", so that a
-/// merge of some shards is not mistaken for the whole run (md merge accepts it: a progress check).
-std::string partial_merge_note(const BlastResult& merged);
-
 /// The ensemble estimates (mean, standard error) of the scalar observables, in output order, with
 /// the catalogue's transform (theory/observables.hpp; Eq. (38)'s square root by the delta method).
 std::vector<ObservableEstimate> estimate_observables(const BlastResult& result);
@@ -89,9 +89,5 @@ void write_run_files(const NamedFiles& files, const std::string& run_id, const s
                      const std::filesystem::path& directory);
 /// write_run_files of blast_files.
 void write_blast_outputs(const BlastResult& result, const std::filesystem::path& directory);
-/// Reads shard directories written by write_blast_outputs and combines them exactly, as a new run
-/// (a new run id; the shards' realization files carry it). std::invalid_argument names a shard
-/// whose files belong to different runs, another scene, or a block given twice.
-BlastResult merge_blast_outputs(const std::vector<std::filesystem::path>& directories);
 
 }  // namespace coldblast::run

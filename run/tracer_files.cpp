@@ -8,6 +8,7 @@
 #include "common/validate.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/prefactors.hpp"
+#include "run/merge.hpp"
 #include "run/run_directory.hpp"
 
 namespace coldblast::run {

@@ -13,6 +13,7 @@
 
 #include "md/blast_config.hpp"
 #include "run/ensemble.hpp"
+#include "run/merge.hpp"
 #include "run/scene_file.hpp"
 #include "tests/temp_path.hpp"
 

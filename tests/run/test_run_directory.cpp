@@ -17,6 +17,7 @@
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
 #include "run/md_run.hpp"
+#include "run/merge.hpp"
 #include "run/run_directory.hpp"
 #include "run/scene_file.hpp"
 #include "tests/temp_path.hpp"
