@@ -200,7 +200,17 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
     const double w = 1.0 / columns, h = top / rows;
     const double x0 = static_cast<double>(i % columns) * w;
     const double y0 = top - static_cast<double>(i / columns + 1) * h;
-    const double t_last = s.t.back(), a_last = s.ensemble_values().back();
+    // The theory line runs through the last point with a value on a log axis: a sqrt-transformed
+    // mean can be <= 0 (u_flow below the thermal noise), which has none (NaN in the .dat file).
+    const auto values = s.ensemble_values();
+    std::size_t anchor = values.size();
+    while (anchor > 0 && !(values[anchor - 1] > 0.0)) --anchor;
+    const double t_last = s.t.back();
+    std::string theory_line;
+    if (anchor > 0)
+      theory_line = ", " + format_number(values[anchor - 1]) + "*(x/" + format_number(s.t[anchor - 1]) + ")**(" +
+                    format_number(v.alpha_theory) + ") w l dt 2 lw 2 lc rgb 'black' t 't^{" + v.alpha_theory_rational +
+                    "}'";
     const std::string xrange =
         "set xrange [" + format_number(s.t.front() / 1.5) + ":" + format_number(t_last * 1.5) + "]\n";
     const std::string alpha_S = std::isfinite(v.alpha_measured) && std::isfinite(v.alpha_error)
@@ -215,9 +225,8 @@ void write_observable_figure(const CompareResult& result, const fs::path& folder
            << "set key tmargin right horizontal samplen 2 font ',10'\n"
            << "set title '(" << static_cast<char>('A' + i) << ") " << label(v.name) << ":  {/Symbol a}_S = " << alpha_S
            << ",  {/Symbol a}_T = " << v.alpha_theory_rational << "'\n"
-           << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t '" << run_label(result.run) << "', "
-           << a_last << "*(x/" << t_last << ")**(" << v.alpha_theory << ") w l dt 2 lw 2 lc rgb 'black' t 't^{"
-           << v.alpha_theory_rational << "}'\n"
+           << "plot '" << v.name << ".dat' u 1:2 w p pt 7 ps 0.8 lc rgb '#1f77b4' t '" << run_label(result.run) << "'"
+           << theory_line << "\n"
            << "reset\nset origin " << x0 << "," << y0 << "\nset size " << w << "," << 0.36 * h << "\n"
            << "set lmargin 12\nset rmargin 3\nset tmargin 0.5\n"
            << xrange

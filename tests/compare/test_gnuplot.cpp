@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -13,6 +15,7 @@
 #include "compare/report.hpp"
 #include "compare/run_data.hpp"
 #include "compare/verdict.hpp"
+#include "tests/compare/synthetic.hpp"
 #include "tests/temp_path.hpp"
 #include "theory/prefactors.hpp"
 
@@ -120,4 +123,31 @@ TEST_CASE("a report's figures are PNG and PDF, and the PDF's title names the sce
   CHECK(text.find("E = 5.7") != std::string::npos);
   CHECK(text.find("R/") != std::string::npos);
   CHECK(text.find("units: m = 1") != std::string::npos);
+}
+
+TEST_CASE("a flow speed below the noise at the last times (a mean <= 0, no value) still gets its figure", "[fast]") {
+  // u_flow is the square root of a noise-corrected mean, which can be <= 0 at the last times (found
+  // at R/lambda = 307: gnuplot then read "nan*(x/t)" and compare failed with no report). The
+  // theory line goes through the last point that has a value instead.
+  using coldblast::compare::testing::synthetic_series;
+  const fs::path root = fresh_folder("coldblast_test_gnuplot_noise");
+  std::map<std::string, BlockSeries> series;
+  series["R_imp"] = synthetic_series(7, 10, 4, 16, 0.8, 0.01, 0.5, Transform::sqrt);
+  BlockSeries flow = synthetic_series(8, 10, 4, 16, -1.2, 0.01, 0.5, Transform::sqrt);
+  flow.observable = "u_flow";
+  for (auto& block : flow.sums) block.back() = block[block.size() - 2] = -1e-9;  // below the noise
+  series["u_flow"] = flow;
+  coldblast::compare::testing::write_synthetic_run(root / "run", 2, series);
+  CompareConfig config;
+  config.run_dir = root / "run";
+  const CompareResult result = run_compare(config);
+  write_report(result, {root / "report", true});
+  CHECK(file_head(root / "report" / "figures" / "observables.png", 4) == "\x89PNG");
+  std::ifstream script(root / "report" / "figures" / "observables.gp");
+  const std::string text((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
+  CHECK(text.find("nan") == std::string::npos);
+  // u_flow's theory line is anchored at its last positive point, the third from the end.
+  const std::string anchor = "*(x/" + coldblast::common::format_number(flow.t[flow.t.size() - 3]) + ")**(-0.6)";
+  CHECK(text.find(anchor) != std::string::npos);
+  fs::remove_all(root);
 }
