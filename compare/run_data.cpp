@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/input.hpp"
+#include "run/checkpoint.hpp"
 #include "run/run_directory.hpp"
 #include "theory/prefactors.hpp"
 
@@ -122,6 +123,11 @@ RunData read_run(const std::filesystem::path& directory) {
   RunData run;
   run.directory = directory;
   const auto summary_path = directory / "summary.json";
+  if (!std::filesystem::exists(summary_path) &&
+      std::filesystem::exists(run::checkpoint_folder(directory) / "scene.toml"))
+    throw std::invalid_argument("RUN_DIR = " + directory.string() +
+                                " is a run in progress (it holds only its checkpoint): `coldblast md merge " +
+                                directory.string() + " --out DIR` gives its finished realizations as a run to compare");
   try {
     run.summary = common::Json::parse(common::read_text(summary_path, "RUN_DIR file"));
   } catch (const common::Json::exception& e) {

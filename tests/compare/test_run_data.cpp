@@ -51,6 +51,10 @@ TEST_CASE("read_run rejects a missing or incomplete directory", "[fast]") {
   fs::remove_all(dir);
   fs::create_directories(dir);
   CHECK_THROWS_WITH(read_run(dir), Catch::Contains("summary.json"));
+  // A run still going holds only its checkpoint: the error says how to look at it now.
+  coldblast::common::write_file_atomic(dir / "checkpoint" / "scene.toml", "d = 2\n");
+  CHECK_THROWS_WITH(read_run(dir), Catch::Contains("is a run in progress") &&
+                                       Catch::Contains("coldblast md merge " + dir.string() + " --out DIR"));
   coldblast::common::write_file_atomic(dir / "summary.json", "{\"scene\": {\"d\": 2}}");
   CHECK_THROWS_WITH(read_run(dir), Catch::Contains("blocks.csv"));
   coldblast::common::write_file_atomic(dir / "blocks.csv", "block,t,observable,sum,count\n0,1,n0,0.1,1\n");
