@@ -144,8 +144,9 @@ compare::HydroModelOptions hydro_model(const CompareOptions& options) {
         common::read_text(options.hydro_config, "--hydro-config", common::text_size_limit), options.hydro_config);
     if (keys.start || keys.r0)
       throw std::invalid_argument("hydro.start and hydro.r0 in " + options.hydro_config +
-                                  " are not used by compare --against hydro, whose Navier-Stokes solve has the "
-                                  "self-similar start (docs/hydro.md, \"Starts\")");
+                                  " are not used by compare --against hydro, whose Navier-Stokes solve starts as "
+                                  "the MD run did (its scene's [start]: a hot spot or the self-similar start; "
+                                  "docs/compare.md, \"Which start\")");
     if (keys.eos) model.eos = hydro::eos_from_string(*keys.eos, model.eos_name = "hydro.eos");
     if (keys.phi) model.phi = *keys.phi, model.phi_name = "hydro.phi";
     if (keys.transport)

@@ -170,14 +170,20 @@ void add_tracer_command(CLI::App& app) {
   c->add_option("--T", o->config.T, "Equilibrium background: bath temperature (> 0)")->capture_default_str();
   c->add_option("--phi", o->phi, "Equilibrium background: packing fraction (default: the scene's)");
   c->add_option("--start", o->config.start,
-                "Initial state: kick (the MD's), thermal (local Maxwellian) or states (the MD's own impurities at a "
-                "time: --start-states)")
+                "Initial state: kick (the MD's), hotspot (the MD's hot spot of radius --r0, in the Navier-Stokes hot "
+                "spot; docs/kinetic.md), thermal (local Maxwellian) or states (the MD's own impurities at a time: "
+                "--start-states)")
+      ->capture_default_str();
+  c->add_option("--r0", o->config.r0,
+                "--start hotspot: the hot spot's radius, a length as the scene's start.r0 (not hydro's r0/lambda); "
+                "0 = the scene's start.r0")
       ->capture_default_str();
   c->add_option("--start-states", o->config.start_states,
                 "--start states: impurity_states.csv of `coldblast md states` (or its --out directory) for the same "
                 "scene; trajectory i "
                 "starts from state i at the file's time (at most as many trajectories as states)");
-  c->add_option("--start-time", o->config.start_time, "Start time (0 = the scene's t_min; 0 for equilibrium)")
+  c->add_option("--start-time", o->config.start_time,
+                "Start time (0 = the scene's t_min, t_min/1024 for hotspot; 0 for equilibrium)")
       ->capture_default_str();
   c->add_option("--frames-per-decade", o->config.frames_per_decade, "ns: stored frames per decade of R/lambda")
       ->capture_default_str();

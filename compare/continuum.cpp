@@ -8,17 +8,27 @@
 #include "common/validate.hpp"
 #include "compare/run_data.hpp"
 #include "hydro/tvns.hpp"
+#include "md/initial_state.hpp"
+#include "run/scene_file.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::compare {
 
 std::string HydroModel::describe() const {
+  const std::string hot = start == hydro::Start::hotspot
+                              ? ", hot-spot start r0 = " + common::format_significant(r0_over_lambda, 4) + " lambda"
+                              : "";
   if (eos == hydro::Eos::ideal)
     return std::string("dilute NS (ideal gas, ") +
-           (transport == hydro::Transport::dilute ? "Chapman-Enskog transport)" : "enskog transport)");
+           (transport == hydro::Transport::dilute ? "Chapman-Enskog transport)" : "enskog transport)") + hot;
   return std::string(transport == hydro::Transport::enskog ? "dense NS (" : "NS (") + hydro::to_string(eos) +
          " EOS at phi = " + common::format_significant(phi, 4) + ", " +
-         (transport == hydro::Transport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport)";
+         (transport == hydro::Transport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport)" + hot;
+}
+
+std::string HydroModel::describe_start() const {
+  if (start == hydro::Start::self_similar) return hydro::to_string(start);
+  return hydro::to_string(start) + " r0/lambda = " + common::format_significant(r0_over_lambda, 6);
 }
 
 HydroModel default_hydro_model(int d, double phi) {
@@ -76,9 +86,24 @@ double run_packing_fraction(const RunData& run) {
   return 0.0;
 }
 
-hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
-                                            std::vector<double> profile_R_over_lambda,
-                                            const ContinuumProgress& progress) {
+HydroModel with_run_start(HydroModel model, const RunData& run) {
+  const auto& s = run.summary;
+  if (!s.contains("scene_toml") || !s["scene_toml"].is_string()) return model;
+  const md::StartConfig start =
+      run::parse_scene(s["scene_toml"].get<std::string>(), {}, (run.directory / "summary.json").string()).start;
+  if (start.kind != md::StartKind::hotspot) return model;
+  if (!s.contains("lambda") || !s["lambda"].is_number())
+    throw std::invalid_argument((run.directory / "summary.json").string() +
+                                ": a hotspot start needs 'lambda' to give the Navier-Stokes hot spot r0/lambda");
+  model.start = hydro::Start::hotspot;
+  model.r0_over_lambda = start.r0 / s["lambda"].get<double>();
+  return model;
+}
+
+namespace {
+
+// The NS config of `model` in scaled units (E = n∞ = λ = 1).
+hydro::NavierStokesConfig hydro_model_config(int d, const HydroModel& model, double until, int cells) {
   hydro::NavierStokesConfig config;
   config.physics.d = d;
   config.physics.E = 1.0;
@@ -87,9 +112,21 @@ hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, doub
   config.physics.eos = model.eos;
   config.physics.phi = model.phi;
   config.physics.transport = model.transport;
+  config.physics.start = model.start;
+  config.physics.r0_over_lambda = model.r0_over_lambda;
   config.numerics.cells = cells;
-  config.numerics.profile_R_over_lambda = std::move(profile_R_over_lambda);
   config.until_R_over_lambda = until;
+  return config;
+}
+
+}  // namespace
+
+hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
+                                            std::vector<double> profile_R_over_lambda,
+                                            const ContinuumProgress& progress, std::vector<double> profile_times) {
+  hydro::NavierStokesConfig config = hydro_model_config(d, model, until, cells);
+  config.numerics.profile_R_over_lambda = std::move(profile_R_over_lambda);
+  config.numerics.profile_times = std::move(profile_times);
   if (!progress) return hydro::run_navier_stokes(config);
   const std::string name = model.describe() + ", " + std::to_string(cells) + " cells";
   return hydro::run_navier_stokes(config, [&](const hydro::NavierStokesSample& s) { progress(name, s.R_over_lambda); });
@@ -356,13 +393,27 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   reference->model = model;
   const double t_last = run.series.begin()->second.t.back();
   const double x = md_R_over_lambda(run, t_last);
-  if (!(x > 2.0 * std::exp(profile_step * profile_offsets)))
+  const bool hotspot = model.start == hydro::Start::hotspot;
+  if (!hotspot && !(x > 2.0 * std::exp(profile_step * profile_offsets)))
     throw std::invalid_argument("RUN_DIR = " + run.directory.string() + ": R/lambda = " + common::format_number(x) +
                                 " at the last time; the Navier-Stokes blast starts at R/lambda = 2");
   reference->R_over_lambda_last = x;
-  const double end = std::max({20.0, 1.5 * x, until});
-  const std::vector<double> targets = profile_targets(x);
-  reference->ns = solve_hydro_model(run.d, model, end, cells, targets, progress);
+  // The self-similar start's profiles at R_ref/λ around x. A hot spot's times count from the
+  // deposition, as the MD's: its profiles are taken at the MD's own time (in the scaled units,
+  // t √(E/(n∞ λ^(d+2)))) times the same ±21 % in R; its grid scale R_ref runs ahead of R by at most
+  // its size at the deposition (R_ref(t) ≤ R_ss(t) + R_ref(0), R_ss ∝ t^(2/(d+2)) being concave).
+  std::vector<double> targets, times;
+  double reach = 1.5 * x;  // how far beyond the MD's R/λ the grid scale must go
+  if (hotspot) {
+    const auto number = [&](const char* key) { return run.summary.at(key).get<double>(); };
+    const double t_scaled = t_last * std::sqrt(number("E") / (number("n") * std::pow(number("lambda"), run.d + 2)));
+    for (double R : profile_targets(1.0)) times.push_back(t_scaled * std::pow(R, 0.5 * (run.d + 2)));
+    reach += hydro_model_config(run.d, model, 1e12, cells).resolved_start_R_over_lambda();
+  } else {
+    targets = profile_targets(x);
+  }
+  const double end = std::max({20.0, reach, until});
+  reference->ns = solve_hydro_model(run.d, model, end, cells, targets, progress, times);
   const double ball = ball_radius_over_lambda(run);
   const std::vector<double> edges = md_bin_edges(run);
   // The NS at the MD's last time t, measured in the MD's units: R_NS(t) is Eq. (1) with the NS's own
@@ -375,7 +426,7 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   // The NS's own numerical error: the grid (2 × cells, to the MD's R/λ only) and the reading.
   const int other_cells = cells <= 50000 ? 2 * cells : cells / 2;  // within hydro's [16, 100000]
   const hydro::NavierStokesResult fine =
-      solve_hydro_model(run.d, model, std::max(20.0, 1.5 * x), other_cells, targets, progress);
+      solve_hydro_model(run.d, model, std::max(20.0, reach), other_cells, targets, progress, times);
   const ContinuumAmplitudes grid = interpolated_amplitudes(fine, run.d, x / scale, ball, edges, scale);
   for (auto field : scalar_fields)
     reference->errors.*field = std::hypot(grid.*field - reference->amplitudes.*field, reading.*field);
@@ -393,14 +444,18 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   }
   if (!model.dilute()) {
     // only for the figure: no further than the MD's R/λ needs
-    reference->ns_dilute = solve_hydro_model(run.d, HydroModel{}, std::max(20.0, 1.5 * x), cells, targets, progress);
+    HydroModel dilute;
+    dilute.start = model.start;
+    dilute.r0_over_lambda = model.r0_over_lambda;
+    reference->ns_dilute = solve_hydro_model(run.d, dilute, std::max(20.0, reach), cells, targets, progress, times);
     curves.push_back(ns_curve(nearest_profile(*reference->ns_dilute, x), run.d, ProfileCurve::Kind::ns_dilute,
                               "NS, dilute ideal gas" + at));
   }
   const std::string model_label =
       model.dilute() ? "NS, dilute ideal gas"
                      : "NS, " + hydro::to_string(model.eos) + " + " +
-                           (model.transport == hydro::Transport::enskog ? "Enskog" : "dilute transport");
+                           (model.transport == hydro::Transport::enskog ? "Enskog" : "dilute transport") +
+                           (model.start == hydro::Start::hotspot ? ", hot spot" : "");
   curves.push_back(ns_curve(nearest_profile(reference->ns, x), run.d,
                             model.dilute() ? ProfileCurve::Kind::ns_dilute : ProfileCurve::Kind::ns_model,
                             model_label + at));

@@ -21,8 +21,15 @@ struct HydroModel {
   hydro::Eos eos = hydro::Eos::ideal;
   double phi = 0.0;  ///< ambient packing fraction (0 for the ideal gas)
   hydro::Transport transport = hydro::Transport::dilute;
-  /// "dense NS (henderson EOS at phi = 0.1178, enskog transport)" or "dilute NS (ideal gas, ...)".
+  /// How E enters (with_run_start): self_similar for the MD's kick and single starts, hotspot (of
+  /// radius r0_over_lambda mean free paths, times from the deposition) for its hot spot.
+  hydro::Start start = hydro::Start::self_similar;
+  double r0_over_lambda = 0.0;
+  /// "dense NS (henderson EOS at phi = 0.1178, enskog transport)" or "dilute NS (ideal gas, ...)",
+  /// followed by ", hot-spot start r0 = 1 lambda" for a hotspot start.
   std::string describe() const;
+  /// "self-similar" or "hotspot r0/lambda = 1" (reports and verdict.json).
+  std::string describe_start() const;
   bool dilute() const { return eos == hydro::Eos::ideal && transport == hydro::Transport::dilute; }
 };
 
@@ -49,6 +56,13 @@ HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double r
 
 /// The run's packing fraction from summary.json ("phi", else n and a), 0 when absent.
 double run_packing_fraction(const RunData& run);
+
+/// `model` with the continuum start that matches the run's (its scene's [start] table, summary.json's
+/// scene_toml): a `hotspot` MD start of radius r0 gets the NS hot spot of the same E and r0/λ (λ of
+/// the run), so that both count time from the same deposition (docs/verification.md, "The start's
+/// memory"); `kick` and `single` (E on a few particles, no extended hot region) and runs without a
+/// scene keep the self-similar start.
+HydroModel with_run_start(HydroModel model, const RunData& run);
 
 /// One curve of the profile figure: n/n∞, u/Ṙ, T/Ṙ² against r/R.
 struct ProfileCurve {
@@ -101,11 +115,13 @@ using ContinuumProgress = std::function<void(const std::string& solve, double R_
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
                                                           double until = 0.0, const ContinuumProgress& progress = {});
 
-/// The NS blast of `model` in scaled units (E = n∞ = λ = 1) from R/λ = 2 to `until`, with extra
-/// profiles at `profile_R_over_lambda`; progress (may be empty) names it by model.describe() and cells.
+/// The NS blast of `model` in scaled units (E = n∞ = λ = 1, so t in units √(n∞ λ^(d+2)/E)) from its
+/// start to `until`, with extra profiles at `profile_R_over_lambda` and at `profile_times`; progress
+/// (may be empty) names it by model.describe() and cells.
 hydro::NavierStokesResult solve_hydro_model(int d, const HydroModel& model, double until, int cells,
                                             std::vector<double> profile_R_over_lambda = {},
-                                            const ContinuumProgress& progress = {});
+                                            const ContinuumProgress& progress = {},
+                                            std::vector<double> profile_times = {});
 
 /// R_MD/R_NS at the MD's time t: the MD's shock radius over Eq. (1) with the NS blast's amplitude A.
 double md_over_ns_radius(const RunData& run, double A, double t);

@@ -24,6 +24,10 @@ void HydroReference::build_collision_exponents() {
   // puts its samples (that moves with the run's end, hydro/navier_stokes.cpp output_plan), so the
   // exponent at a given R/λ does not depend on how far the solver runs (docs/hydro.md).
   const auto& s = result_.samples;
+  if (result_.config.physics.start == hydro::Start::hotspot) {
+    build_hot_spot_collision_exponents();
+    return;
+  }
   const double anchor = std::log(collision_anchor_R_over_lambda);
   std::size_t k = 1;  // the samples k-1, k bracket the anchor
   while (k < s.size() && std::log(s[k].R_over_lambda) < anchor) ++k;
@@ -52,6 +56,28 @@ void HydroReference::build_collision_exponents() {
   for (std::size_t i = 0; i < s.size(); ++i) {
     log_R_over_lambda_.push_back(std::log(s[i].R_over_lambda));
     collision_exponent_.push_back(std::exp(g[i]) / C[i]);  // d ln C / d ln t
+  }
+}
+
+void HydroReference::build_hot_spot_collision_exponents() {
+  // A hot spot's times count from the deposition, where its gas is at rest with a finite n0 √T0:
+  // C(t) = ∫_0^t f dt' with f = n0 √T0 held at its first sample's value before it (first order in
+  // that sample's t, a few 1e-3 of the grid's start time), then f a power law of t between samples
+  // (exact for power laws; the samples' first interval spans a large ratio of t).
+  const auto& s = result_.samples;
+  std::vector<double> f(s.size()), C(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) f[i] = s[i].n0 * std::sqrt(s[i].T0);
+  C[0] = s[0].t * f[0];
+  for (std::size_t i = 1; i < s.size(); ++i) {
+    const double ratio = s[i].t / s[i - 1].t, p = std::log(f[i] / f[i - 1]) / std::log(ratio);
+    const double growth = std::abs(p + 1) < 1e-12 ? std::log(ratio) : (std::pow(ratio, p + 1) - 1) / (p + 1);
+    C[i] = C[i - 1] + s[i - 1].t * f[i - 1] * growth;
+  }
+  log_R_over_lambda_.clear();
+  collision_exponent_.clear();
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    log_R_over_lambda_.push_back(std::log(s[i].R_over_lambda));
+    collision_exponent_.push_back(s[i].t * f[i] / C[i]);  // d ln C / d ln t
   }
 }
 

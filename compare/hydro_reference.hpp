@@ -30,6 +30,8 @@ class HydroReference {
 
  private:
   void build_collision_exponents();
+  /// The same for a hot-spot start: the integral from the deposition (t = 0).
+  void build_hot_spot_collision_exponents();
   /// d ln C / d ln t at R/λ, C the collision integral (HydroQuantity::collisions).
   double collision_exponent(double R_over_lambda) const;
   hydro::NavierStokesResult result_;

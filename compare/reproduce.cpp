@@ -231,7 +231,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
 
   // One continuum solve serves the NS exponent table, the hydro verdicts and all three reports' figures.
   const RunData run = read_run(md_dir);
-  const HydroModel model = resolve_hydro_model({}, run.d, run_packing_fraction(run));
+  const HydroModel model = with_run_start(resolve_hydro_model({}, run.d, run_packing_fraction(run)), run);
   const double until =
       config.hydro_until > 0 ? config.hydro_until : (config.scale == ReproduceScale::quick ? 1e4 : 1e6);
   say(progress, "step 3/6: Navier–Stokes blast, " + model.describe() +

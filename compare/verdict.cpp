@@ -87,7 +87,8 @@ void add_figure_continuum(CompareResult& result, const CompareConfig& config, co
   const RunData& run = result.run;
   if (!std::filesystem::exists(run.directory / "profiles.csv") || !run.summary.contains("lambda")) return;
   try {
-    const HydroModel model = resolve_hydro_model(config.hydro_model, run.d, run_packing_fraction(run));
+    const HydroModel model =
+        with_run_start(resolve_hydro_model(config.hydro_model, run.d, run_packing_fraction(run)), run);
     result.continuum = solve_continuum(run, model, config.hydro_cells, 0.0, progress.continuum);
   } catch (const std::invalid_argument& e) {
     result.warnings.push_back(std::string("no continuum curves in the profile figure: ") + e.what());
@@ -107,7 +108,8 @@ CompareResult run_compare(const CompareConfig& config, const CompareProgress& pr
   // reference, or (theory) where the finite-R/λ allowances come from.
   RunData run = read_run(config.run_dir);
   if (config.until > 0) truncate_run(run, config.until);
-  const HydroModel model = resolve_hydro_model(config.hydro_model, run.d, run_packing_fraction(run));
+  const HydroModel model =
+      with_run_start(resolve_hydro_model(config.hydro_model, run.d, run_packing_fraction(run)), run);
   if (config.against == Reference::hydro)
     return run_compare(config, solve_continuum(run, model, config.hydro_cells, 0.0, progress.continuum));
   std::shared_ptr<const ContinuumReference> continuum;

@@ -137,6 +137,15 @@ std::vector<Output> output_plan(const RadialBlast& blast, const NavierStokesConf
   for (int k = -before; k <= 2; ++k)
     outputs.push_back({blast.time_of(until * std::pow(10.0, double(k) / per_decade) * lambda), true, k == 0});
   for (double R : config.numerics.profile_R_over_lambda) outputs.push_back({blast.time_of(R * lambda), false, true});
+  const double t_first = blast.start_time(), t_last = blast.time_of(until * lambda);
+  for (double t : config.numerics.profile_times) {
+    if (!(t > t_first && t <= t_last))
+      throw std::invalid_argument(
+          "profile_times: t = " + common::format_number(t) + " is outside (" + common::format_number(t_first) + ", " +
+          common::format_number(t_last) +
+          "] (from the start to R_ref/lambda = until_R_over_lambda = " + common::format_number(until) + ")");
+    outputs.push_back({t, false, true});
+  }
   std::sort(outputs.begin(), outputs.end(), [](const Output& x, const Output& y) { return x.t < y.t; });
   return outputs;
 }

@@ -144,6 +144,8 @@ void NavierStokesConfig::validate() const {
     common::require_in_range("core_resolution", *numerics.core_resolution, 1e-6, 0.5, Bound::closed, Bound::closed);
   for (double R : numerics.profile_R_over_lambda)
     common::require_in_range("profile_R_over_lambda", R, start, until_R_over_lambda, Bound::open, Bound::closed);
+  for (double t : numerics.profile_times)
+    common::require_in_range("profile_times", t, 0, std::numeric_limits<double>::infinity());
 }
 
 NavierStokesConfig resolve_defaults(const NavierStokesConfig& input) {

@@ -98,6 +98,11 @@ struct NavierStokesNumerics {
       shock_band_fraction;     ///< share of cells in 0.85 < r/R_ref < 1.03, [0, 0.9]; default 0.25 (Euler: 0.75)
   bool project_totals = true;  ///< restore exact mass/energy totals after each step (CVODE projection)
   std::vector<double> profile_R_over_lambda;  ///< extra profile times (R_ref/λ); the final profile is always kept
+  /// Extra profiles at these times t (the result's t: from the deposition with a hotspot start), each
+  /// after the start and before R_ref reaches until_R_over_lambda (checked when the run plans its
+  /// outputs: std::invalid_argument naming profile_times). Matches an MD time directly, as the
+  /// hot spot's partner must (compare's continuum, the tracer's hot-spot background).
+  std::vector<double> profile_times;
 };
 
 /// One blast run: physics, numerics, and how far to go.

@@ -12,10 +12,25 @@ namespace coldblast::kinetic {
 
 using common::format_number;
 
+namespace {
+
+/// The frames of a hot-spot background, at times t from the deposition: frames_per_decade per decade
+/// of the self-similar radius (∝ t^(2/(d+2))), from half a frame before `first_time` (the tracer's
+/// start) to just below `t_end`.
+std::vector<double> hot_spot_frame_times(int d, double first_time, double t_end, int frames_per_decade) {
+  const double ratio = std::pow(10.0, 0.5 * (d + 2) / frames_per_decade);
+  std::vector<double> times;
+  for (double t = first_time / std::sqrt(ratio); t < t_end / std::sqrt(ratio); t *= ratio) times.push_back(t);
+  return times;
+}
+
+}  // namespace
+
 std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastConfig& scene, const ContactModel& contact,
                                                               int frames_per_decade, int cells,
                                                               std::string* description,
-                                                              const std::function<void(double)>& progress) {
+                                                              const std::function<void(double)>& progress,
+                                                              double hot_spot_radius, double first_time) {
   hydro::NavierStokesConfig ns;
   ns.physics.d = scene.d;
   ns.physics.E = scene.E;
@@ -28,6 +43,8 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
     ns.physics.transport = hydro::Transport::enskog;
   }
   const double lambda = theory::mean_free_path(scene.d, scene.n, scene.a);
+  const bool hot_spot = hot_spot_radius > 0.0;  // the MD's hot spot; times from the deposition
+  if (hot_spot) ns.physics.start = hydro::Start::hotspot, ns.physics.r0_over_lambda = hot_spot_radius / lambda;
   // R_ref(t) of the grid uses the TvNS A_d of the same EOS (hydro/navier_stokes.cpp); go 5 % beyond t_max.
   hydro::TvnsConfig tvns_config;
   tvns_config.d = scene.d;
@@ -37,7 +54,9 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   const hydro::TvnsSolution reference = hydro::solve_tvns(tvns_config);
   const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, reference.A()};
   const double start = ns.resolved_start_R_over_lambda();
-  const double until = theory::shock_radius(p, 1.05 * scene.t_max) / lambda;
+  // A hot spot's grid scale is R_ref(t + shift), R_ref(shift) = start λ: at 1.05 t_max it reaches `until`.
+  const double shift = hot_spot ? theory::shock_time(p, start * lambda) : 0.0;
+  const double until = theory::shock_radius(p, 1.05 * scene.t_max + shift) / lambda;
   if (!(until > start * 1.5))  // room for frames after the first one at 1.25 × start
     throw std::invalid_argument(
         "t_max = " + format_number(scene.t_max) +
@@ -47,7 +66,10 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   // The first frame sits at R/λ = 1.25 × start for every frames_per_decade, so that the early
   // self-similar continuation (and with it the start) does not change with the frame density.
   const double ratio = std::pow(10.0, 1.0 / frames_per_decade), first = 1.25 * start;
-  for (double R = first; R < until / std::sqrt(ratio); R *= ratio) ns.numerics.profile_R_over_lambda.push_back(R);
+  if (hot_spot)
+    ns.numerics.profile_times = hot_spot_frame_times(scene.d, first_time, 1.05 * scene.t_max, frames_per_decade);
+  else
+    for (double R = first; R < until / std::sqrt(ratio); R *= ratio) ns.numerics.profile_R_over_lambda.push_back(R);
   hydro::NavierStokesProgress sample_progress;
   if (progress) sample_progress = [&](const hydro::NavierStokesSample& s) { progress(s.R_over_lambda); };
   const hydro::NavierStokesResult solution = hydro::run_navier_stokes(ns, sample_progress);
@@ -74,12 +96,17 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
         (contact.enskog ? "dense: " + hydro::to_string(ns.physics.eos) +
                               " EOS at phi = " + common::format_significant(ns.physics.phi, 4) + ", Enskog transport"
                         : std::string("dilute")) +
-        ", heat conduction, " + std::to_string(cells) + " cells), " + std::to_string(frames.size()) +
-        " frames from R/lambda = " + common::format_significant(first, 4) + " to " +
-        common::format_significant(until, 4) + ", t in [" + common::format_significant(frames.front().t, 4) + ", " +
+        ", heat conduction, " + std::to_string(cells) + " cells" +
+        (hot_spot ? ", hot-spot start r0 = " + common::format_significant(ns.physics.r0_over_lambda, 4) + " lambda"
+                  : "") +
+        "), " + std::to_string(frames.size()) +
+        (hot_spot ? " frames on the grid R_ref/lambda = " : " frames from R/lambda = ") +
+        common::format_significant(hot_spot ? start : first, 4) + " to " + common::format_significant(until, 4) +
+        ", t in [" + common::format_significant(frames.front().t, 4) + ", " +
         common::format_significant(frames.back().t, 4) + "]";
   const double edge = x.back();
-  return std::make_unique<GridBackground>(scene.d, std::move(x), edge, std::move(frames), scene.n, contact, false);
+  return std::make_unique<GridBackground>(scene.d, std::move(x), edge, std::move(frames), scene.n, contact, false,
+                                          !hot_spot);
 }
 
 std::unique_ptr<GridBackground> make_tvns_background(const md::BlastConfig& scene, const ContactModel& contact,

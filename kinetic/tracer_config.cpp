@@ -4,8 +4,10 @@
 #include <stdexcept>
 
 #include "common/validate.hpp"
+#include "hydro/tvns.hpp"
 #include "kinetic/batch.hpp"
 #include "kinetic/hydro_backgrounds.hpp"
+#include "md/initial_state.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::kinetic {
@@ -18,6 +20,43 @@ namespace {
 /// Largest packing fraction of the equilibrium background (the fluid range of the EOS used for chi).
 double max_equilibrium_phi(int d) {
   return d == 2 ? 0.7 : 0.5;
+}
+
+/// The hot-spot start: r0 only with it, in the MD's range; its background the NS's or an MD run's;
+/// and a scene that starts from a hot spot is not run from a kick.
+void validate_hot_spot(const TracerConfig& c) {
+  const md::BlastConfig& scene = c.scene;
+  if (c.start != "hotspot") {
+    if (c.r0 != 0.0)
+      throw std::invalid_argument("--r0 = " + format_number(c.r0) +
+                                  " is the radius of a hot spot: it needs --start "
+                                  "hotspot (--start = " +
+                                  c.start + ")");
+    if (c.start == "kick" && scene.start.kind == md::StartKind::hotspot)
+      throw std::invalid_argument(
+          "--start = kick, but the scene starts from a hot spot (start.kind = hotspot, "
+          "start.r0 = " +
+          format_number(scene.start.r0) + "): give --start hotspot (its r0 is the scene's), thermal or states");
+    return;
+  }
+  if (c.background != "ns" && c.background != "md")
+    throw std::invalid_argument(
+        "--start = hotspot needs --background ns (the Navier-Stokes hot spot) or md (the "
+        "fields of a hot-spot MD run), not " +
+        c.background);
+  const double r0 = c.hot_spot_radius();
+  if (r0 == 0.0)
+    throw std::invalid_argument(
+        "--start = hotspot needs --r0 R0 (the hot spot's radius, a length as the scene's "
+        "start.r0), or a scene whose [start] has kind = \"hotspot\"");
+  const double A_d = scene.A_d > 0.0
+                         ? scene.A_d
+                         : hydro::md_amplitude(scene.d, theory::packing_fraction(scene.d, scene.n, scene.a)).A_d;
+  const double R = theory::shock_radius(theory::BlastParameters{scene.d, scene.n, scene.a, scene.E, A_d}, scene.t_max);
+  common::require_in_range("--r0", r0, md::hot_spot_min_radius(scene.d, scene.n, scene.impurities.count), R,
+                           Bound::closed, Bound::closed,
+                           "(hot-spot radius, length: from the ball holding max(2, "
+                           "impurities.count) particles to R(t_max) of Eq. (1))");
 }
 
 }  // namespace
@@ -40,8 +79,9 @@ void TracerConfig::validate() const {
     throw std::invalid_argument(
         "--transport = enskog is not available with --background tvns (the ideal-gas "
         "Euler solution); allowed: dilute");
-  if (start != "kick" && start != "thermal" && start != "states")
-    throw std::invalid_argument("--start = " + start + " is not one of: kick, thermal, states");
+  if (start != "kick" && start != "hotspot" && start != "thermal" && start != "states")
+    throw std::invalid_argument("--start = " + start + " is not one of: kick, hotspot, thermal, states");
+  validate_hot_spot(*this);
   if ((start == "states") != !start_states.empty())
     throw std::invalid_argument(start == "states" ? "--start = states needs --start-states FILE (md states' output)"
                                                   : "--start-states is only for --start states");
@@ -67,7 +107,13 @@ void TracerConfig::validate() const {
 
 double TracerConfig::resolved_start_time() const {
   if (start_time > 0.0 || background == "equilibrium") return start_time;
-  return scene.t_min;
+  return start == "hotspot" ? scene.t_min / 1024.0 : scene.t_min;
+}
+
+double TracerConfig::hot_spot_radius() const {
+  if (start != "hotspot") return 0.0;
+  if (r0 != 0.0 || scene.start.kind != md::StartKind::hotspot) return r0;
+  return scene.start.r0;
 }
 
 std::unique_ptr<Background> make_background(const TracerConfig& config, std::string* description,
@@ -91,7 +137,8 @@ std::unique_ptr<Background> make_background(const TracerConfig& config, std::str
     // t_max against it): the TvNS continuation, as the ns background's.
     return make_md_background(*config.md_profiles, contact, description, true);
   }
-  return make_navier_stokes_background(c, contact, config.frames_per_decade, config.cells, description, progress);
+  return make_navier_stokes_background(c, contact, config.frames_per_decade, config.cells, description, progress,
+                                       config.hot_spot_radius(), config.resolved_start_time());
 }
 
 }  // namespace coldblast::kinetic

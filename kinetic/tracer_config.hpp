@@ -32,10 +32,19 @@ struct TracerConfig {
   int shard_index = 0, shard_count = 1;  ///< this shard runs blocks shard_index, shard_index + shard_count, ...
   double T = 1.0;                        ///< equilibrium: bath temperature, > 0
   std::optional<double> phi;  ///< equilibrium: packing fraction (default: the scene's), (0, 0.7) 2D, (0, 0.5) 3D
-  /// "kick" (the MD's kick: E shared by k impurities), "thermal", or "states": trajectory i starts
-  /// from state i of `states` (the MD's own impurities, `md states`) at their time.
+  /// "kick" (the MD's kick: E shared by k impurities), "hotspot" (the MD's hot spot of radius r0:
+  /// the impurity among the particles nearest the centre, E shared as a Maxwellian by every particle
+  /// within r0, the background the Navier–Stokes hot spot; kinetic/hot_spot_start.hpp), "thermal", or
+  /// "states": trajectory i starts from state i of `states` (the MD's own impurities, `md states`) at
+  /// their time.
   std::string start = "kick";
-  double start_time = 0.0;   ///< start time, >= 0 (> 0 for ns/tvns); 0 = scene t_min (ns, tvns); 0 for states
+  /// start = "hotspot": the hot spot's radius (length, the scene's start.r0), in
+  /// [md::hot_spot_min_radius, R(t_max)]; 0 = the scene's start.r0 if its [start] is a hot spot.
+  /// Must stay 0 for the other starts.
+  double r0 = 0.0;
+  /// start time, >= 0 (> 0 for ns/tvns); 0 = scene t_min (ns, tvns), t_min/1024 for hotspot (the
+  /// deposition, to 0.1 % of t_min); 0 for states
+  double start_time = 0.0;
   std::string start_states;  ///< start = "states": the impurity_states.csv they came from (recorded, and in messages)
   /// start = "states": the states read from start_states (run::read_impurity_states).
   std::shared_ptr<const md::ImpurityStates> states;
@@ -50,6 +59,9 @@ struct TracerConfig {
   void validate() const;
   /// start_time with 0 resolved.
   double resolved_start_time() const;
+  /// start = "hotspot": r0, or the scene's start.r0 when r0 = 0 and the scene starts from a hot spot;
+  /// 0 for the other starts.
+  double hot_spot_radius() const;
 };
 
 /// Progress of the `ns` background's Navier–Stokes solve: called with the shock's R/λ at each of its

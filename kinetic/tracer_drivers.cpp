@@ -8,6 +8,7 @@
 #include <string>
 
 #include "kinetic/batch.hpp"
+#include "kinetic/hot_spot_start.hpp"
 #include "kinetic/random.hpp"
 #include "theory/prefactors.hpp"
 
@@ -67,6 +68,15 @@ Trajectory<D> start_trajectory(const TracerContext& ctx, long long index) {
       x.r0[k] = state.r0[k];
     }
     s.collisions = state.collisions;  // C_imp counts from the MD's start, as the MD's does
+  } else if (ctx.config.start == "hotspot") {
+    // Trajectory i is impurity i mod k of its own hot spot (k = impurities.count), as the MD's
+    // realization i/k holds k impurities; R_imp counts from where it starts.
+    const int which = static_cast<int>(index % ctx.config.scene.impurities.count);
+    const HotSpotImpurity<D> hot =
+        sample_hot_spot_impurity<D>(ctx.config.scene, ctx.config.hot_spot_radius(), x.rng.next(), which);
+    s.r = hot.r;
+    s.v = hot.v;
+    x.r0 = hot.r;
   } else {
     s.v = initial_velocity<D>(ctx.config, ctx.background, s.t, x.rng);
   }

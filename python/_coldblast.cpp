@@ -388,6 +388,7 @@ struct TracerOptions {
   std::string start_states;
   std::string kernel = "auto";
   std::string md_run;
+  double r0 = 0.0;
 };
 
 py::list tracer_run(const std::string& scene_file, const std::string& scene_text, std::vector<std::string> overrides,
@@ -408,6 +409,7 @@ py::list tracer_run(const std::string& scene_file, const std::string& scene_text
   config.background = o.background;
   config.transport = o.transport;
   config.start = o.start;
+  config.r0 = o.r0;
   config.trajectories = o.trajectories;
   config.threads = o.threads;
   config.T = o.T;
@@ -562,15 +564,15 @@ PYBIND11_MODULE(_coldblast, m) {
          std::optional<long long> seed, const std::string& background, const std::string& transport,
          const std::string& start, long long trajectories, int threads, double T, std::optional<double> phi,
          double start_time, int frames_per_decade, int cells, const std::string& start_states,
-         const std::string& kernel, const std::string& md_run, const std::string& out, bool resume, bool overwrite,
-         const std::vector<std::string>& given, const py::object& progress) {
-        const TracerOptions options{background, transport,         start, trajectories, threads, T,     phi,
-                                    start_time, frames_per_decade, cells, start_states, kernel,  md_run};
+         const std::string& kernel, const std::string& md_run, double r0, const std::string& out, bool resume,
+         bool overwrite, const std::vector<std::string>& given, const py::object& progress) {
+        const TracerOptions options{background, transport,         start, trajectories, threads, T,      phi,
+                                    start_time, frames_per_decade, cells, start_states, kernel,  md_run, r0};
         return tracer_run(scene_file, scene_text, overrides, seed, options, out, resume, overwrite, given, progress);
       },
       py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("seed"), py::arg("background"),
       py::arg("transport"), py::arg("start"), py::arg("trajectories"), py::arg("threads"), py::arg("T"), py::arg("phi"),
       py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("kernel"),
-      py::arg("md_run"), py::arg("out"), py::arg("resume"), py::arg("overwrite"), py::arg("given"),
+      py::arg("md_run"), py::arg("r0"), py::arg("out"), py::arg("resume"), py::arg("overwrite"), py::arg("given"),
       py::arg("progress"));
 }

@@ -59,6 +59,7 @@ common::Json tracer_summary(const TracerResult& result) {
   j["kernel"] = result.kernel;
   j["start"] = c.start;
   if (c.start == "states") j["start_states"] = c.start_states;
+  if (c.start == "hotspot") j["r0"] = c.hot_spot_radius();  // the hot spot's radius (length)
   j["start_time"] = result.start_time;
   j["trajectories"] = result.trajectories();
   j["impurity_mass"] = c.scene.impurities.mass;
@@ -259,6 +260,7 @@ TracerResult merge_tracer_outputs(const std::vector<std::filesystem::path>& dire
   c.transport = first.at("transport").get<std::string>();
   c.start = first.at("start").get<std::string>();
   if (first.contains("start_states")) c.start_states = first.at("start_states").get<std::string>();
+  if (first.contains("r0")) c.r0 = first.at("r0").get<double>();
   if (first.contains("T")) c.T = first.at("T").get<double>();
   if (first.contains("md_run")) {
     c.md_run = first.at("md_run").get<std::string>();

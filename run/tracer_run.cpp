@@ -156,6 +156,7 @@ std::map<std::string, std::string> tracer_option_values(const kinetic::TracerCon
           {"--T", option_text(c.T)},
           {"--phi", c.phi ? option_text(*c.phi) : ""},
           {"--start", c.start},
+          {"--r0", option_text(c.r0)},
           {"--start-time", option_text(c.start_time)},
           {"--start-states", c.start_states},
           {"--md-run", md_run_path(c.md_run)},
@@ -191,6 +192,7 @@ kinetic::TracerConfig resume_tracer_config(const std::filesystem::path& out, con
     const std::string phi = value("--phi");
     c.phi = phi.empty() ? std::nullopt : std::optional<double>(std::stod(phi));
     c.start = value("--start");
+    c.r0 = run.options.contains("--r0") ? std::stod(value("--r0")) : 0.0;  // absent before the hot-spot start
     c.start_time = std::stod(value("--start-time"));
     c.start_states = value("--start-states");
     // Absent from checkpoints made before --background md: no MD run.

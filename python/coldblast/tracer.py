@@ -12,7 +12,8 @@ from .md import scene_arguments
 
 def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, out=None, transport="dilute",
         start="kick", start_time=None, T=1.0, phi=None, frames_per_decade=40, cells=_coldblast.default_core_cells,
-        progress=True, start_states=None, kernel="auto", overwrite=False, resume=None, md_run=None, **overrides):
+        progress=True, start_states=None, kernel="auto", overwrite=False, resume=None, md_run=None, r0=None,
+        **overrides):
     """Run an ensemble of impurity trajectories (the same call as ``coldblast tracer``).
 
     Parameters
@@ -48,13 +49,19 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         "dilute" (chi = 1; the ideal-gas Navier-Stokes) or "enskog" (chi(n) at contact; with "ns" the dense
         Navier-Stokes at the scene's packing fraction, the prediction for its MD; not with "tvns").
     start : str
-        "kick" (the MD's kick, E shared by the impurities), "thermal" (local Maxwellian) or "states"
-        (the MD's own impurities: ``start_states``).
+        "kick" (the MD's kick, E shared by the impurities), "hotspot" (the MD's hot spot of radius
+        ``r0``: the impurity among the particles nearest the centre, E a Maxwellian of every particle
+        within r0, in the Navier-Stokes hot spot), "thermal" (local Maxwellian) or "states" (the MD's
+        own impurities: ``start_states``).
+    r0 : float or None
+        start="hotspot": the hot spot's radius, a length as the scene's start.r0 (not
+        ``coldblast.hydro.core``'s r0/lambda); None: the scene's start.r0. Only with start="hotspot".
     start_states : str, os.PathLike or None
         start="states": an impurity_states.csv of ``coldblast md states`` (or ``coldblast.md.states``
         with ``out``) of the same scene; trajectory i starts from state i at the file's time.
     start_time : float or None
-        Start time >= 0; None: the scene's t_min (ns, tvns), 0 for equilibrium.
+        Start time >= 0; None: the scene's t_min (ns, tvns; t_min/1024 for start="hotspot"), 0 for
+        equilibrium.
     T, phi : float, float or None
         Equilibrium background only: bath temperature (> 0) and packing fraction (None: the scene's).
     frames_per_decade, cells : int
@@ -93,7 +100,8 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
         ("--trajectories", trajectories, None), ("--T", T, 1.0), ("--phi", phi, None),
         ("--start-time", start_time, None), ("--frames-per-decade", frames_per_decade, 40),
         ("--cells", cells, _coldblast.default_core_cells),
-        ("--start-states", start_states, None), ("--kernel", kernel, "auto"), ("--md-run", md_run, None))
+        ("--start-states", start_states, None), ("--kernel", kernel, "auto"), ("--md-run", md_run, None),
+        ("--r0", r0, None))
         if value != default]
     scene_file, scene_text, sets = scene_arguments(scene, overrides)
     with sigterm_stops():
@@ -107,6 +115,7 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
                                     integer(frames_per_decade, "--frames-per-decade"), integer(cells, "--cells"),
                                     "" if start_states is None else os.fspath(start_states),
                                     text(kernel, "--kernel"), "" if md_run is None else os.fspath(md_run),
+                                    0.0 if r0 is None else number(r0, "--r0"),
                                     "" if out is None else os.fspath(out), resume is not None,
                                     bool(overwrite), given, _progress.callback(progress, "tracer", "blocks"))
     return Run(raw, out, "tracer")

@@ -326,3 +326,31 @@ TEST_CASE("campaign 1's shock radius: the same definition on both sides removes 
   CHECK(moving_mass / conservative - 1 > 3e-3);
   CHECK(R.continuum_bound == Approx(1 / continuum->R_over_lambda_last));
 }
+
+TEST_CASE(
+    "a hot-spot MD run is compared with the Navier-Stokes hot spot of its own E and r0, timed from the deposition",
+    "[fast]") {
+  // data/start-memory/hotspot: the paper scene with start.kind = hotspot, r0 = 20/3 = λ.
+  const RunData hot = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "start-memory" / "hotspot");
+  const RunData kick = read_run(fs::path(COLDBLAST_SOURCE_DIR) / "data" / "start-memory" / "kick");
+  CHECK(with_run_start(HydroModel{}, kick).start == coldblast::hydro::Start::self_similar);  // kick: unchanged
+  const HydroModel model = with_run_start(HydroModel{}, hot);
+  REQUIRE(model.start == coldblast::hydro::Start::hotspot);
+  CHECK(model.r0_over_lambda == Approx(1.0).epsilon(1e-12));  // r0/λ with the run's λ
+  CHECK(model.describe_start() == "hotspot r0/lambda = 1");
+  CHECK(model.describe().find("hot-spot start r0 = 1 lambda") != std::string::npos);
+  const auto continuum = solve_continuum(hot, model, 256);
+  const auto& ns = continuum->ns;
+  CHECK(ns.config.physics.start == coldblast::hydro::Start::hotspot);
+  CHECK(ns.config.physics.r0_over_lambda == Approx(1.0).epsilon(1e-12));
+  // Its energy is E (= 1 in the scaled units) at every sample to the projection's round-off, the
+  // deposit itself exact to 1e-14 (tests/hydro "both starts deposit exactly E").
+  CHECK(ns.max_energy_error < 1e-12);
+  // The same deposition: the 15 profiles around the MD's last time are at t_MD × (R-factor)^((d+2)/2)
+  // in the scaled time unit √(n∞ λ^(d+2)/E), the middle one at the MD's t = 4000 itself.
+  const double E = hot.summary["E"].get<double>(), n = hot.summary["n"].get<double>(),
+               lambda = hot.summary["lambda"].get<double>();
+  const double t_scaled = 4000 * std::sqrt(E / (n * std::pow(lambda, 4)));
+  REQUIRE(ns.profiles.size() == 16);
+  CHECK(ns.profiles[7].t == Approx(t_scaled).epsilon(1e-12));
+}

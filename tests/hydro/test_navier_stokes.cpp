@@ -246,3 +246,19 @@ TEST_CASE("dilute limit: the dense solver at phi = 1e-6 equals the ideal-gas sol
     CHECK(b.A_reference == Approx(a.A_reference).epsilon(1e-5));
   }
 }
+
+TEST_CASE("profiles at given times: a hot spot's profile sits at the requested t from the deposition", "[fast]") {
+  NavierStokesConfig config = core_config(2, 10, 48);
+  config.physics.start = hydro::Start::hotspot;
+  config.physics.r0_over_lambda = 1.0;
+  config.numerics.profile_times = {0.5, 3.0};
+  const auto result = run_navier_stokes(config);
+  REQUIRE(result.profiles.size() == 3);  // the two requested and the final one
+  CHECK(result.profiles[0].t == Approx(0.5).epsilon(1e-12));
+  CHECK(result.profiles[1].t == Approx(3.0).epsilon(1e-12));
+  // A time outside (start, end] is refused naming the field and the range.
+  config.numerics.profile_times = {1e9};
+  CHECK_THROWS_WITH(run_navier_stokes(config), Catch::Contains("profile_times: t = 1e+09 is outside (0, "));
+  config.numerics.profile_times = {-1.0};
+  CHECK_THROWS_WITH(run_navier_stokes(config), Catch::Contains("profile_times = -1 is outside"));
+}

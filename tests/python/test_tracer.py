@@ -129,3 +129,15 @@ def test_md_background_equals_cli(tmp_path):
         with pytest.raises(ValueError) as error:
             coldblast.tracer.run(background="md", progress=False, **kwargs)
         assert str(error.value) == cli_error("tracer", "--background", "md", *flags)
+
+
+def test_hotspot_start_takes_r0_and_names_its_errors_as_the_cli():
+    """start="hotspot", r0=R0 is `tracer --start hotspot --r0 R0`: the NS hot spot, r0 recorded; r0 without
+    the hot spot, or outside the MD's range, is the CLI's exit-2 message."""
+    r = coldblast.tracer.run(start="hotspot", r0=5, cells=64, trajectories=32, progress=False)
+    assert r.summary["start"] == "hotspot" and r.summary["r0"] == 5.0
+    assert "hot-spot start r0 = 0.75 lambda" in r.summary["background_description"]
+    with pytest.raises(ValueError, match="--r0 = 5 is the radius of a hot spot: it needs --start hotspot"):
+        coldblast.tracer.run(r0=5, progress=False)
+    with pytest.raises(ValueError, match=r"--r0 = 1 is outside \[2\.9"):
+        coldblast.tracer.run(start="hotspot", r0=1, progress=False)

@@ -325,3 +325,30 @@ TEST_CASE("tracer: md merge of shard directories equals one run, summary keys an
   CHECK_THROWS_WITH(merge_tracer_outputs(shards), Catch::Contains("tracer_blocks.csv"));
   std::filesystem::remove_all(root);
 }
+
+TEST_CASE("tracer: --start hotspot runs in the NS hot spot, records r0, and resume refuses another start or r0") {
+  const std::filesystem::path root = coldblast::test::unique_temp_path("coldblast_test_tracer_hotspot");
+  TracerConfig c = small_config("ns");
+  c.trajectories = 64;
+  c.start = "hotspot";
+  c.r0 = 5.0;
+  const TracerRunFiles files{root / "out", "--out", false, false, "resume"};
+  const TracerResult first = run_tracer(c, {}, files);  // the checkpoint stays (no finish_tracer_run)
+  CHECK(first.start_time == c.scene.t_min / 1024);      // from the deposition, to 0.1 % of t_min
+  CHECK(first.background_description.find("hot-spot start r0 = ") != std::string::npos);
+  const auto summary = tracer_summary(first);
+  CHECK(summary.at("start") == "hotspot");
+  CHECK(summary.at("r0") == 5.0);
+  TracerConfig requested = small_config("ns");
+  const TracerConfig resumed = resume_tracer_config(files.out, requested, {});
+  CHECK(resumed.start == "hotspot");
+  CHECK(resumed.r0 == 5.0);
+  requested.start = "hotspot";
+  requested.r0 = 6.0;
+  CHECK_THROWS_WITH(resume_tracer_config(files.out, requested, {"--r0"}),
+                    Catch::Contains("--r0 = 6 contradicts the checkpoint") && Catch::Contains("which has --r0 = 5"));
+  requested.start = "kick";
+  CHECK_THROWS_WITH(resume_tracer_config(files.out, requested, {"--start"}),
+                    Catch::Contains("--start = kick contradicts the checkpoint"));
+  std::filesystem::remove_all(root);
+}
