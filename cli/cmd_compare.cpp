@@ -78,7 +78,7 @@ void print_amplitudes(const compare::CompareResult& result) {
   if (result.against == compare::Reference::hydro && result.continuum && !result.amplitudes.empty()) {
     std::printf("\namplitudes at t = %g (R/lambda = %.2f) against %s:\n", result.amplitudes[0].t,
                 result.continuum->R_over_lambda_last, result.continuum->model.describe().c_str());
-    std::printf("%-10s %-20s %-20s %9s %8s %7s  %s\n", "quantity", "MD", "NS", "MD/NS-1", "dev/sig", "bound",
+    std::printf("%-16s %-20s %-20s %9s %8s %7s  %s\n", "quantity", "MD", "NS", "MD/NS-1", "dev/sig", "bound",
                 "verdict");
     // "value±error" to the error's second digit, padded to 20 columns (± is two bytes in UTF-8).
     const auto cell = [](double value, double error) {
@@ -87,7 +87,7 @@ void print_amplitudes(const compare::CompareResult& result) {
       return text + std::string(text.size() < 21 ? 21 - text.size() : 0, ' ');  // 20 visible columns
     };
     for (const auto& a : result.amplitudes) {
-      std::printf("%-10s %s %s %+8.2f%% %+8.2f %6.2g%%  %s\n", a.name.c_str(), cell(a.measured, a.error).c_str(),
+      std::printf("%-16s %s %s %+8.2f%% %+8.2f %6.2g%%  %s\n", a.name.c_str(), cell(a.measured, a.error).c_str(),
                   cell(a.reference, a.reference_error).c_str(), 100 * a.relative_difference, a.deviation_sigma,
                   100 * a.continuum_bound, compare::to_string(a.outcome).c_str());
     }

@@ -1,5 +1,6 @@
 #include "compare/amplitudes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -46,6 +47,31 @@ bool md_density_profile(const RunData& run, double t, std::vector<double>& centr
       error.push_back(std::isfinite(row[ce]) ? row[ce] : 0.0);
     }
   return true;
+}
+
+/// The MD's innermost profile bin at the latest profile time <= t: n/n∞ and T with their errors
+/// (profiles.csv; T's error is NaN in files written before its temperature_stderr column).
+struct CentreBin {
+  double n = NAN, n_error = NAN, T = NAN, T_error = NAN;
+};
+CentreBin md_centre_bin(const RunData& run, double t) {
+  CentreBin c;
+  const auto path = run.directory / "profiles.csv";
+  if (!std::filesystem::exists(path)) return c;
+  const CsvTable table = read_numeric_csv(path);
+  const std::size_t ct = table.column("t"), lo = table.column("r_over_R_lo"), cn = table.column("density_over_n"),
+                    ce = table.column("density_stderr"), cT = table.column("temperature");
+  const auto& names = table.columns;
+  const bool has_T_error = std::find(names.begin(), names.end(), "temperature_stderr") != names.end();
+  double t_profile = -1;
+  for (const auto& row : table.rows)
+    if (row[ct] <= t * (1 + 1e-9)) t_profile = std::max(t_profile, row[ct]);
+  for (const auto& row : table.rows)
+    if (row[ct] == t_profile && row[lo] == 0.0) {
+      c = {row[cn], row[ce], row[cT], has_T_error ? row[table.column("temperature_stderr")] : NAN};
+      break;
+    }
+  return c;
 }
 
 }  // namespace
@@ -162,6 +188,27 @@ bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, Amplitud
     case theory::Amplitude::R:
       measure_shock_radius(in, v);
       return true;
+    case theory::Amplitude::n_centre_over_n: {
+      const CentreBin c = md_centre_bin(in.run, in.t);
+      if (!std::isfinite(c.n_error) || !(c.n > 0)) return false;
+      v.measured = c.n;
+      v.error = c.n_error;
+      v.reference = in.ns.n_centre_over_n;
+      v.reference_error = in.ns_error.n_centre_over_n;
+      return true;
+    }
+    case theory::Amplitude::T_centre_over_Rdot2: {
+      const CentreBin c = md_centre_bin(in.run, in.t);
+      if (!std::isfinite(c.T_error) || !(c.T > 0)) return false;
+      // Ṙ from the ensemble R at t (Eq. (1) form, as for T0); its jackknife error joins T's.
+      const JackknifedValue R = jackknife_last({&in.R}, [](const std::vector<double>& a) { return a[0]; });
+      const double Rdot = theory::shock_speed_at(in.run.d, R.value, in.t);
+      v.measured = c.T / (Rdot * Rdot);
+      v.error = v.measured * std::hypot(c.T_error / c.T, 2.0 * R.error / R.value);
+      v.reference = in.ns.T_centre_over_Rdot2;
+      v.reference_error = in.ns_error.T_centre_over_Rdot2;
+      return true;
+    }
     case theory::Amplitude::H_over_R: {
       const CoreSize H = md_core_size(in.run, in.t);
       if (!std::isfinite(H.H_over_R)) return false;

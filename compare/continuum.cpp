@@ -167,6 +167,20 @@ std::vector<double> binned_profile_density(const hydro::NavierStokesProfile& p, 
   return density;
 }
 
+// The innermost bin r < `radius` as the MD measures it (profiles.csv): particles per volume, and the
+// pooled particles' (⟨v²⟩ − ū_r²)/d with ⟨v²⟩ = d T + u² of the local Maxwellian, over Ṙ².
+void centre_bin_amplitudes(const hydro::NavierStokesProfile& p, int d, double radius, double Rdot,
+                           ContinuumAmplitudes& a) {
+  const auto n = [&](double r) { return interpolate(p.r, p.density, r); };
+  const auto u = [&](double r) { return interpolate(p.r, p.velocity, r); };
+  const auto T = [&](double r) { return interpolate(p.r, p.temperature, r); };
+  const double particles = shell_integral(0, radius, d, n);
+  const double flow = shell_integral(0, radius, d, [&](double r) { return n(r) * u(r); }) / particles;
+  const double v2 = shell_integral(0, radius, d, [&](double r) { return n(r) * (d * T(r) + u(r) * u(r)); }) / particles;
+  a.n_centre_over_n = particles * d / std::pow(radius, d);
+  a.T_centre_over_Rdot2 = (v2 - flow * flow) / d / (Rdot * Rdot);
+}
+
 // The MD's definitions (docs/compare.md, "Amplitudes") applied to one NS profile (E = n∞ = λ = 1),
 // in the MD's units: `scale` = R_MD/R_NS, so the MD's r/R_MD shells are the absolute shells
 // edges × scale × R_NS, H and the front come out in units of R_MD, and T0 is over Ṙ_MD² =
@@ -196,6 +210,7 @@ ContinuumAmplitudes profile_amplitudes(const hydro::NavierStokesProfile& p, int 
   a.front_over_R = binned_front_radius(centre, density, zero).H_over_R;
   a.bin_centres = centre;
   a.binned_density = density;
+  centre_bin_amplitudes(p, d, bin_edges[1] * scale * p.R, Rdot, a);
   const double T_centre = p.temperature.front();
   a.H_temperature_over_R = NAN;
   for (std::size_t i = 1; i < p.r.size(); ++i)
@@ -286,9 +301,14 @@ const hydro::NavierStokesProfile& nearest_profile(const hydro::NavierStokesResul
 }
 
 // The scalar amplitudes, for interpolation and error estimates field by field.
-constexpr double ContinuumAmplitudes::*scalar_fields[] = {
-    &ContinuumAmplitudes::n0_over_n, &ContinuumAmplitudes::T0_over_Rdot2,        &ContinuumAmplitudes::A,
-    &ContinuumAmplitudes::H_over_R,  &ContinuumAmplitudes::H_temperature_over_R, &ContinuumAmplitudes::front_over_R};
+constexpr double ContinuumAmplitudes::*scalar_fields[] = {&ContinuumAmplitudes::n0_over_n,
+                                                          &ContinuumAmplitudes::T0_over_Rdot2,
+                                                          &ContinuumAmplitudes::A,
+                                                          &ContinuumAmplitudes::H_over_R,
+                                                          &ContinuumAmplitudes::H_temperature_over_R,
+                                                          &ContinuumAmplitudes::front_over_R,
+                                                          &ContinuumAmplitudes::n_centre_over_n,
+                                                          &ContinuumAmplitudes::T_centre_over_Rdot2};
 
 // The amplitudes at R/λ = x, linear in ln(R/λ) between the two profiles around x. `reading`, when
 // given, receives |linear − quadratic| per field (the quadratic through those two and the next

@@ -86,6 +86,9 @@ struct ContinuumAmplitudes {
   /// Shock front under the shared binned rule (binned_front_radius) on the NS density averaged over
   /// the MD's absolute shells, in units of R_MD
   double front_over_R = 0;
+  /// The innermost of the MD's r/R bins: n/n∞ by volume, and T/Ṙ_MD² as the MD pools its particles
+  /// there, (⟨v²⟩ − ū_r²)/d per particle (theory::Amplitude::n_centre_over_n, T_centre_over_Rdot2)
+  double n_centre_over_n = 0, T_centre_over_Rdot2 = 0;
   /// n/n∞ averaged over each of the MD's r/R bins (centres in bin_centres): the profile residuals
   std::vector<double> bin_centres, binned_density;
 };

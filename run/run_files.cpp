@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "common/input.hpp"
+#include "common/jackknife.hpp"
 #include "common/validate.hpp"
 #include "md/observers.hpp"
 #include "run/run_directory.hpp"
@@ -195,26 +196,58 @@ void add_block_files(const BlastResult& result, const std::string& header, Named
   files.emplace_back("block_totals.csv", totals.str());
 }
 
+/// A profile bin's temperature from its four channels' sums (n/n∞, Σ u_r, Σ m v², count: the
+/// particles of the bin pooled over the realizations): T = (Σ m v²/count − u²)/d, u = Σ u_r/count,
+/// m = 1 (the hosts' mass; docs/md-output.md); 0 for an empty bin.
+double bin_temperature(const std::vector<double>& sum, int e0, int d) {
+  const double count = sum[e0 + 3];
+  if (!(count > 0)) return 0.0;
+  const double u = sum[e0 + 1] / count;
+  return std::max(0.0, (sum[e0 + 2] / count - u * u) / d);
+}
+
+/// Every profile bin's temperature with its delete-one-block jackknife error (common/jackknife.hpp;
+/// NaN with fewer than 2 blocks): a ratio of pooled sums, so the blocks, not the realizations'
+/// sums of squares, carry its error. In the order of layout.profile(k, b, 0) over k, then b.
+common::Jackknife profile_temperatures(const BlastResult& result, const EnsembleTotals& totals) {
+  const ResolvedScene& scene = result.scene;
+  const ObservableLayout layout(scene);
+  const int bins = scene.config.profile_bins, times = static_cast<int>(scene.times.size());
+  std::vector<const BlockSums*> blocks;
+  for (const auto& [b, s] : result.blocks) blocks.push_back(&s);
+  return common::block_jackknife(static_cast<long>(blocks.size()), [&](long left_out) {
+    std::vector<double> sum = totals.sum;
+    if (left_out != common::all_blocks)
+      for (std::size_t e = 0; e < sum.size(); ++e) sum[e] -= blocks[static_cast<std::size_t>(left_out)]->sum[e];
+    std::vector<double> T;
+    for (int k = 0; k < times; ++k)
+      for (int b = 0; b < bins; ++b) T.push_back(bin_temperature(sum, layout.profile(k, b, 0), scene.config.d));
+    return T;
+  });
+}
+
 std::string profiles_csv(const BlastResult& result, const EnsembleTotals& totals, const std::string& header) {
   const ResolvedScene& scene = result.scene;
   const ObservableLayout layout(scene);
   const std::vector<double>& S = totals.sum;
   const double N = static_cast<double>(totals.count);
+  const common::Jackknife T = profile_temperatures(result, totals);
   std::ostringstream out;
   out << header
-      << "t,bin,r_over_R_lo,r_over_R_hi,density_over_n,density_stderr,radial_velocity,temperature,particles\n";
+      << "t,bin,r_over_R_lo,r_over_R_hi,density_over_n,density_stderr,radial_velocity,temperature,particles,"
+         "temperature_stderr\n";
   const int bins = scene.config.profile_bins;
   const double width = 1.5 / bins;
+  std::size_t i = 0;
   for (std::size_t k = 0; k < scene.times.size(); ++k)
-    for (int b = 0; b < bins; ++b) {
+    for (int b = 0; b < bins; ++b, ++i) {
       const int e0 = layout.profile(static_cast<int>(k), b, 0);
       const double count = S[e0 + 3];
       const double u = count > 0 ? S[e0 + 1] / count : 0.0;
-      const double T = count > 0 ? std::max(0.0, (S[e0 + 2] / count - u * u) / scene.config.d) : 0.0;
       out << format_number(scene.times[k]) << ',' << b << ',' << format_number(b * width) << ','
           << format_number((b + 1) * width) << ',' << format_number(S[e0] / N) << ','
-          << number_or_nan(totals.standard_error(e0)) << ',' << format_number(u) << ',' << format_number(T) << ','
-          << format_number(count / N) << '\n';
+          << number_or_nan(totals.standard_error(e0)) << ',' << format_number(u) << ',' << format_number(T.value[i])
+          << ',' << format_number(count / N) << ',' << number_or_nan(T.error(i)) << '\n';
     }
   return out.str();
 }

@@ -455,6 +455,15 @@ const std::vector<AmplitudeInfo>& amplitude_catalogue() {
        "Eq. (1) [R-shock]"},
       {A::H_over_R, "H/R", "r/R where the density, in the MD's r/R bins, first reaches twice its innermost bin", "",
        "Eq. (4) [size-dim]"},
+      // The centre measured where it holds many particles: the 100-particle ball of n0 and T0 keeps
+      // its radius while the core thins out (9 particles at R/lambda = 307; docs/verification.md,
+      // "Campaign 5"), the innermost r/R bin grows with R.
+      {A::n_centre_over_n, "n(centre)/n",
+       "particles per volume in the innermost r/R bin of profiles.csv (r < 0.05 R by default), over n", "",
+       "Eq. (11) [eq:coren], (19) [n0]"},
+      {A::T_centre_over_Rdot2, "T(centre)/Rdot^2",
+       "temperature of the particles pooled in that bin, (sum of m v^2/N - mean u_r^2)/d, over (2R/((d+2)t))^2", "",
+       "Eq. (12) [eq:coreT], (20) [T0]; Rdot from Eq. (1) [R-shock]"},
   };
   return catalogue;
 }

@@ -151,10 +151,12 @@ double scaling_estimate(const ObservableInfo& o, const ScalingEstimates& estimat
 /// The amplitudes `compare --against hydro` judges at the MD's last time (docs/compare.md, "Amplitudes"),
 /// in their catalogue order (that of amplitude_catalogue() and of the verdicts).
 enum class Amplitude {
-  n0_over_n,      ///< "n0/n"
-  T0_over_Rdot2,  ///< "T0/Rdot^2"
-  R,              ///< "R"
-  H_over_R        ///< "H/R"
+  n0_over_n,           ///< "n0/n"
+  T0_over_Rdot2,       ///< "T0/Rdot^2"
+  R,                   ///< "R"
+  H_over_R,            ///< "H/R"
+  n_centre_over_n,     ///< "n(centre)/n": the innermost profile bin
+  T_centre_over_Rdot2  ///< "T(centre)/Rdot^2": the innermost profile bin
 };
 
 /// One amplitude: its name in reports and verdict.json, how both sides measure it, and the paper's

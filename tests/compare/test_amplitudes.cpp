@@ -7,6 +7,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "common/validate.hpp"
 #include "compare/amplitudes.hpp"
 #include "compare/continuum.hpp"
 #include "compare/figures.hpp"
@@ -80,6 +81,63 @@ TEST_CASE("amplitude verdicts: known n0, T0/Rdot^2 and R pass against the same N
   CHECK_FALSE(verdicts[1].pass);
   CHECK(verdicts[1].deviation_sigma < -100);
   CHECK(verdicts[2].pass);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the centre's amplitudes come from the innermost profile bin, with its errors, and are judged like n0",
+          "[fast]") {
+  const double n0 = 0.19, T0 = 0.011, R = 230.0, t_last = 10.0 * std::pow(2.0, 0.25 * 11);
+  const fs::path dir = amplitude_run(n0, T0, R, 1e-4);
+  // profiles.csv at the last time: the innermost bin holds n = 0.093 ± 0.001 of n, T = 0.0104 ± 0.0001;
+  // an earlier time's bin (other values) must not be read. Without temperature_stderr (files
+  // written before it) only the density row can be judged.
+  const auto profiles = [&](bool with_T_error) {
+    std::ostringstream csv;
+    csv << "# synthetic\nt,bin,r_over_R_lo,r_over_R_hi,density_over_n,density_stderr,radial_velocity,temperature,"
+           "particles"
+        << (with_T_error ? ",temperature_stderr" : "") << "\n";
+    for (double t : {t_last / 2, t_last})
+      for (int b = 0; b < 2; ++b)
+        csv << coldblast::common::format_number(t) << ',' << b << ',' << 0.05 * b << ',' << 0.05 * (b + 1) << ','
+            << (t == t_last ? 0.093 + b : 0.5) << ",0.001,0," << (t == t_last ? 0.0104 : 0.5) << ",460"
+            << (with_T_error ? ",0.0001" : "") << "\n";
+    coldblast::common::write_file_atomic(dir / "profiles.csv", csv.str());
+  };
+  const double Rdot = 2.0 * R / (4.0 * t_last);
+  ContinuumReference continuum;
+  continuum.R_over_lambda_last = R / 6.666666666666667;
+  continuum.amplitudes.n0_over_n = n0 / 0.15;
+  continuum.amplitudes.T0_over_Rdot2 = T0 / (Rdot * Rdot);
+  continuum.amplitudes.A = 5.7 * t_last * t_last / (0.15 * std::pow(R, 4));
+  continuum.amplitudes.n_centre_over_n = 0.093;
+  continuum.amplitudes.T_centre_over_Rdot2 = 0.0104 / (Rdot * Rdot);
+  const auto find = [](const std::vector<AmplitudeVerdict>& verdicts, coldblast::theory::Amplitude id) {
+    for (const auto& v : verdicts)
+      if (v.amplitude == id) return v;
+    FAIL("no verdict for " << coldblast::theory::amplitude_info(id).name);
+    return AmplitudeVerdict{};
+  };
+  using coldblast::theory::Amplitude;
+  profiles(false);
+  std::vector<AmplitudeVerdict> verdicts = amplitude_verdicts(read_run(dir), continuum, 2.0);
+  const AmplitudeVerdict n = find(verdicts, Amplitude::n_centre_over_n);
+  CHECK(n.measured == 0.093);
+  CHECK(n.error == 0.001);
+  CHECK(n.pass);
+  for (const auto& v : verdicts) CHECK(v.amplitude != Amplitude::T_centre_over_Rdot2);
+  profiles(true);
+  verdicts = amplitude_verdicts(read_run(dir), continuum, 2.0);
+  const AmplitudeVerdict T = find(verdicts, Amplitude::T_centre_over_Rdot2);
+  CHECK(T.name == "T(centre)/Rdot^2");
+  CHECK(T.measured == Approx(0.0104 / (Rdot * Rdot)).epsilon(1e-3));  // R's ensemble mean is R within its noise
+  // T's error (0.0001/0.0104) dominates; R's relative error (~1e-4/sqrt(160)) enters twice, in quadrature.
+  CHECK(T.error / T.measured == Approx(0.0001 / 0.0104).epsilon(1e-3));
+  CHECK(T.pass);
+  // An NS centre 2.5 % hotter is 2.6 sigma off: not a pass at k = 2.
+  continuum.amplitudes.T_centre_over_Rdot2 *= 1.025;
+  const AmplitudeVerdict hot = find(amplitude_verdicts(read_run(dir), continuum, 2.0), Amplitude::T_centre_over_Rdot2);
+  CHECK_FALSE(hot.pass);
+  CHECK(hot.deviation_sigma == Approx(-0.025 * 0.0104 / 0.0001).epsilon(0.01));
   fs::remove_all(dir);
 }
 
