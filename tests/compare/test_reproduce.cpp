@@ -29,7 +29,7 @@ int decimals(const std::string& number) {
 void check_amplitude_rows(const std::string& report, const std::vector<AmplitudeVerdict>& amplitudes) {
   for (const auto& a : amplitudes) {
     INFO(a.name << " = " << a.measured << " ± " << a.error);
-    const std::regex row("\\| " + std::regex_replace(a.name, std::regex("[\\^/]"), "\\$&") +
+    const std::regex row("\\| " + std::regex_replace(a.name, std::regex("[\\^/()]"), "\\$&") +
                          " \\| (-?[0-9]+(\\.[0-9]+)?) ± ([0-9]+(\\.[0-9]+)?) \\|");
     std::smatch m;
     REQUIRE(std::regex_search(report, m, row));
