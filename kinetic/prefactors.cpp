@@ -61,7 +61,7 @@ Inputs make_inputs(const md::ResolvedScene& scene) {
     std::vector<int> entries;
     std::vector<double> estimates;
     for (const theory::ObservableInfo* o : observables) {
-      entries.push_back(layout.scalar(o->name, static_cast<int>(k)));
+      entries.push_back(layout.scalar(o->id, static_cast<int>(k)));
       estimates.push_back(theory::scaling_estimate(*o, s));
     }
     in.entry.push_back(entries);

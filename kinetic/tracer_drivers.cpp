@@ -10,6 +10,7 @@
 #include "kinetic/batch.hpp"
 #include "kinetic/hot_spot_start.hpp"
 #include "kinetic/random.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::kinetic {
@@ -94,11 +95,12 @@ void record_time(const TracerContext& ctx, std::size_t k, const Trajectory<D>& x
   const double t = ctx.scene.times[k];
   const double r2 = (s.r - x.r0).squaredNorm(), v2 = s.v.squaredNorm();
   const int kk = static_cast<int>(k);
-  record[ctx.layout.scalar("R_imp", kk)] = 0.5 * r2;
-  record[ctx.layout.scalar("V_imp", kk)] = 0.5 * v2;
-  record[ctx.layout.scalar("C_imp", kk)] = static_cast<double>(s.collisions);
+  record[ctx.layout.scalar(theory::Observable::R_imp, kk)] = 0.5 * r2;
+  record[ctx.layout.scalar(theory::Observable::V_imp, kk)] = 0.5 * v2;
+  record[ctx.layout.scalar(theory::Observable::C_imp, kk)] = static_cast<double>(s.collisions);
   const double time = std::max(t, s.t);
-  record[ctx.layout.scalar("u_imp", kk)] = std::abs(ctx.background.at(s.r.norm(), time, ctx.background.bound(time)).u);
+  record[ctx.layout.scalar(theory::Observable::u_imp, kk)] =
+      std::abs(ctx.background.at(s.r.norm(), time, ctx.background.bound(time)).u);
   // Eq. (39) [eq:pr]: |Δr| in bins of width R(t)/bins, R(t) from Eq. (1), as md/observers.cpp.
   const theory::BlastParameters p{D, c.n, c.a, c.E, ctx.scene.A_d};
   const int bins = c.p_imp_bins;

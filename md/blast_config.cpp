@@ -83,11 +83,6 @@ const std::vector<std::string>& default_observable_names() {
   return names;
 }
 
-const std::vector<std::string>& scalar_observable_names() {
-  static const std::vector<std::string> names = theory::observable_names(theory::is_md_scalar);
-  return names;
-}
-
 const std::vector<std::string>& known_observable_names() {
   static const std::vector<std::string> names = theory::observable_names(theory::is_md_requestable);
   return names;
@@ -146,6 +141,10 @@ void BlastConfig::validate() const {
 
 bool ResolvedScene::wants(const std::string& observable) const {
   return std::find(config.observables.begin(), config.observables.end(), observable) != config.observables.end();
+}
+
+bool ResolvedScene::wants(theory::Observable observable) const {
+  return wants(theory::observable_info(observable).name);
 }
 
 ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& amplitude) {

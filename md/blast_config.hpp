@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "md/initial_state.hpp"
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::md {
@@ -68,9 +69,6 @@ struct BlastConfig {
   void validate() const;
 };
 
-/// Names of the scalar observables in output order (observables.csv / blocks.csv): the md_scalar
-/// entries of the catalogue theory/observables.hpp.
-const std::vector<std::string>& scalar_observable_names();
 /// Every name accepted in `observables` (scalars plus profiles, p_imp, snapshots, trajectories), from
 /// the catalogue.
 const std::vector<std::string>& known_observable_names();
@@ -119,6 +117,8 @@ struct ResolvedScene {
   std::vector<double> times;     ///< recording times t_k = t_min 2^(k/4) <= t_max
   std::vector<double> snapshot_times;
   bool wants(const std::string& observable) const;
+  /// Whether the scene records catalogue entry `observable`.
+  bool wants(theory::Observable observable) const;
 };
 
 /// Validates `config` and derives the amplitude, region, particle count and recording times. A_d = 0

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "theory/observables.hpp"
 #include "theory/prefactors.hpp"
 
 namespace coldblast::md {
+
+using theory::Observable;
 
 namespace {
 constexpr int held_particles = 100;  // paper Sec. V: the regions hold 100 particles at t = 0
@@ -15,15 +18,18 @@ constexpr double profile_extent = 1.5;
 
 ObservableLayout::ObservableLayout(const ResolvedScene& scene) {
   const int times = static_cast<int>(scene.times.size());
-  for (const std::string& name : scalar_observable_names()) {
-    scalar_.emplace_back(times, -1);
-    if (!scene.wants(name)) continue;
+  scalar_.resize(theory::observable_catalogue().size());
+  for (const theory::ObservableInfo& o : theory::observable_catalogue()) {  // observables.csv's order
+    if (!theory::is_md_scalar(o)) continue;
+    std::vector<int>& entries = scalar_[static_cast<std::size_t>(o.id)];
+    entries.assign(times, -1);
+    if (!scene.wants(o.name)) continue;
     for (int k = 0; k < times; ++k) {
-      scalar_.back()[k] = static_cast<int>(size());
-      add(name, k, 0);
+      entries[k] = static_cast<int>(size());
+      add(o.name, k, 0);
     }
   }
-  if (scene.wants("profiles")) {
+  if (scene.wants(Observable::profiles)) {
     profile_bins_ = scene.config.profile_bins;
     profile_base_ = static_cast<int>(size());
     static const char* quantities[] = {"profile_density", "profile_radial_velocity_sum", "profile_mv2_sum",
@@ -32,7 +38,7 @@ ObservableLayout::ObservableLayout(const ResolvedScene& scene) {
       for (int b = 0; b < profile_bins_; ++b)
         for (const char* q : quantities) add(q, k, b);
   }
-  if (scene.wants("p_imp")) {
+  if (scene.wants(Observable::p_imp)) {
     p_imp_bins_ = scene.config.p_imp_bins;
     p_imp_base_ = static_cast<int>(size());
     for (int k = 0; k < times; ++k)
@@ -46,11 +52,12 @@ void ObservableLayout::add(const std::string& channel, int k, int bin) {
   bin_.push_back(bin);
 }
 
-int ObservableLayout::scalar(const std::string& name, int k) const {
-  const auto& names = scalar_observable_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw std::logic_error("unknown scalar observable " + name);
-  return scalar_[it - names.begin()][k];
+int ObservableLayout::scalar(theory::Observable observable, int k) const {
+  const std::vector<int>& entries = scalar_.at(static_cast<std::size_t>(observable));
+  if (k < 0 || static_cast<std::size_t>(k) >= entries.size())  // empty unless an MD scalar
+    throw std::logic_error(std::string("ObservableLayout::scalar: ") + theory::observable_info(observable).name +
+                           " at time index " + std::to_string(k) + " is not an MD scalar's entry");
+  return entries[k];
 }
 
 template <int D, class Queue>
@@ -60,7 +67,7 @@ BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const Observa
   for (std::size_t i = 0; i < engine.size(); ++i)
     if (engine.species(static_cast<std::int32_t>(i)) == impurity_species)
       impurities_.push_back(static_cast<std::int32_t>(i));
-  if (scene.wants("C_re") || scene.wants("dE_first") || scene.wants("dE_re")) {
+  if (scene.wants(Observable::C_re) || scene.wants(Observable::dE_first) || scene.wants(Observable::dE_re)) {
     recollisions_ = std::make_unique<RecollisionCounter<D>>(impurities_);
     engine.watch(*recollisions_);
   }
@@ -70,10 +77,11 @@ BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const Observa
   }
   for (const std::int32_t id : impurities_) {
     initial_position_.push_back(engine.position(id));
-    if (scene.wants("u_imp") || scene.wants("u_flow"))
+    if (scene.wants(Observable::u_imp) || scene.wants(Observable::u_flow))
       local_radius_.push_back(radius_holding(engine.position(id), held_particles, id));
   }
-  if (scene.wants("n0") || scene.wants("T0")) core_radius_ = radius_holding(Vec<D>::Zero(), held_particles, -1);
+  if (scene.wants(Observable::n0) || scene.wants(Observable::T0))
+    core_radius_ = radius_holding(Vec<D>::Zero(), held_particles, -1);
 }
 
 template <int D, class Queue>
@@ -128,97 +136,119 @@ ContactShell contact_shell(const Engine<D, Queue>& engine, std::int32_t id, doub
 }
 
 template <int D, class Queue>
+void BlastObserver<D, Queue>::put(std::vector<double>& record, Observable observable, int k, double value) const {
+  if (const int entry = layout_.scalar(observable, k); entry >= 0) record[entry] = value;
+}
+
+template <int D, class Queue>
 void BlastObserver<D, Queue>::measure(int k, std::vector<double>& record) const {
   const double count = static_cast<double>(impurities_.size());
-  auto put = [&](const char* name, double value) {
-    const int entry = layout_.scalar(name, k);
-    if (entry >= 0) record[entry] = value;
-  };
+  const ImpuritySums sums = impurity_sums();
+  put(record, Observable::R_imp, k, sums.r2 / count);
+  put(record, Observable::V_imp, k, sums.v2 / count);
+  put(record, Observable::C_imp, k, sums.collisions / count);
+  put(record, Observable::C_re, k, sums.recollisions / count);
+  put(record, Observable::dE_first, k, sums.loss_first / count);
+  put(record, Observable::dE_re, k, sums.loss_re / count);
+  put(record, Observable::u_imp, k, sums.flow / count);
+  put(record, Observable::u_flow, k, sums.flow_squared / count);
+  if (layout_.scalar(Observable::g_front, k) >= 0 || layout_.scalar(Observable::g_back, k) >= 0 ||
+      layout_.scalar(Observable::u_front, k) >= 0)
+    measure_contact_shells(k, record);
+  if (core_radius_ > 0.0) measure_core(k, record);
+  const double R = shock_radius();
+  put(record, Observable::R, k, R);
+  if (layout_.has_profiles()) measure_profiles(k, R, record);
+  if (layout_.has_p_imp()) measure_p_imp(k, record);
+}
+
+template <int D, class Queue>
+typename BlastObserver<D, Queue>::ImpuritySums BlastObserver<D, Queue>::impurity_sums() const {
   // Eq. (38) [eq:Rimp_comp]: inner values |r|²/2 and |v|²/2 averaged over the impurities.
-  double r2 = 0.0, v2 = 0.0, collisions = 0.0, recollisions = 0.0, loss_first = 0.0, loss_re = 0.0, flow = 0.0,
-         flow_squared = 0.0;
+  ImpuritySums sums;
   for (std::size_t m = 0; m < impurities_.size(); ++m) {
     const std::int32_t id = impurities_[m];
     const Vec<D> x = engine_.position(id);
-    r2 += 0.5 * (x - initial_position_[m]).squaredNorm();
-    v2 += 0.5 * engine_.velocity(id).squaredNorm();
-    collisions += engine_.particle(id).collisions;
+    sums.r2 += 0.5 * (x - initial_position_[m]).squaredNorm();
+    sums.v2 += 0.5 * engine_.velocity(id).squaredNorm();
+    sums.collisions += engine_.particle(id).collisions;
     const RecollisionStats partners = recollisions_ ? recollisions_->stats(id) : RecollisionStats{};
-    recollisions += static_cast<double>(partners.recollisions);
-    loss_first += partners.loss_first;
-    loss_re += partners.loss_re;
-    if (!local_radius_.empty()) {
-      // u_imp: |mean velocity| of the particles within the impurity's fixed radius (0 if none).
-      // u_flow: the same mean with its thermal noise removed, |ū|² − s²/N, s² the sample variance
-      // of the N velocities (summed over components): an unbiased estimate of the squared flow
-      // speed for independent velocities (docs/verification.md, "the u_imp deviation").
-      Vec<D> sum = Vec<D>::Zero();
-      double sum_squares = 0.0;
-      int inside = 0;
-      engine_.for_each_in_ball(x, local_radius_[m], [&](std::int32_t j, const Vec<D>&) {
-        if (j == id) return;
-        sum += engine_.velocity(j);
-        sum_squares += engine_.velocity(j).squaredNorm();
-        ++inside;
-      });
-      if (inside > 0) flow += (sum / inside).norm();
-      if (inside > 1) flow_squared += flow_speed_squared_estimate(sum.squaredNorm(), sum_squares, inside);
-    }
+    sums.recollisions += static_cast<double>(partners.recollisions);
+    sums.loss_first += partners.loss_first;
+    sums.loss_re += partners.loss_re;
+    if (!local_radius_.empty()) add_local_flow(m, sums);
   }
-  put("R_imp", r2 / count);
-  put("V_imp", v2 / count);
-  put("C_imp", collisions / count);
-  put("C_re", recollisions / count);
-  put("dE_first", loss_first / count);
-  put("dE_re", loss_re / count);
-  put("u_imp", flow / count);
-  put("u_flow", flow_squared / count);
-  if (layout_.scalar("g_front", k) >= 0 || layout_.scalar("g_back", k) >= 0 || layout_.scalar("u_front", k) >= 0)
-    measure_contact_shells(k, record);
-  if (core_radius_ > 0.0) {
-    int inside = 0;
-    double kinetic = 0.0;
-    engine_.for_each_in_ball(Vec<D>::Zero(), core_radius_, [&](std::int32_t j, const Vec<D>&) {
-      ++inside;
-      kinetic += 0.5 * engine_.mass(j) * engine_.velocity(j).squaredNorm();
-    });
-    put("n0", inside / (theory::unit_ball_volume(D) * std::pow(core_radius_, D)));
-    put("T0", inside > 0 ? (2.0 / D) * kinetic / inside : 0.0);  // T0 = (2/d) × kinetic energy per particle
+  return sums;
+}
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::add_local_flow(std::size_t m, ImpuritySums& sums) const {
+  // u_imp: |mean velocity| of the particles within the impurity's fixed radius (0 if none).
+  // u_flow: the same mean with its thermal noise removed, |ū|² − s²/N, s² the sample variance
+  // of the N velocities (summed over components): an unbiased estimate of the squared flow
+  // speed for independent velocities (docs/verification.md, "the u_imp deviation").
+  const std::int32_t id = impurities_[m];
+  Vec<D> sum = Vec<D>::Zero();
+  double sum_squares = 0.0;
+  int inside = 0;
+  engine_.for_each_in_ball(engine_.position(id), local_radius_[m], [&](std::int32_t j, const Vec<D>&) {
+    if (j == id) return;
+    sum += engine_.velocity(j);
+    sum_squares += engine_.velocity(j).squaredNorm();
+    ++inside;
+  });
+  if (inside > 0) sums.flow += (sum / inside).norm();
+  if (inside > 1) sums.flow_squared += flow_speed_squared_estimate(sum.squaredNorm(), sum_squares, inside);
+}
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::measure_core(int k, std::vector<double>& record) const {
+  int inside = 0;
+  double kinetic = 0.0;
+  engine_.for_each_in_ball(Vec<D>::Zero(), core_radius_, [&](std::int32_t j, const Vec<D>&) {
+    ++inside;
+    kinetic += 0.5 * engine_.mass(j) * engine_.velocity(j).squaredNorm();
+  });
+  put(record, Observable::n0, k, inside / (theory::unit_ball_volume(D) * std::pow(core_radius_, D)));
+  put(record, Observable::T0, k,
+      inside > 0 ? (2.0 / D) * kinetic / inside : 0.0);  // (2/d) × kinetic energy per particle
+}
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::measure_profiles(int k, double R, std::vector<double>& record) const {
+  const int bins = scene_.config.profile_bins;
+  const double width = profile_extent / bins;
+  std::vector<double> density(bins, 0.0), radial(bins, 0.0), mv2(bins, 0.0), number(bins, 0.0);
+  engine_.for_each_in_ball(Vec<D>::Zero(), profile_extent * R, [&](std::int32_t j, const Vec<D>& x) {
+    const double r = x.norm();
+    const int b = std::min(bins - 1, static_cast<int>(r / R / width));
+    const Vec<D>& v = engine_.velocity(j);
+    number[b] += 1.0;
+    if (r > 0.0) radial[b] += v.dot(x) / r;
+    mv2[b] += engine_.mass(j) * v.squaredNorm();
+  });
+  const double unit = scene_.config.n * theory::unit_ball_volume(D) * std::pow(R, D);
+  for (int b = 0; b < bins; ++b) {
+    const double shell = unit * (std::pow((b + 1) * width, D) - std::pow(b * width, D));
+    record[layout_.profile(k, b, 0)] = number[b] / shell;
+    record[layout_.profile(k, b, 1)] = radial[b];
+    record[layout_.profile(k, b, 2)] = mv2[b];
+    record[layout_.profile(k, b, 3)] = number[b];
   }
-  const double R = shock_radius();
-  put("R", R);
-  if (layout_.has_profiles()) {
-    const int bins = scene_.config.profile_bins;
-    const double width = profile_extent / bins;
-    std::vector<double> density(bins, 0.0), radial(bins, 0.0), mv2(bins, 0.0), number(bins, 0.0);
-    engine_.for_each_in_ball(Vec<D>::Zero(), profile_extent * R, [&](std::int32_t j, const Vec<D>& x) {
-      const double r = x.norm();
-      const int b = std::min(bins - 1, static_cast<int>(r / R / width));
-      const Vec<D>& v = engine_.velocity(j);
-      number[b] += 1.0;
-      if (r > 0.0) radial[b] += v.dot(x) / r;
-      mv2[b] += engine_.mass(j) * v.squaredNorm();
-    });
-    const double unit = scene_.config.n * theory::unit_ball_volume(D) * std::pow(R, D);
-    for (int b = 0; b < bins; ++b) {
-      const double shell = unit * (std::pow((b + 1) * width, D) - std::pow(b * width, D));
-      record[layout_.profile(k, b, 0)] = number[b] / shell;
-      record[layout_.profile(k, b, 1)] = radial[b];
-      record[layout_.profile(k, b, 2)] = mv2[b];
-      record[layout_.profile(k, b, 3)] = number[b];
-    }
-  }
-  if (layout_.has_p_imp()) {
-    // Eq. (39) [eq:pr]: histogram of |r| in bins of width R(t)/bins, R(t) from Eq. (1).
-    const int bins = scene_.config.p_imp_bins;
-    const theory::BlastParameters p{D, scene_.config.n, scene_.config.a, scene_.config.E, scene_.A_d};
-    const double width = theory::shock_radius(p, scene_.times[k]) / bins;
-    for (int b = 0; b < bins; ++b) record[layout_.p_imp(k, b)] = 0.0;
-    for (std::size_t m = 0; m < impurities_.size(); ++m) {
-      const double r = (engine_.position(impurities_[m]) - initial_position_[m]).norm();
-      const int b = static_cast<int>(r / width);
-      if (b < bins) record[layout_.p_imp(k, b)] += 1.0 / count;
-    }
+}
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::measure_p_imp(int k, std::vector<double>& record) const {
+  // Eq. (39) [eq:pr]: histogram of |r| in bins of width R(t)/bins, R(t) from Eq. (1).
+  const double count = static_cast<double>(impurities_.size());
+  const int bins = scene_.config.p_imp_bins;
+  const theory::BlastParameters p{D, scene_.config.n, scene_.config.a, scene_.config.E, scene_.A_d};
+  const double width = theory::shock_radius(p, scene_.times[k]) / bins;
+  for (int b = 0; b < bins; ++b) record[layout_.p_imp(k, b)] = 0.0;
+  for (std::size_t m = 0; m < impurities_.size(); ++m) {
+    const double r = (engine_.position(impurities_[m]) - initial_position_[m]).norm();
+    const int b = static_cast<int>(r / width);
+    if (b < bins) record[layout_.p_imp(k, b)] += 1.0 / count;
   }
 }
 
@@ -240,12 +270,9 @@ void BlastObserver<D, Queue>::measure_contact_shells(int k, std::vector<double>&
     }
   }
   const double count = static_cast<double>(impurities_.size());
-  const auto put = [&](const char* name, double value) {
-    if (const int entry = layout_.scalar(name, k); entry >= 0) record[entry] = value;
-  };
-  put("g_front", front / count);
-  put("g_back", back / count);
-  put("u_front", moving_with_hosts_ahead > 0 ? along / moving_with_hosts_ahead : 0.0);
+  put(record, Observable::g_front, k, front / count);
+  put(record, Observable::g_back, k, back / count);
+  put(record, Observable::u_front, k, moving_with_hosts_ahead > 0 ? along / moving_with_hosts_ahead : 0.0);
 }
 
 template ContactShell contact_shell(const Engine<2, HeapEventQueue>&, std::int32_t, double, double);

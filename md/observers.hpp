@@ -9,6 +9,7 @@
 
 #include "md/blast_config.hpp"
 #include "md/engine.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::md {
 
@@ -33,8 +34,9 @@ class ObservableLayout {
  public:
   explicit ObservableLayout(const ResolvedScene& scene);
   std::size_t size() const { return channel_.size(); }
-  /// Entry of scalar observable `name` at time index k, or -1 if the scene does not request it.
-  int scalar(const std::string& name, int k) const;
+  /// Entry of scalar observable `observable` at time index k, or -1 if the scene does not request
+  /// it; std::logic_error for an observable that is not an MD scalar or k out of range.
+  int scalar(theory::Observable observable, int k) const;
   /// Profile entries: quantity 0 density/n∞, 1 Σ v_r, 2 Σ m v², 3 particle count.
   int profile(int k, int bin, int quantity) const { return profile_base_ + (k * profile_bins_ + bin) * 4 + quantity; }
   int p_imp(int k, int bin) const { return p_imp_base_ + k * p_imp_bins_ + bin; }
@@ -48,7 +50,7 @@ class ObservableLayout {
   void add(const std::string& channel, int k, int bin);
   std::vector<std::string> channel_;
   std::vector<int> time_index_, bin_;
-  std::vector<std::vector<int>> scalar_;  // [observable][k]
+  std::vector<std::vector<int>> scalar_;  // [catalogue index][k]; empty for other than MD scalars
   int profile_base_ = -1, p_imp_base_ = -1, profile_bins_ = 0, p_imp_bins_ = 0;
 };
 
@@ -70,7 +72,24 @@ class BlastObserver {
   const ImpurityTrajectories<D>* trajectories() const { return trajectories_.get(); }
 
  private:
+  /// Sums over the impurities of the inner values of R_imp, V_imp, C_imp, C_re, dE_first, dE_re,
+  /// u_imp and u_flow.
+  struct ImpuritySums {
+    double r2 = 0.0, v2 = 0.0, collisions = 0.0, recollisions = 0.0, loss_first = 0.0, loss_re = 0.0, flow = 0.0,
+           flow_squared = 0.0;
+  };
   double radius_holding(const Vec<D>& centre, int others, std::int32_t exclude) const;
+  /// `value` into the record's entry of `observable` at time index k, if the scene records it.
+  void put(std::vector<double>& record, theory::Observable observable, int k, double value) const;
+  ImpuritySums impurity_sums() const;
+  /// Impurity m's terms of u_imp and u_flow (the particles within local_radius_[m] of it) into `sums`.
+  void add_local_flow(std::size_t m, ImpuritySums& sums) const;
+  /// n0 and T0 within core_radius_ at time index k.
+  void measure_core(int k, std::vector<double>& record) const;
+  /// The radial profiles in r/R (R the shock radius) at time index k.
+  void measure_profiles(int k, double R, std::vector<double>& record) const;
+  /// p_imp's histogram at time index k (Eq. (39)).
+  void measure_p_imp(int k, std::vector<double>& record) const;
   /// g_front, g_back, u_front at time index k (contact_shell of each impurity, averaged).
   void measure_contact_shells(int k, std::vector<double>& record) const;
   const ResolvedScene& scene_;

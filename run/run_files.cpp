@@ -82,18 +82,19 @@ std::vector<ObservableEstimate> estimate_observables(const BlastResult& result) 
   const long long N = totals.count;
   std::vector<ObservableEstimate> rows;
   for (std::size_t k = 0; k < scene.times.size(); ++k)
-    for (const std::string& name : md::scalar_observable_names()) {
-      const int e = layout.scalar(name, static_cast<int>(k));
+    for (const theory::ObservableInfo& o : theory::observable_catalogue()) {
+      if (!theory::is_md_scalar(o)) continue;
+      const int e = layout.scalar(o.id, static_cast<int>(k));
       if (e < 0) continue;
       const double mean = totals.sum[e] / N;
       double value = mean, error = totals.standard_error(e);
-      if (theory::observable_info(name).transform == theory::Transform::sqrt) {
+      if (o.transform == theory::Transform::sqrt) {
         // Eq. (38) (and u_flow): sqrt of the ensemble mean; delta method. u_flow's mean of
         // |ū|² − s²/N can be <= 0 when the flow is below the noise: reported as 0.
         value = mean > 0.0 ? theory::apply_transform(theory::Transform::sqrt, mean) : 0.0;
         error = value > 0.0 ? error / (2.0 * value) : std::nan("");
       }
-      rows.push_back({scene.times[k], name, value, error, N});
+      rows.push_back({scene.times[k], o.name, value, error, N});
     }
   return rows;
 }
@@ -180,10 +181,10 @@ void add_block_files(const BlastResult& result, const std::string& header, Named
   totals << header << block_totals_header << '\n';
   for (const auto& [b, s] : result.blocks) {
     for (std::size_t k = 0; k < scene.times.size(); ++k)
-      for (const std::string& name : md::scalar_observable_names()) {
-        const int e = layout.scalar(name, static_cast<int>(k));
+      for (const theory::ObservableInfo& o : theory::observable_catalogue()) {
+        const int e = theory::is_md_scalar(o) ? layout.scalar(o.id, static_cast<int>(k)) : -1;
         if (e >= 0)
-          out << b << ',' << format_number(scene.times[k]) << ',' << name << ',' << format_number(s.sum[e]) << ','
+          out << b << ',' << format_number(scene.times[k]) << ',' << o.name << ',' << format_number(s.sum[e]) << ','
               << s.count << '\n';
       }
     for (std::size_t e = 0; e < layout.size(); ++e)

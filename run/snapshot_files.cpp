@@ -58,15 +58,15 @@ md::RealizationExtras realization_extras(const md::ResolvedScene& scene, long lo
   md::RealizationExtras extras;
   if (std::find(c.snapshot_realizations.begin(), c.snapshot_realizations.end(), index) == c.snapshot_realizations.end())
     return extras;
-  if (scene.wants("snapshots")) extras.snapshot_times = scene.snapshot_times;
+  if (scene.wants(theory::Observable::snapshots)) extras.snapshot_times = scene.snapshot_times;
   extras.selection = {c.snapshot_particles == "front", c.snapshot_margin * 2.0 * c.a, c.snapshot_stride};
-  extras.paths = scene.wants("trajectories");
+  extras.paths = scene.wants(theory::Observable::trajectories);
   return extras;
 }
 
 double snapshot_bytes_estimate(const md::ResolvedScene& scene) {
   const md::BlastConfig& c = scene.config;
-  if (!scene.wants("snapshots")) return 0.0;
+  if (!scene.wants(theory::Observable::snapshots)) return 0.0;
   const theory::BlastParameters blast{c.d, c.n, c.a, c.E, scene.A_d};
   double particles = 0.0;
   for (const double t : scene.snapshot_times) {
