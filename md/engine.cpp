@@ -64,47 +64,63 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       sigma_[s][r] = radius_[s] + radius_[r];
       sigma2_[s][r] = sigma_[s][r] * sigma_[s][r];
     }
-  if (!config.impurity_recollisions) {
-    ghosts_ = true;
-    ghost_mask_.assign(state.size(), 0);
-    own_bit_.assign(state.size(), 0);
-    int bit = 0;
-    for (std::size_t k = 0; k < state.size(); ++k) {
-      if (species_[k] != impurity_species) continue;
-      if (bit == 64)
-        throw std::invalid_argument(
-            "impurity recollisions switched off (impurities.recollide = false) with more than 64 impurities: "
-            "allowed 1 to 64");
-      own_bit_[k] = std::uint64_t{1} << bit++;
-    }
-  }
-  if (!config.periodic) {
-    // Positions are checked at every event of a moving particle, and a particle has an event at
-    // least once per cell it crosses, so checking |x| against guard_radius minus one cell diagonal
-    // (of the cell widened by its margin) keeps every moving particle inside guard_radius (and its
-    // neighbour cells inside the grid).
-    double diagonal = 0.0;
-    for (int k = 0; k < D; ++k) diagonal += std::pow(cells_.width(k) + 2.0 * cells_.margin(), 2);
-    const double trigger = std::max(0.0, config.guard_radius - std::sqrt(diagonal));
-    guard_trigger2_ = trigger * trigger;
-  }
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    Particle<D>& p = particles_[i];
-    p.position = state.position[i];
-    p.velocity = state.velocity[i];
-    if (config.periodic)
-      for (int k = 0; k < D; ++k)
-        if (!(p.position[k] >= 0.0 && p.position[k] < config.box[k]))
-          throw std::invalid_argument("initial position outside the periodic box");
-    p.cell = cells_.cell_of(p.position);
-    cells_.insert(static_cast<std::int32_t>(i), p.cell);
-  }
+  if (!config.impurity_recollisions) assign_impurity_bits();
+  if (!config.periodic) set_guard_trigger();
+  place_particles(state);
   const int big_reach = plan_cells<D>(cell_demand(config, state)).big_reach;
   if (big_reach != 0) {
     big_ = BigParticles<D>(cells_, big_reach);
     for (std::size_t i = 0; i < state.size(); ++i)
       if (species_[i] != host_species) big_.add(static_cast<std::int32_t>(i), particles_[i].cell);
   }
+  start_initial_motion(state);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::assign_impurity_bits() {
+  ghosts_ = true;
+  ghost_mask_.assign(particles_.size(), 0);
+  own_bit_.assign(particles_.size(), 0);
+  int bit = 0;
+  for (std::size_t k = 0; k < particles_.size(); ++k) {
+    if (species_[k] != impurity_species) continue;
+    if (bit == 64)
+      throw std::invalid_argument(
+          "impurity recollisions switched off (impurities.recollide = false) with more than 64 impurities: "
+          "allowed 1 to 64");
+    own_bit_[k] = std::uint64_t{1} << bit++;
+  }
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::set_guard_trigger() {
+  // Positions are checked at every event of a moving particle, and a particle has an event at
+  // least once per cell it crosses, so checking |x| against guard_radius minus one cell diagonal
+  // (of the cell widened by its margin) keeps every moving particle inside guard_radius (and its
+  // neighbour cells inside the grid).
+  double diagonal = 0.0;
+  for (int k = 0; k < D; ++k) diagonal += std::pow(cells_.width(k) + 2.0 * cells_.margin(), 2);
+  const double trigger = std::max(0.0, config_.guard_radius - std::sqrt(diagonal));
+  guard_trigger2_ = trigger * trigger;
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::place_particles(const InitialState<D>& state) {
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    Particle<D>& p = particles_[i];
+    p.position = state.position[i];
+    p.velocity = state.velocity[i];
+    if (config_.periodic)
+      for (int k = 0; k < D; ++k)
+        if (!(p.position[k] >= 0.0 && p.position[k] < config_.box[k]))
+          throw std::invalid_argument("initial position outside the periodic box");
+    p.cell = cells_.cell_of(p.position);
+    cells_.insert(static_cast<std::int32_t>(i), p.cell);
+  }
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::start_initial_motion(const InitialState<D>& state) {
   std::size_t initially_moving = 0;
   for (const Vec<D>& v : state.velocity) initially_moving += v.squaredNorm() > 0.0;
   moving_.reserve(initially_moving);  // exact in equilibrium (all move); the blast grows it
