@@ -50,6 +50,74 @@ EarliestContact earliest_lane(const double* times, const double* indices, double
   }
   return result;
 }
+
+// One position, velocity and time per lane.
+struct Lanes {
+  __m256d x, y, z, vx, vy, vz, t;
+};
+
+// The same particle state in every lane.
+__attribute__((target("avx2"), always_inline)) inline Lanes broadcast(const Vec<3>& position, const Vec<3>& velocity,
+                                                                      double time) {
+  return {_mm256_set1_pd(position[0]), _mm256_set1_pd(position[1]), _mm256_set1_pd(position[2]),
+          _mm256_set1_pd(velocity[0]), _mm256_set1_pd(velocity[1]), _mm256_set1_pd(velocity[2]),
+          _mm256_set1_pd(time)};
+}
+
+// Candidates ids[0..3], one per lane: each particle's two 32-byte halves, x y z vx | vy vz time
+// (collisions, cell), transposed.
+__attribute__((target("avx2"), always_inline)) inline Lanes load_candidates(const Particle<3>* particles,
+                                                                            const std::int32_t* ids) {
+  const double* a = reinterpret_cast<const double*>(particles + ids[0]);
+  const double* b = reinterpret_cast<const double*>(particles + ids[1]);
+  const double* c = reinterpret_cast<const double*>(particles + ids[2]);
+  const double* d = reinterpret_cast<const double*>(particles + ids[3]);
+  Lanes q;
+  __m256d unused;
+  transpose4(_mm256_load_pd(a), _mm256_load_pd(b), _mm256_load_pd(c), _mm256_load_pd(d), q.x, q.y, q.z, q.vx);
+  transpose4(_mm256_load_pd(a + 4), _mm256_load_pd(b + 4), _mm256_load_pd(c + 4), _mm256_load_pd(d + 4), q.vy, q.vz,
+             q.t, unused);
+  (void)unused;
+  return q;
+}
+
+// Per lane, the contact time (at distance sqrt(sigma2)) of `own` with candidate q, shifted by
+// shifts[k..k+3] when the shifts are given, and in `meets` whether they meet: approaching (dr.dv < 0)
+// with a real root. The arithmetic is the scalar kernel's, in its order.
+__attribute__((target("avx2"), always_inline)) inline __m256d contact_time(const Lanes& own, const Lanes& q,
+                                                                           const CandidateShifts& shifts, int k,
+                                                                           __m256d sigma2, __m256d& meets) {
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d sign = _mm256_set1_pd(-0.0);
+  // reference = max(time, q.time); own = position + velocity (reference - time)
+  const __m256d reference = _mm256_max_pd(own.t, q.t);
+  const __m256d own_dt = _mm256_sub_pd(reference, own.t);
+  const __m256d q_dt = _mm256_sub_pd(reference, q.t);
+  // dr = (q.position + q.velocity (reference - q.time) - own) [+ shift]
+  __m256d dx =
+      _mm256_sub_pd(_mm256_add_pd(q.x, _mm256_mul_pd(q.vx, q_dt)), _mm256_add_pd(own.x, _mm256_mul_pd(own.vx, own_dt)));
+  __m256d dy =
+      _mm256_sub_pd(_mm256_add_pd(q.y, _mm256_mul_pd(q.vy, q_dt)), _mm256_add_pd(own.y, _mm256_mul_pd(own.vy, own_dt)));
+  __m256d dz =
+      _mm256_sub_pd(_mm256_add_pd(q.z, _mm256_mul_pd(q.vz, q_dt)), _mm256_add_pd(own.z, _mm256_mul_pd(own.vz, own_dt)));
+  if (shifts.x != nullptr) {
+    dx = _mm256_add_pd(dx, _mm256_loadu_pd(shifts.x + k));
+    dy = _mm256_add_pd(dy, _mm256_loadu_pd(shifts.y + k));
+    dz = _mm256_add_pd(dz, _mm256_loadu_pd(shifts.z + k));
+  }
+  const __m256d ux = _mm256_sub_pd(q.vx, own.vx), uy = _mm256_sub_pd(q.vy, own.vy), uz = _mm256_sub_pd(q.vz, own.vz);
+  // b = dr.dv, v2 = |dv|^2, c = |dr|^2 - sigma2, summed as Eigen sums a 3-vector: (0 + 1) + 2
+  const __m256d bb = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, ux), _mm256_mul_pd(dy, uy)), _mm256_mul_pd(dz, uz));
+  const __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ux, ux), _mm256_mul_pd(uy, uy)), _mm256_mul_pd(uz, uz));
+  const __m256d cc = _mm256_sub_pd(
+      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)), sigma2);
+  const __m256d disc = _mm256_sub_pd(_mm256_mul_pd(bb, bb), _mm256_mul_pd(v2, cc));
+  // max(x, 0) as maxsd(x, 0): NaN and -0 give 0, as in the scalar kernel
+  const __m256d root = _mm256_sqrt_pd(_mm256_max_pd(disc, zero));
+  const __m256d tau = _mm256_div_pd(cc, _mm256_add_pd(_mm256_xor_pd(bb, sign), root));
+  meets = _mm256_and_pd(_mm256_cmp_pd(bb, zero, _CMP_LT_OQ), _mm256_cmp_pd(disc, zero, _CMP_GE_OQ));
+  return _mm256_add_pd(reference, _mm256_max_pd(tau, zero));
+}
 }  // namespace
 
 __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<3>* particles, const std::int32_t* ids,
@@ -57,11 +125,7 @@ __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<
                                                                  const Vec<3>& position, const Vec<3>& velocity,
                                                                  double time, double sigma2, double before) {
   if (count % 4 != 0) throw std::invalid_argument("earliest_contact: count is not a multiple of 4");
-  const __m256d zero = _mm256_setzero_pd();
-  const __m256d sign = _mm256_set1_pd(-0.0);
-  const __m256d own_time = _mm256_set1_pd(time);
-  const __m256d px = _mm256_set1_pd(position[0]), py = _mm256_set1_pd(position[1]), pz = _mm256_set1_pd(position[2]);
-  const __m256d vx = _mm256_set1_pd(velocity[0]), vy = _mm256_set1_pd(velocity[1]), vz = _mm256_set1_pd(velocity[2]);
+  const Lanes own = broadcast(position, velocity, time);
   const __m256d s2 = _mm256_set1_pd(sigma2);
   // Per lane: the earliest time so far (strictly earlier replaces: the first candidate wins ties)
   // and the candidate index that gave it.
@@ -70,47 +134,9 @@ __attribute__((target("avx2"))) EarliestContact earliest_contact(const Particle<
   __m256d index = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
   const __m256d four = _mm256_set1_pd(4.0);
   for (int k = 0; k < count; k += 4) {
-    const double* a = reinterpret_cast<const double*>(particles + ids[k]);
-    const double* b = reinterpret_cast<const double*>(particles + ids[k + 1]);
-    const double* c = reinterpret_cast<const double*>(particles + ids[k + 2]);
-    const double* d = reinterpret_cast<const double*>(particles + ids[k + 3]);
-    __m256d qx, qy, qz, qvx, qvy, qvz, qt, unused;
-    transpose4(_mm256_load_pd(a), _mm256_load_pd(b), _mm256_load_pd(c), _mm256_load_pd(d), qx, qy, qz, qvx);
-    transpose4(_mm256_load_pd(a + 4), _mm256_load_pd(b + 4), _mm256_load_pd(c + 4), _mm256_load_pd(d + 4), qvy, qvz, qt,
-               unused);
-    (void)unused;
-    // reference = max(time, q.time); own = position + velocity (reference - time)
-    const __m256d reference = _mm256_max_pd(own_time, qt);
-    const __m256d own_dt = _mm256_sub_pd(reference, own_time);
-    const __m256d q_dt = _mm256_sub_pd(reference, qt);
-    // dr = (q.position + q.velocity (reference - q.time) - own) [+ shift]
-    __m256d dx =
-        _mm256_sub_pd(_mm256_add_pd(qx, _mm256_mul_pd(qvx, q_dt)), _mm256_add_pd(px, _mm256_mul_pd(vx, own_dt)));
-    __m256d dy =
-        _mm256_sub_pd(_mm256_add_pd(qy, _mm256_mul_pd(qvy, q_dt)), _mm256_add_pd(py, _mm256_mul_pd(vy, own_dt)));
-    __m256d dz =
-        _mm256_sub_pd(_mm256_add_pd(qz, _mm256_mul_pd(qvz, q_dt)), _mm256_add_pd(pz, _mm256_mul_pd(vz, own_dt)));
-    if (shifts.x != nullptr) {
-      dx = _mm256_add_pd(dx, _mm256_loadu_pd(shifts.x + k));
-      dy = _mm256_add_pd(dy, _mm256_loadu_pd(shifts.y + k));
-      dz = _mm256_add_pd(dz, _mm256_loadu_pd(shifts.z + k));
-    }
-    const __m256d ux = _mm256_sub_pd(qvx, vx), uy = _mm256_sub_pd(qvy, vy), uz = _mm256_sub_pd(qvz, vz);
-    // b = dr.dv, v2 = |dv|^2, c = |dr|^2 - sigma2, summed as Eigen sums a 3-vector: (0 + 1) + 2
-    const __m256d bb =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, ux), _mm256_mul_pd(dy, uy)), _mm256_mul_pd(dz, uz));
-    const __m256d v2 =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ux, ux), _mm256_mul_pd(uy, uy)), _mm256_mul_pd(uz, uz));
-    const __m256d cc = _mm256_sub_pd(
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)), s2);
-    const __m256d disc = _mm256_sub_pd(_mm256_mul_pd(bb, bb), _mm256_mul_pd(v2, cc));
-    // max(x, 0) as maxsd(x, 0): NaN and -0 give 0, as in the scalar kernel
-    const __m256d root = _mm256_sqrt_pd(_mm256_max_pd(disc, zero));
-    const __m256d tau = _mm256_div_pd(cc, _mm256_add_pd(_mm256_xor_pd(bb, sign), root));
-    const __m256d t = _mm256_add_pd(reference, _mm256_max_pd(tau, zero));
-    const __m256d hit =
-        _mm256_and_pd(_mm256_and_pd(_mm256_cmp_pd(bb, zero, _CMP_LT_OQ), _mm256_cmp_pd(disc, zero, _CMP_GE_OQ)),
-                      _mm256_cmp_pd(t, lane_best, _CMP_LT_OQ));
+    __m256d meets;
+    const __m256d t = contact_time(own, load_candidates(particles, ids + k), shifts, k, s2, meets);
+    const __m256d hit = _mm256_and_pd(meets, _mm256_cmp_pd(t, lane_best, _CMP_LT_OQ));
     lane_best = _mm256_blendv_pd(lane_best, t, hit);
     lane_index = _mm256_blendv_pd(lane_index, index, hit);
     index = _mm256_add_pd(index, four);
