@@ -279,6 +279,49 @@ void fill_by_voxels(std::mt19937_64& rng, std::size_t count, double radius, doub
   report.voxel_levels = voxels.level();
 }
 
+/// Puts every host into `grid` and returns, in index order, those that overlap an impurity (centre
+/// distance below a + r_imp).
+template <int D>
+std::vector<std::int32_t> grid_hosts(const InitialState<D>& state, const std::vector<std::int32_t>& impurities,
+                                     PlacementGrid<D>& grid) {
+  const double contact = state.host.radius + state.impurity.radius;
+  std::vector<std::int32_t> displaced;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    if (state.species[i] == impurity_species) continue;
+    const std::int32_t id = static_cast<std::int32_t>(i);
+    grid.insert(id, state.position[i]);
+    for (const std::int32_t k : impurities)
+      if ((state.position[k] - state.position[i]).squaredNorm() < contact * contact) {
+        displaced.push_back(id);
+        break;
+      }
+  }
+  return displaced;
+}
+
+/// Moves the displaced hosts, in order, each to the first of its uniform trial points in the region
+/// that is `free`; stops at the first host whose trials fail rsa_voxel_switch_default times in a row
+/// (it stays where it was, out of the grid). Returns how many were moved.
+template <int D, class Free>
+std::size_t replace_by_trials(std::mt19937_64& rng, InitialState<D>& state, const std::vector<std::int32_t>& displaced,
+                              PlacementGrid<D>& grid, const Free& free, double region_radius, std::uint64_t& trials) {
+  std::size_t next = 0;
+  for (; next < displaced.size(); ++next) {
+    const std::int32_t id = displaced[next];
+    grid.erase(id, state.position[id]);
+    std::uint64_t failures = 0;
+    Vec<D> x;
+    do {
+      if ((++trials & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
+      x = uniform_in_ball<D>(rng, region_radius);
+    } while (!free(x) && ++failures < rsa_voxel_switch_default);
+    if (failures == rsa_voxel_switch_default) break;
+    state.position[id] = x;
+    grid.insert(id, x);
+  }
+  return next;
+}
+
 /// The host particles that overlap an impurity (larger than the host) move to random free places
 /// beyond the impurities, |x| >= r_in = (farthest impurity centre) + a + r_imp, one after another,
 /// by plain trials; if one host's trials fail rsa_voxel_switch_default times in a row, the hosts
@@ -302,17 +345,7 @@ KickReport replace_displaced_hosts(std::mt19937_64& rng, InitialState<D>& state,
   report.inner_radius = r_in;
   PlacementGrid<D> grid(region_radius, placement_grid_width<D>(n, a, region_radius), n);
   grid.reach_distance = 2.0 * a;
-  std::vector<std::int32_t> displaced;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (state.species[i] == impurity_species) continue;
-    const std::int32_t id = static_cast<std::int32_t>(i);
-    grid.insert(id, state.position[i]);
-    for (const std::int32_t k : impurities)
-      if ((state.position[k] - state.position[i]).squaredNorm() < (a + r_imp) * (a + r_imp)) {
-        displaced.push_back(id);
-        break;
-      }
-  }
+  const std::vector<std::int32_t> displaced = grid_hosts(state, impurities, grid);
   report.displaced = displaced.size();
   const auto host_radius = [a](std::int32_t) { return a; };
   const auto free = [&](const Vec<D>& x) {
@@ -320,20 +353,7 @@ KickReport replace_displaced_hosts(std::mt19937_64& rng, InitialState<D>& state,
            !grid.overlaps(x, a, state.position, host_radius);
   };
   std::uint64_t trials = 0;
-  std::size_t next = 0;
-  for (; next < displaced.size(); ++next) {  // plain trials
-    const std::int32_t id = displaced[next];
-    grid.erase(id, state.position[id]);
-    std::uint64_t failures = 0;
-    Vec<D> x;
-    do {
-      if ((++trials & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
-      x = uniform_in_ball<D>(rng, region_radius);
-    } while (!free(x) && ++failures < rsa_voxel_switch_default);
-    if (failures == rsa_voxel_switch_default) break;
-    state.position[id] = x;
-    grid.insert(id, x);
-  }
+  const std::size_t next = replace_by_trials(rng, state, displaced, grid, free, region_radius, trials);
   if (next == displaced.size()) return report;
   // Hosts still to move (all inside r_in) must not exclude voxels: lift them out first.
   for (std::size_t m = next + 1; m < displaced.size(); ++m) grid.erase(displaced[m], state.position[displaced[m]]);
