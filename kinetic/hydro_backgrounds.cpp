@@ -1,5 +1,6 @@
 #include "kinetic/hydro_backgrounds.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -13,7 +14,6 @@ namespace coldblast::kinetic {
 using common::format_number;
 
 namespace {
-
 /// The frames of a hot-spot background, at times t from the deposition: frames_per_decade per decade
 /// of the self-similar radius (∝ t^(2/(d+2))), from half a frame before `first_time` (the tracer's
 /// start) to just below `t_end`.
@@ -24,6 +24,40 @@ std::vector<double> hot_spot_frame_times(int d, double first_time, double t_end,
   return times;
 }
 
+/// The Navier–Stokes run of the scene's gas: dilute, or (contact.enskog) the dense gas of issue 12,
+/// hard-particle EOS at the scene's φ with Enskog transport.
+hydro::NavierStokesConfig navier_stokes_config(const md::BlastConfig& scene, const ContactModel& contact, int cells) {
+  hydro::NavierStokesConfig ns;
+  ns.physics.d = scene.d;
+  ns.physics.E = scene.E;
+  ns.physics.n_inf = scene.n;
+  ns.physics.a = scene.a;
+  ns.numerics.cells = cells;
+  if (contact.enskog) {
+    ns.physics.eos = scene.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    ns.physics.phi = theory::packing_fraction(scene.d, scene.n, scene.a);
+    ns.physics.transport = hydro::Transport::enskog;
+  }
+  return ns;
+}
+
+/// The solution's profiles as background frames in time order, each on the self-similar grid x = r/R
+/// (returned in `x`; std::runtime_error when the profiles do not share it).
+std::vector<BackgroundFrame> self_similar_frames(const hydro::NavierStokesResult& solution, std::vector<double>& x) {
+  std::vector<BackgroundFrame> frames;
+  for (const hydro::NavierStokesProfile& profile : solution.profiles) {
+    const double scale = profile.r.back();
+    std::vector<double> xi(profile.r.size());
+    for (std::size_t i = 0; i < xi.size(); ++i) xi[i] = profile.r[i] / scale;
+    if (x.empty()) x = xi;
+    for (std::size_t i = 0; i < xi.size(); ++i)
+      if (std::abs(xi[i] - x[i]) > 1e-9)
+        throw std::runtime_error("Navier–Stokes profiles are not on one self-similar grid");
+    frames.push_back({profile.t, scale, profile.density, profile.velocity, profile.temperature});
+  }
+  std::sort(frames.begin(), frames.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+  return frames;
+}
 }  // namespace
 
 std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastConfig& scene, const ContactModel& contact,
@@ -31,17 +65,7 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
                                                               std::string* description,
                                                               const std::function<void(double)>& progress,
                                                               double hot_spot_radius, double first_time) {
-  hydro::NavierStokesConfig ns;
-  ns.physics.d = scene.d;
-  ns.physics.E = scene.E;
-  ns.physics.n_inf = scene.n;
-  ns.physics.a = scene.a;
-  ns.numerics.cells = cells;
-  if (contact.enskog) {  // the dense gas of issue 12: hard-particle EOS at the scene's φ, Enskog transport
-    ns.physics.eos = scene.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
-    ns.physics.phi = theory::packing_fraction(scene.d, scene.n, scene.a);
-    ns.physics.transport = hydro::Transport::enskog;
-  }
+  hydro::NavierStokesConfig ns = navier_stokes_config(scene, contact, cells);
   const double lambda = theory::mean_free_path(scene.d, scene.n, scene.a);
   const bool hot_spot = hot_spot_radius > 0.0;  // the MD's hot spot; times from the deposition
   if (hot_spot) ns.physics.start = hydro::Start::hotspot, ns.physics.r0_over_lambda = hot_spot_radius / lambda;
@@ -75,18 +99,7 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   const hydro::NavierStokesResult solution = hydro::run_navier_stokes(ns, sample_progress);
 
   std::vector<double> x;
-  std::vector<BackgroundFrame> frames;
-  for (const hydro::NavierStokesProfile& profile : solution.profiles) {
-    const double scale = profile.r.back();
-    std::vector<double> xi(profile.r.size());
-    for (std::size_t i = 0; i < xi.size(); ++i) xi[i] = profile.r[i] / scale;
-    if (x.empty()) x = xi;
-    for (std::size_t i = 0; i < xi.size(); ++i)
-      if (std::abs(xi[i] - x[i]) > 1e-9)
-        throw std::runtime_error("Navier–Stokes profiles are not on one self-similar grid");
-    frames.push_back({profile.t, scale, profile.density, profile.velocity, profile.temperature});
-  }
-  std::sort(frames.begin(), frames.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+  std::vector<BackgroundFrame> frames = self_similar_frames(solution, x);
   if (frames.back().t < scene.t_max)
     throw std::runtime_error("the Navier–Stokes background ends at t = " + format_number(frames.back().t) +
                              " before t_max = " + format_number(scene.t_max));

@@ -68,6 +68,31 @@ void binary_collision(const md::Vec<D>& e, md::Vec<D>& v, md::Vec<D>& w, double 
   md::collide<D>(e, v, w, M, 1.0);  // dr = r_host − r_impurity ∥ e
 }
 
+namespace {
+[[noreturn, gnu::cold, gnu::noinline]] void majorant_violated(double t, double radius, double rate, double majorant) {
+  throw std::runtime_error("null-collision majorant violated at t = " + common::format_number(t) +
+                           ", r = " + common::format_number(radius) + ": rate " + common::format_number(rate) + " > " +
+                           common::format_number(majorant));
+}
+
+/// The last two steps of the thinning for a candidate the dominating rate accepted (host flow u,
+/// |v − u| and c̄(T) given): the partner's thermal velocity c from the mixture, accepted with
+/// probability |v − u − c|/(|v − u| + |c|); then the binary collision changes v. Returns whether the
+/// impurity collided.
+template <int D>
+inline bool collide_with_host(const md::Vec<D>& u, double relative_speed, double mean_speed, double T, double M,
+                              md::Vec<D>& v, Random& rng) {
+  const md::Vec<D> c = mixture_velocity<D>(relative_speed, mean_speed, T, rng);
+  md::Vec<D> w = u + c;
+  const md::Vec<D> g = v - w;
+  const double g_norm = g.norm();
+  if (rng.uniform() * (relative_speed + c.norm()) >= g_norm) return false;
+  const md::Vec<D> e = sample_impact_direction<D>(g / g_norm, rng);
+  binary_collision<D>(e, v, w, M);
+  return true;
+}
+}  // namespace
+
 template <int D>
 void advance(const Background& background, const ImpurityModel& impurity, TracerState<D>& s, double t_target,
              Random& rng, TracerCounters& counters) {
@@ -110,18 +135,9 @@ void advance(const Background& background, const ImpurityModel& impurity, Tracer
     const double relative_speed = (s.v - u).norm();
     const double mean_speed = host_mean_speed(D, h.T);
     const double dominating = S * h.n * h.chi * (relative_speed + mean_speed);
-    if (dominating > majorant * (1.0 + 1e-12))
-      throw std::runtime_error("null-collision majorant violated at t = " + common::format_number(s.t) +
-                               ", r = " + common::format_number(radius) + ": rate " +
-                               common::format_number(dominating) + " > " + common::format_number(majorant));
+    if (dominating > majorant * (1.0 + 1e-12)) majorant_violated(s.t, radius, dominating, majorant);
     if (rng.uniform() * majorant >= dominating) continue;
-    const md::Vec<D> c = mixture_velocity<D>(relative_speed, mean_speed, h.T, rng);
-    md::Vec<D> w = u + c;
-    const md::Vec<D> g = s.v - w;
-    const double g_norm = g.norm();
-    if (rng.uniform() * (relative_speed + c.norm()) >= g_norm) continue;
-    const md::Vec<D> e = sample_impact_direction<D>(g / g_norm, rng);
-    binary_collision<D>(e, s.v, w, impurity.M);
+    if (!collide_with_host<D>(u, relative_speed, mean_speed, h.T, impurity.M, s.v, rng)) continue;
     ++s.collisions;
     ++counters.collisions;
     if (!reuse_segment(segment, S, s, radius, t_target)) {
