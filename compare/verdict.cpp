@@ -175,17 +175,22 @@ std::string verdict_summary(const CompareResult& result) {
 }
 
 std::vector<std::string> default_observables(const RunData& run, Reference against, std::vector<std::string>& notes) {
+  // Table 1's rows in its column order, then (not against the paper, which has only those) the other
+  // judged observables in catalogue order: u_flow.
   std::vector<std::string> names;
   for (const auto& name : table1_observables())
-    if (run.series.count(name) && (name != "u_imp" || against == Reference::paper)) names.push_back(name);
+    if (run.series.count(name) &&
+        (against == Reference::paper || !theory::is_paper_only(theory::observable_info(name))))
+      names.push_back(name);
   if (against == Reference::paper) return names;
-  // The flow speed: u_flow removes the thermal noise that biases u_imp's exponent toward -0.3
-  // (docs/verification.md, "the u_imp deviation is a bias of the estimator"), so only u_flow is judged.
-  if (run.series.count("u_flow")) names.push_back("u_flow");
-  if (run.series.count("u_imp"))
-    notes.push_back(std::string("u_imp is not judged against ") + to_string(against) +
-                    ": its thermal noise biases the exponent (docs/verification.md); the flow speed is judged by " +
-                    (run.series.count("u_flow") ? "u_flow" : "u_flow, which this run did not record"));
+  for (const theory::ObservableInfo& o : theory::observable_catalogue())
+    if (o.verdict && o.table1_row < 0 && run.series.count(o.name)) names.push_back(o.name);
+  for (const theory::ObservableInfo& o : theory::observable_catalogue())
+    if (theory::is_paper_only(o) && run.series.count(o.name)) {
+      const std::string instead = o.judged_instead;
+      notes.push_back(std::string(o.name) + " is not judged against " + to_string(against) + ": " + o.paper_only_note +
+                      " " + (run.series.count(instead) ? instead : instead + ", which this run did not record"));
+    }
   return names;
 }
 

@@ -10,6 +10,7 @@
 
 #include "common/input.hpp"
 #include "common/validate.hpp"
+#include "theory/observables.hpp"
 
 namespace coldblast::run {
 
@@ -19,7 +20,25 @@ using common::require_integer_in_range;
 using md::BlastConfig;
 using md::ImpurityConfig;
 
-const std::string default_scene = R"(# Embedded default scene: a small 2D blast (a few seconds on one core).
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+/// A TOML array of strings: ["a", "b"].
+std::string string_array(const std::vector<std::string>& items) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + quoted(items[i]);
+  return out + "]";
+}
+
+/// The embedded default scene; its observables are the catalogue's (theory::is_default_scene_observable).
+std::string make_default_scene() {
+  return R"(# Embedded default scene: a small 2D blast (a few seconds on one core).
 name = "default"
 d = 2
 n = 0.15
@@ -31,7 +50,8 @@ t_max = 200.0
 realizations = 32
 seed = 1
 block_size = 16
-observables = ["R_imp", "V_imp", "C_imp", "u_imp", "u_flow", "n0", "T0", "R"]
+observables = )" +
+         string_array(theory::observable_names(theory::is_default_scene_observable)) + R"(
 box_margin = 3.0     # small blasts run ahead of Eq. (1) early on (docs/md-output.md)
 
 [impurities]
@@ -39,6 +59,7 @@ count = 4
 mass = 1.0
 radius = 0.0         # 0: the host radius a
 )";
+}
 
 double number(const toml::node& node, const std::string& key) {
   // + 0.0 turns -0.0 into +0.0: -0 would be written back by to_toml() as the integer -0, which reads
@@ -111,78 +132,107 @@ void apply_start(const toml::table& table, md::StartConfig& start) {
   }
 }
 
+/// The scene's physics keys (false: `key` is not one of them).
+bool apply_physics_key(const std::string& key, const toml::node& node, BlastConfig& c) {
+  if (key == "name")
+    c.name = text(node, key);
+  else if (key == "d")
+    c.d = static_cast<int>(std::clamp<long long>(integer(node, key), -1000, 1000));
+  else if (key == "n")
+    c.n = number(node, key);
+  else if (key == "a")
+    c.a = number(node, key);
+  else if (key == "E")
+    c.E = number(node, key);
+  else if (key == "A_d")
+    c.A_d = number(node, key);
+  else if (key == "t_min")
+    c.t_min = number(node, key);
+  else if (key == "t_max")
+    c.t_max = number(node, key);
+  else
+    return false;
+  return true;
+}
+
+/// The ensemble's, the engine's and the snapshots' scalar keys (false: `key` is not one of them).
+bool apply_run_key(const std::string& key, const toml::node& node, BlastConfig& c) {
+  if (key == "realizations") {
+    c.realizations = integer(node, key);
+  } else if (key == "seed") {
+    const long long s = integer(node, key);
+    require_integer_in_range("seed", s, 0, std::numeric_limits<long long>::max());
+    c.seed = static_cast<std::uint64_t>(s);
+  } else if (key == "block_size") {
+    c.block_size = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
+  } else if (key == "box_margin") {
+    c.box_margin = number(node, key);
+  } else if (key == "cell_width") {
+    c.cell_width = number(node, key);
+  } else if (key == "queue") {
+    c.queue = text(node, key);
+  } else if (key == "profile_bins") {
+    c.profile_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+  } else if (key == "p_imp_bins") {
+    c.p_imp_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+  } else if (key == "overlap_check") {
+    c.overlap_check = boolean(node, key);
+  } else if (key == "snapshot_particles") {
+    c.snapshot_particles = text(node, key);
+  } else if (key == "snapshot_margin") {
+    c.snapshot_margin = number(node, key);
+  } else if (key == "snapshot_stride") {
+    c.snapshot_stride = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+/// The array keys (false: `key` is not one of them).
+bool apply_list_key(const std::string& key, const toml::node& node, BlastConfig& c) {
+  if (key != "observables" && key != "snapshot_times" && key != "snapshot_fractions" && key != "snapshot_realizations")
+    return false;
+  const toml::array* array = node.as_array();
+  if (!array) throw std::invalid_argument("scene key " + key + " must be an array");
+  if (key == "observables") {
+    c.observables.clear();
+    for (auto&& item : *array) c.observables.push_back(text(item, key));
+  } else if (key == "snapshot_realizations") {
+    c.snapshot_realizations.clear();
+    for (auto&& item : *array) c.snapshot_realizations.push_back(integer(item, key));
+  } else {
+    std::vector<double>& list = key == "snapshot_times" ? c.snapshot_times : c.snapshot_fractions;
+    list.clear();
+    for (auto&& item : *array) list.push_back(number(item, key));
+  }
+  return true;
+}
+
+/// The tables [impurities], [start] and [hydro] (false: `key` is not one of them).
+bool apply_section(const std::string& key, const toml::node& node, BlastConfig& c) {
+  if (key == "impurities") {
+    if (!node.is_table()) throw std::invalid_argument("scene key impurities must be a table");
+    apply_impurities(*node.as_table(), c.impurities);
+  } else if (key == "start") {
+    if (!node.is_table()) throw std::invalid_argument("scene key start must be a table ([start])");
+    apply_start(*node.as_table(), c.start);
+  } else if (key == "hydro") {
+    // The continuum model of `hydro core|euler --config` and `compare --hydro-config`
+    // (hydro::read_hydro_model_keys, docs/hydro.md); not part of the MD.
+    if (!node.is_table()) throw std::invalid_argument("scene key hydro must be a table ([hydro])");
+  } else {
+    return false;
+  }
+  return true;
+}
+
 BlastConfig config_from_table(const toml::table& table) {
   BlastConfig c;
   for (auto&& [key_view, node] : table) {
     const std::string key(key_view.str());
-    if (key == "name")
-      c.name = text(node, key);
-    else if (key == "d")
-      c.d = static_cast<int>(std::clamp<long long>(integer(node, key), -1000, 1000));
-    else if (key == "n")
-      c.n = number(node, key);
-    else if (key == "a")
-      c.a = number(node, key);
-    else if (key == "E")
-      c.E = number(node, key);
-    else if (key == "A_d")
-      c.A_d = number(node, key);
-    else if (key == "t_min")
-      c.t_min = number(node, key);
-    else if (key == "t_max")
-      c.t_max = number(node, key);
-    else if (key == "realizations")
-      c.realizations = integer(node, key);
-    else if (key == "seed") {
-      const long long s = integer(node, key);
-      require_integer_in_range("seed", s, 0, std::numeric_limits<long long>::max());
-      c.seed = static_cast<std::uint64_t>(s);
-    } else if (key == "block_size")
-      c.block_size = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
-    else if (key == "box_margin")
-      c.box_margin = number(node, key);
-    else if (key == "cell_width")
-      c.cell_width = number(node, key);
-    else if (key == "queue")
-      c.queue = text(node, key);
-    else if (key == "profile_bins")
-      c.profile_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
-    else if (key == "p_imp_bins")
-      c.p_imp_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
-    else if (key == "overlap_check")
-      c.overlap_check = boolean(node, key);
-    else if (key == "snapshot_particles")
-      c.snapshot_particles = text(node, key);
-    else if (key == "snapshot_margin")
-      c.snapshot_margin = number(node, key);
-    else if (key == "snapshot_stride")
-      c.snapshot_stride = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
-    else if (key == "observables" || key == "snapshot_times" || key == "snapshot_fractions" ||
-             key == "snapshot_realizations") {
-      const toml::array* array = node.as_array();
-      if (!array) throw std::invalid_argument("scene key " + key + " must be an array");
-      if (key == "observables") {
-        c.observables.clear();
-        for (auto&& item : *array) c.observables.push_back(text(item, key));
-      } else if (key == "snapshot_realizations") {
-        c.snapshot_realizations.clear();
-        for (auto&& item : *array) c.snapshot_realizations.push_back(integer(item, key));
-      } else {
-        std::vector<double>& list = key == "snapshot_times" ? c.snapshot_times : c.snapshot_fractions;
-        list.clear();
-        for (auto&& item : *array) list.push_back(number(item, key));
-      }
-    } else if (key == "impurities") {
-      if (!node.is_table()) throw std::invalid_argument("scene key impurities must be a table");
-      apply_impurities(*node.as_table(), c.impurities);
-    } else if (key == "start") {
-      if (!node.is_table()) throw std::invalid_argument("scene key start must be a table ([start])");
-      apply_start(*node.as_table(), c.start);
-    } else if (key == "hydro") {
-      // The continuum model of `hydro core|euler --config` and `compare --hydro-config`
-      // (hydro::read_hydro_model_keys, docs/hydro.md); not part of the MD.
-      if (!node.is_table()) throw std::invalid_argument("scene key hydro must be a table ([hydro])");
-    } else {
+    if (!apply_physics_key(key, node, c) && !apply_run_key(key, node, c) && !apply_list_key(key, node, c) &&
+        !apply_section(key, node, c))
       throw std::invalid_argument(
           "unknown scene key " + key +
           " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius,recollide}, start.{kind,r0}, t_min, t_max, "
@@ -191,23 +241,15 @@ BlastConfig config_from_table(const toml::table& table) {
           "block_size, observables, box_margin, cell_width, queue, snapshot_times, snapshot_fractions, "
           "snapshot_particles, snapshot_margin, snapshot_stride, snapshot_realizations, profile_bins, p_imp_bins, "
           "overlap_check, [hydro])");
-    }
   }
   return c;
 }
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    out += ch;
-  }
-  return out + "\"";
-}
 }  // namespace
 
 const std::string& default_scene_toml() {
-  return default_scene;
+  static const std::string text = make_default_scene();
+  return text;
 }
 
 namespace {
@@ -253,7 +295,7 @@ BlastConfig load_scene(const SceneRequest& request) {
     text = request.text;
     source = "scene";
   } else {
-    text = default_scene;
+    text = default_scene_toml();
     source = "default scene";
   }
   BlastConfig config = config_from_table(scene_table(text, request.overrides, source, !request.md_snapshots));
@@ -275,10 +317,8 @@ std::string scene_toml(const BlastConfig& c) {
       << "\na = " << format_number(c.a) << "\nE = " << format_number(c.E) << "\nA_d = " << format_number(c.A_d)
       << "\nt_min = " << format_number(c.t_min) << "\nt_max = " << format_number(c.t_max)
       << "\nrealizations = " << c.realizations << "\nseed = " << c.seed << "\nblock_size = " << c.block_size
-      << "\nobservables = [";
-  for (std::size_t i = 0; i < c.observables.size(); ++i) out << (i ? ", " : "") << quoted(c.observables[i]);
-  out << "]\nbox_margin = " << format_number(c.box_margin) << "\ncell_width = " << format_number(c.cell_width)
-      << "\nqueue = " << quoted(c.queue) << "\nsnapshot_times = [";
+      << "\nobservables = " << string_array(c.observables) << "\nbox_margin = " << format_number(c.box_margin)
+      << "\ncell_width = " << format_number(c.cell_width) << "\nqueue = " << quoted(c.queue) << "\nsnapshot_times = [";
   for (std::size_t i = 0; i < c.snapshot_times.size(); ++i)
     out << (i ? ", " : "") << format_number(c.snapshot_times[i]);
   out << "]";

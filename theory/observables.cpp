@@ -178,7 +178,9 @@ const std::vector<ObservableInfo>& observable_catalogue() {
        3,
        {Q::H, 1.0, -1.0},
        true,
-       U::recorded},
+       U::recorded,
+       "its thermal noise biases the exponent (docs/verification.md); the flow speed is judged by",
+       "u_flow"},
       {O::u_flow,
        "u_flow",
        K::md_scalar,
@@ -386,6 +388,14 @@ bool is_block_scalar(const ObservableInfo& o) {
 }
 bool is_verdict(const ObservableInfo& o) {
   return o.verdict;
+}
+
+bool is_default_scene_observable(const ObservableInfo& o) {
+  return o.md_default || (is_md_scalar(o) && o.verdict);
+}
+
+bool is_paper_only(const ObservableInfo& o) {
+  return o.verdict && *o.paper_only_note != '\0';
 }
 bool is_md_default(const ObservableInfo& o) {
   return o.md_default;

@@ -100,6 +100,11 @@ struct ObservableInfo {
   HydroProxy hydro;                    ///< its hydro prediction
   bool md_default;                     ///< in the MD scene's default list (md::BlastConfig::observables)
   TracerUse tracer;                    ///< what the kinetic tracer does with it
+  /// For an observable judged against the paper's Table 1 only (its exponent is not judged against
+  /// theory or hydro): the note `coldblast compare` writes when it leaves it out, which ends with the
+  /// name of the observable judged in its place, `judged_instead`. "" for the others.
+  const char* paper_only_note = "";
+  const char* judged_instead = "";  ///< see paper_only_note
 };
 
 /// Every entry, in the output order of observables.csv and blocks.csv (and of enum Observable).
@@ -122,9 +127,13 @@ bool is_md_scalar(const ObservableInfo& o);
 bool is_md_requestable(const ObservableInfo& o);    ///< md_scalar or md_output: allowed in a scene's list
 bool is_block_scalar(const ObservableInfo& o);      ///< md_scalar or hydro_only: allowed in blocks.csv
 bool is_verdict(const ObservableInfo& o);           ///< compared by `coldblast compare` (any reference)
+bool is_paper_only(const ObservableInfo& o);        ///< compared by `coldblast compare` against the paper only
 bool is_md_default(const ObservableInfo& o);        ///< in the MD scene's default list
 bool is_tracer_recorded(const ObservableInfo& o);   ///< recorded by the kinetic tracer
 bool is_tracer_prefactor(const ObservableInfo& o);  ///< its prefactor measured by the tracer and compared with the MD
+/// In the embedded default scene (run::default_scene_toml): the default list plus the MD scalars that
+/// `coldblast compare` judges (u_flow), so that a compare of its run judges them all.
+bool is_default_scene_observable(const ObservableInfo& o);
 
 /// Table 1 observables in the paper's column order.
 std::vector<std::string> table1_names();
