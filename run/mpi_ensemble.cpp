@@ -65,108 +65,146 @@ std::string error_text(const std::exception_ptr& error) {
 
 /// Rank 0: hands out the pending blocks (to its own threads and, on request, to the other ranks'
 /// threads) and passes every finished block to work.finish.
-void run_coordinator(const MpiBlockWork& work, int ranks) {
-  const std::vector<long long>& pending = work.pending;
-  std::mutex mutex;  // guards next, error
-  std::size_t next = 0;
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
-  const auto take_block = [&]() -> long long {
-    std::lock_guard<std::mutex> lock(mutex);
-    return next < pending.size() && !failed ? pending[next++] : stop_block;
-  };
-  const auto fail = [&](std::exception_ptr e) {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!error) error = e;
-    failed = true;
-  };
-  auto local_worker = [&] {
+class Coordinator {
+ public:
+  explicit Coordinator(const MpiBlockWork& work) : work_(work) {}
+
+  void run(int ranks) {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < work_.threads; ++t) pool.emplace_back([this] { run_local_thread(); });
+    try {
+      serve_remote_threads((ranks - 1) * work_.threads);
+    } catch (...) {
+      fail(std::current_exception());
+    }
+    for (auto& t : pool) t.join();
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  long long take_block() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return next_ < work_.pending.size() && !failed_ ? work_.pending[next_++] : stop_block;
+  }
+
+  void fail(std::exception_ptr e) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!error_) error_ = e;
+    failed_ = true;
+  }
+
+  void run_local_thread() {
     try {
       for (long long b = take_block(); b != stop_block; b = take_block()) {
-        std::vector<char> result = work.run(b, failed);
-        if (failed) return;
-        work.finish(b, std::move(result), false);
+        std::vector<char> result = work_.run(b, failed_);
+        if (failed_) return;
+        work_.finish(b, std::move(result), false);
       }
     } catch (...) {
       fail(std::current_exception());
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < work.threads; ++t) pool.emplace_back(local_worker);
+  }
 
-  // Serve the other ranks' threads until each has been told to stop. Polling with a short sleep
-  // keeps this thread off the CPU (a blocking MPI_Recv spins in Open MPI).
-  int remote_workers = (ranks - 1) * work.threads;
-  std::vector<char> buffer;
-  try {
-    while (remote_workers > 0) {
+  /// Serves the other ranks' threads until each has been told to stop. Polling with a short sleep
+  /// keeps this thread off the CPU (a blocking MPI_Recv spins in Open MPI).
+  void serve_remote_threads(int remote_threads) {
+    std::vector<char> buffer;
+    while (remote_threads > 0) {
       int arrived = 0;
       MPI_Status status;
       check(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status), "MPI_Iprobe");
       if (!arrived) {
-        if (failed) break;
+        if (failed_) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
         continue;
       }
-      int bytes = 0;
-      MPI_Get_count(&status, MPI_BYTE, &bytes);
-      buffer.resize(static_cast<std::size_t>(bytes));
-      check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD,
-                     MPI_STATUS_IGNORE),
-            "MPI_Recv");
-      ByteReader reader(buffer);
-      const auto kind = reader.get<std::int64_t>();
-      if (kind == kind_failure) {
-        const int code = static_cast<int>(reader.get<std::int64_t>());
-        const std::string text = "rank " + std::to_string(status.MPI_SOURCE) + ": " + reader.get_string();
-        if (code == 2) throw std::invalid_argument(text);
-        throw std::runtime_error(text);
-      }
-      if (kind == kind_result) {
-        const long long b = reader.get<std::int64_t>();
-        const std::size_t header = 2 * sizeof(std::int64_t);
-        work.finish(b, std::vector<char>(buffer.begin() + static_cast<std::ptrdiff_t>(header), buffer.end()), true);
-      }
+      receive(status, buffer);
       const std::int64_t reply = take_block();
-      if (reply == stop_block) --remote_workers;
+      if (reply == stop_block) --remote_threads;
       check(MPI_Send(&reply, 1, MPI_INT64_T, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD), "MPI_Send");
     }
-  } catch (...) {
-    fail(std::current_exception());
   }
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
+
+  /// The message `status` announces: a failure is rethrown here, a finished block goes to work.finish.
+  void receive(const MPI_Status& status, std::vector<char>& buffer) {
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    buffer.resize(static_cast<std::size_t>(bytes));
+    check(
+        MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+        "MPI_Recv");
+    ByteReader reader(buffer);
+    const auto kind = reader.get<std::int64_t>();
+    if (kind == kind_failure) {
+      const int code = static_cast<int>(reader.get<std::int64_t>());
+      const std::string text = "rank " + std::to_string(status.MPI_SOURCE) + ": " + reader.get_string();
+      if (code == 2) throw std::invalid_argument(text);
+      throw std::runtime_error(text);
+    }
+    if (kind == kind_result) {
+      const long long b = reader.get<std::int64_t>();
+      const std::size_t header = 2 * sizeof(std::int64_t);
+      work_.finish(b, std::vector<char>(buffer.begin() + static_cast<std::ptrdiff_t>(header), buffer.end()), true);
+    }
+  }
+
+  const MpiBlockWork& work_;
+  std::mutex mutex_;  // guards next_, error_
+  std::size_t next_ = 0;
+  std::exception_ptr error_;
+  std::atomic<bool> failed_{false};
+};
 
 /// Ranks > 0: `threads` compute threads; this (the only MPI-calling) thread forwards each thread's
 /// finished block plus its request for the next one to rank 0 and hands back the answer.
-void run_worker(const MpiBlockWork& work) {
+class WorkerRank {
+ public:
+  explicit WorkerRank(const MpiBlockWork& work)
+      : work_(work), answer_(static_cast<std::size_t>(work.threads)), answered_(answer_.size(), false) {}
+
+  void run() {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < work_.threads; ++t) pool.emplace_back([this, t] { compute(t); });
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (running_ > 0 || !outbox_.empty()) {
+      cv_.wait(lock, [&] { return running_ == 0 || !outbox_.empty(); });
+      if (outbox_.empty()) break;
+      Outgoing message = std::move(outbox_.front());
+      outbox_.pop_front();
+      lock.unlock();
+      const std::int64_t reply = forward(message, pool);
+      lock.lock();
+      answer_[message.thread] = reply;
+      answered_[message.thread] = true;
+      cv_.notify_all();
+    }
+    lock.unlock();
+    for (auto& t : pool) t.join();
+  }
+
+ private:
   struct Outgoing {
     int thread;
     std::vector<char> bytes;
   };
-  std::mutex mutex;
-  std::condition_variable cv;
-  std::deque<Outgoing> outbox;
-  std::vector<long long> answer(static_cast<std::size_t>(work.threads));
-  std::vector<bool> answered(answer.size(), false);
-  int running = work.threads;
-  const std::atomic<bool> never_stop{false};  // a worker rank stops when rank 0 says so
-  const auto ask = [&](int thread, ByteWriter&& message) {
-    std::unique_lock<std::mutex> lock(mutex);
-    answered[thread] = false;
-    outbox.push_back({thread, std::move(message.bytes)});
-    cv.notify_all();
-    cv.wait(lock, [&] { return answered[thread]; });
-    return answer[thread];
-  };
-  auto compute = [&](int thread) {
+
+  /// Thread `thread`'s message to rank 0, and rank 0's answer to it.
+  long long ask(int thread, ByteWriter&& message) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    answered_[thread] = false;
+    outbox_.push_back({thread, std::move(message.bytes)});
+    cv_.notify_all();
+    cv_.wait(lock, [&] { return answered_[thread]; });
+    return answer_[thread];
+  }
+
+  void compute(int thread) {
     ByteWriter first;
     first.put<std::int64_t>(kind_request);
     long long b = ask(thread, std::move(first));
     try {
       while (b != stop_block) {
-        const std::vector<char> result = work.run(b, never_stop);
+        const std::vector<char> result = work_.run(b, never_stop_);
         ByteWriter message;
         message.put<std::int64_t>(kind_result);
         message.put<std::int64_t>(b);
@@ -179,22 +217,17 @@ void run_worker(const MpiBlockWork& work) {
       message.put<std::int64_t>(kind_failure);
       message.put<std::int64_t>(error_code(e));
       message.put_string(error_text(e));
-      std::lock_guard<std::mutex> lock(mutex);
-      outbox.push_back({thread, std::move(message.bytes)});
+      std::lock_guard<std::mutex> lock(mutex_);
+      outbox_.push_back({thread, std::move(message.bytes)});
     }
-    std::lock_guard<std::mutex> lock(mutex);
-    --running;
-    cv.notify_all();
-  };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < work.threads; ++t) pool.emplace_back(compute, t);
-  std::unique_lock<std::mutex> lock(mutex);
-  while (running > 0 || !outbox.empty()) {
-    cv.wait(lock, [&] { return running == 0 || !outbox.empty(); });
-    if (outbox.empty()) break;
-    Outgoing message = std::move(outbox.front());
-    outbox.pop_front();
-    lock.unlock();
+    std::lock_guard<std::mutex> lock(mutex_);
+    --running_;
+    cv_.notify_all();
+  }
+
+  /// Sends `message` to rank 0 and returns its answer; after a failure, waits for rank 0 to end
+  /// every rank.
+  std::int64_t forward(const Outgoing& message, std::vector<std::thread>& pool) {
     check(MPI_Send(message.bytes.data(), static_cast<int>(message.bytes.size()), MPI_BYTE, 0, message.thread,
                    MPI_COMM_WORLD),
           "MPI_Send");
@@ -205,14 +238,18 @@ void run_worker(const MpiBlockWork& work) {
     }
     std::int64_t reply = stop_block;
     check(MPI_Recv(&reply, 1, MPI_INT64_T, 0, message.thread, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
-    lock.lock();
-    answer[message.thread] = reply;
-    answered[message.thread] = true;
-    cv.notify_all();
+    return reply;
   }
-  lock.unlock();
-  for (auto& t : pool) t.join();
-}
+
+  const MpiBlockWork& work_;
+  std::mutex mutex_;
+  std::condition_variable cv_;
+  std::deque<Outgoing> outbox_;
+  std::vector<long long> answer_;
+  std::vector<bool> answered_;
+  int running_ = work_.threads;
+  const std::atomic<bool> never_stop_{false};  // a worker rank stops when rank 0 says so
+};
 }  // namespace
 
 MpiSession::MpiSession(int& argc, char**& argv) {
@@ -288,10 +325,32 @@ void run_blocks_mpi(const MpiBlockWork& work) {
   common::require_integer_in_range("threads", work.threads, 1, 1024);
   const int ranks = MpiSession::size();
   if (MpiSession::rank() == 0)
-    run_coordinator(work, ranks);
+    Coordinator(work).run(ranks);
   else
-    run_worker(work);
+    WorkerRank(work).run();
 }
+
+namespace {
+/// A rank > 0's part of run_blast_mpi: it runs the blocks rank 0 hands it. A block in progress in
+/// rank 0's checkpoint is run here from its first realization: the sums are added in the same order,
+/// so they are the same (rank 0's threads start it where it stopped).
+BlastResult run_remote_blocks(const md::BlastConfig& config, int threads, int ranks) {
+  const md::ResolvedScene scene = resolve_blast_scene(config);
+  const std::string run_id = broadcast_from_rank0("");
+  MpiBlockWork work;
+  work.threads = threads;
+  work.run = [&](long long b, const std::atomic<bool>& stop) {
+    const BlockProgress block = run_block(scene, run_id, b, {}, &stop);
+    ByteWriter w;
+    put_block_sums(w, block.sums, block.files);
+    return std::move(w.bytes);
+  };
+  run_blocks_mpi(work);
+  BlastResult empty;
+  empty.ranks = ranks;
+  return empty;
+}
+}  // namespace
 
 BlastResult run_blast_mpi(const md::BlastConfig& config, const RunOptions& options) {
   const int ranks = MpiSession::size();
@@ -299,25 +358,10 @@ BlastResult run_blast_mpi(const md::BlastConfig& config, const RunOptions& optio
   common::require_integer_in_range("threads", options.threads, 1, 1024);
   common::require_integer_in_range("shard_count", options.shard_count, 1, 1000000);
   common::require_integer_in_range("shard_index", options.shard_index, 0, options.shard_count - 1);
+  if (MpiSession::rank() != 0) return run_remote_blocks(config, options.threads, ranks);
   const auto started = std::chrono::steady_clock::now();
   MpiBlockWork work;
   work.threads = options.threads;
-  if (MpiSession::rank() != 0) {
-    // A block in progress in rank 0's checkpoint is run here from its first realization: the sums
-    // are added in the same order, so they are the same (rank 0's threads start it where it stopped).
-    const md::ResolvedScene scene = resolve_blast_scene(config);
-    const std::string run_id = broadcast_from_rank0("");
-    work.run = [&](long long b, const std::atomic<bool>& stop) {
-      const BlockProgress block = run_block(scene, run_id, b, {}, &stop);
-      ByteWriter w;
-      put_block_sums(w, block.sums, block.files);
-      return std::move(w.bytes);
-    };
-    run_blocks_mpi(work);
-    BlastResult empty;
-    empty.ranks = ranks;
-    return empty;
-  }
   // Rank 0: the plan (scene, folder, checkpoint, pending blocks); progress counts realizations, its
   // own one by one, the other ranks' block by block.
   EnsemblePlan plan = plan_ensemble(config, options);  // an error here ends every rank (MPI_Abort)
