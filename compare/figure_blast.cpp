@@ -141,7 +141,7 @@ std::string gnuplot_script(const BlastFigure& figure, const RunData& run) {
       << " i 0:" << std::max<std::size_t>(figure.panels[i].paths.size(), 1) - 1
       << " w l lw 2 lc rgb 'black' t 'impurity paths', " << lines << " i "
       << std::max<std::size_t>(figure.panels[i].paths.size(), 1) << " w l lw 2.5 lc rgb '#1f3fbf' t '"
-      << theory::observable_info("R_imp").label << ", Eq. (38)', " << lines << " i "
+      << theory::observable_info(theory::Observable::R_imp).label << ", Eq. (38)', " << lines << " i "
       << std::max<std::size_t>(figure.panels[i].paths.size(), 1) + 1
       << " w l lw 2 dt 2 lc rgb '#202020' t 'TvNS R(t), Eq. (1)'\n";
   }

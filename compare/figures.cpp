@@ -72,6 +72,43 @@ void shape_statistics(const std::vector<Bin>& bins, int d, double R_imp, Distrib
   fit.moment_ratio_error = std::sqrt(variance);
 }
 
+/// The b in [1e-2, 1e2] that minimises cost(b): a scan of 800 steps in ln b, then a golden-section
+/// search on ln b around the best step.
+template <class Cost>
+double minimise_over_b(const Cost& cost) {
+  const double scan_lo = std::log(1e-2), scan_hi = std::log(1e2);
+  const int scan = 800;
+  double best = scan_lo, best_cost = INFINITY;
+  for (int i = 0; i <= scan; ++i) {
+    const double x = scan_lo + (scan_hi - scan_lo) * i / scan;
+    const double c = cost(std::exp(x));
+    if (c < best_cost) best_cost = c, best = x;
+  }
+  double lo = best - (scan_hi - scan_lo) / scan, hi = best + (scan_hi - scan_lo) / scan;
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
+    const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    if (cost(std::exp(x1)) < cost(std::exp(x2)))
+      hi = x2;
+    else
+      lo = x1;
+  }
+  return std::exp(0.5 * (lo + hi));
+}
+
+/// Σ_i (∂m_i/∂b)² at b, m_i Eq. (39)'s density at bin i with width b × scale (central differences).
+double squared_jacobian(const std::vector<Bin>& bins, int d, double b, double scale) {
+  const double h = 1e-5 * b;
+  double jacobian_sq = 0;
+  for (const auto& bin : bins) {
+    const double dm = (theory::radial_position_density(d, bin.r, (b + h) * scale) -
+                       theory::radial_position_density(d, bin.r, (b - h) * scale)) /
+                      (2 * h);
+    jacobian_sq += dm * dm;
+  }
+  return jacobian_sq;
+}
+
 }  // namespace
 
 std::optional<DistributionFit> fit_impurity_distribution(const RunData& run, double t_wanted) {
@@ -103,33 +140,10 @@ std::optional<DistributionFit> fit_impurity_distribution(const RunData& run, dou
   // A structured binding cannot be captured in C++17 (clang rejects it): capture a reference.
   const std::vector<Bin>& histogram = bins;
   auto cost = [&](double b) { return residual_sum(histogram, run.d, b * scale); };
-  const double scan_lo = std::log(1e-2), scan_hi = std::log(1e2);
-  const int scan = 800;
-  double best = scan_lo, best_cost = INFINITY;
-  for (int i = 0; i <= scan; ++i) {
-    const double x = scan_lo + (scan_hi - scan_lo) * i / scan;
-    const double c = cost(std::exp(x));
-    if (c < best_cost) best_cost = c, best = x;
-  }
-  double lo = best - (scan_hi - scan_lo) / scan, hi = best + (scan_hi - scan_lo) / scan;
-  const double g = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 200 && hi - lo > 1e-12; ++i) {
-    const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    if (cost(std::exp(x1)) < cost(std::exp(x2)))
-      hi = x2;
-    else
-      lo = x1;
-  }
-  fit.b_fit = std::exp(0.5 * (lo + hi));
+  fit.b_fit = minimise_over_b(cost);
   fit.bins = static_cast<int>(bins.size());
-  const double rss = cost(fit.b_fit), h = 1e-5 * fit.b_fit;
-  double jacobian_sq = 0;
-  for (const auto& bin : bins) {
-    const double dm = (theory::radial_position_density(run.d, bin.r, (fit.b_fit + h) * scale) -
-                       theory::radial_position_density(run.d, bin.r, (fit.b_fit - h) * scale)) /
-                      (2 * h);
-    jacobian_sq += dm * dm;
-  }
+  const double rss = cost(fit.b_fit);
+  const double jacobian_sq = squared_jacobian(bins, run.d, fit.b_fit, scale);
   fit.b_fit_error = jacobian_sq > 0 ? std::sqrt(rss / std::max(fit.bins - 1, 1) / jacobian_sq) : INFINITY;
   fit.residual_rms = std::sqrt(rss / std::max(fit.bins, 1));
   shape_statistics(bins, run.d, fit.b_fit * scale, fit);
@@ -148,12 +162,12 @@ std::string distribution_figure(const RunData& run, const DistributionFit& fit, 
   data.precision(10);
   const std::string spread = "t^{" + theory::to_string(theory::scaling_exponents(run.d).R_imp.in_time) + "}";
   script << figure_terminal("p_imp", {1100, 640, 12}) << "set xlabel 'r / " << spread << "'\n"
-         << "set ylabel '" << theory::observable_info("p_imp").label << "(r,t) " << spread << "'\n"
+         << "set ylabel '" << theory::observable_info(theory::Observable::p_imp).label << "(r,t) " << spread << "'\n"
          << "set key below\nset grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt 3\n"
          << "set title " << gnuplot_quoted(scene_caption(run))
          << " . \"\\nImpurity radial distribution (Fig. 3 style): "
          << "fitted b = " << common::format_measurement(fit.b_fit, fit.b_fit_error) << ", "
-         << theory::observable_info("R_imp").label << "/" << spread << " = "
+         << theory::observable_info(theory::Observable::R_imp).label << "/" << spread << " = "
          << common::format_significant(fit.b_direct, 4) << "\"\n";
   std::string plot = "plot ";
   for (std::size_t i = first; i < times.size(); ++i) {

@@ -210,7 +210,7 @@ std::string distribution_figure(const TracerMdComparison& c, const std::string& 
     data << h.r[i] << ' ' << h.p_tracer[i] << ' ' << h.p_tracer_error[i] << ' ' << h.p_md[i] << ' ' << h.p_md_error[i]
          << ' ' << h.p_gaussian[i] << '\n';
   common::write_file_atomic(folder / "tracer_md_p_imp.dat", data.str());
-  const std::string p = theory::observable_info("p_imp").label;
+  const std::string p = theory::observable_info(theory::Observable::p_imp).label;
   std::ostringstream script;
   script << figure_terminal("tracer_p_imp", {1300, 760, 13}) << "set title " << gnuplot_quoted(caption) << " . \"\\n"
          << p << "(r) at t = " << common::format_significant(h.t, 4)
