@@ -131,6 +131,33 @@ void write_tracer_run(const run::TracerResult& result, const std::string& out, F
   print_final_estimates(result.ensemble);
 }
 
+namespace {
+/// The options of the run rather than of its physics: trajectories, threads, seed, shard and the
+/// output folder (--out, returned, --resume, --overwrite).
+CLI::Option* add_tracer_run_options(CLI::App& c, TracerOptions& o) {
+  c.add_option("--trajectories", o.config.trajectories,
+               "Impurity trajectories (0 = the scene's realizations x impurities.count)")
+      ->capture_default_str();
+  c.add_option("--threads", o.config.threads, "Worker threads (results are identical for any count)")
+      ->capture_default_str();
+  o.seed_option = c.add_option("--seed", o.seed, "Master seed (overrides the scene; >= 0)");
+  c.add_option("--shard", o.shard, "Run only blocks i, i+n, ... (combine with coldblast md merge): i/n")
+      ->capture_default_str();
+  CLI::Option* out_option =
+      c.add_option("--out", o.out,
+                   "Output directory: one run (files with its run id, manifest.json); finished blocks are "
+                   "checkpointed in OUT/checkpoint until the run ends")
+          ->capture_default_str();
+  c.add_option("--resume", o.resume,
+               "Continue a stopped or killed run in output directory DIR with the scene, options and run id of its "
+               "checkpoint, running only the missing blocks (an option given again must agree with the checkpoint)");
+  c.add_flag("--overwrite", o.overwrite,
+             "Replace the files of another run (or an unfinished run's checkpoint) in --out: exactly those of its "
+             "manifest.json");
+  return out_option;
+}
+}  // namespace
+
 void add_tracer_command(CLI::App& app) {
   auto o = std::make_shared<TracerOptions>();
   CLI::App* c = app.add_subcommand(
@@ -148,25 +175,7 @@ void add_tracer_command(CLI::App& app) {
        "dilute (chi = 1; ideal-gas Navier-Stokes) or enskog (chi(n) at contact; dense Navier-Stokes at the scene's "
        "packing fraction: the prediction for its MD, as reproduce runs it; not with tvns)")
       ->capture_default_str();
-  c->add_option("--trajectories", o->config.trajectories,
-                "Impurity trajectories (0 = the scene's realizations x impurities.count)")
-      ->capture_default_str();
-  c->add_option("--threads", o->config.threads, "Worker threads (results are identical for any count)")
-      ->capture_default_str();
-  o->seed_option = c->add_option("--seed", o->seed, "Master seed (overrides the scene; >= 0)");
-  c->add_option("--shard", o->shard, "Run only blocks i, i+n, ... (combine with coldblast md merge): i/n")
-      ->capture_default_str();
-  CLI::Option* out_option =
-      c->add_option("--out", o->out,
-                    "Output directory: one run (files with its run id, manifest.json); finished blocks are "
-                    "checkpointed in OUT/checkpoint until the run ends")
-          ->capture_default_str();
-  c->add_option("--resume", o->resume,
-                "Continue a stopped or killed run in output directory DIR with the scene, options and run id of its "
-                "checkpoint, running only the missing blocks (an option given again must agree with the checkpoint)");
-  c->add_flag("--overwrite", o->overwrite,
-              "Replace the files of another run (or an unfinished run's checkpoint) in --out: exactly those of its "
-              "manifest.json");
+  CLI::Option* out_option = add_tracer_run_options(*c, *o);
   c->add_option("--T", o->config.T, "Equilibrium background: bath temperature (> 0)")->capture_default_str();
   c->add_option("--phi", o->phi, "Equilibrium background: packing fraction (default: the scene's)");
   c->add_option("--start", o->config.start,

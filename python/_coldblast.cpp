@@ -496,10 +496,8 @@ py::object reproduce(const std::string& scale, const std::string& out, int threa
   return json_to_python(compare::reproduce_summary(run_interruptible(work, progress)));
 }
 
-}  // namespace
-
-PYBIND11_MODULE(_coldblast, m) {
-  m.doc() = "coldblast's C++ library (use the `coldblast` package, not this module directly)";
+/// Interrupted (SIGINT in a run) reaches Python as KeyboardInterrupt.
+void bind_errors() {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -507,10 +505,16 @@ PYBIND11_MODULE(_coldblast, m) {
       PyErr_SetNone(PyExc_KeyboardInterrupt);
     }
   });
+}
 
+/// coldblast theory: the exact exponents and the prefactors.
+void bind_theory(py::module_& m) {
   m.def("theory_exponents", &theory_exponents, py::arg("d"));
   m.def("theory_computed_prefactors", &theory_computed_prefactors, py::arg("d"));
+}
 
+/// The TvNS solution and the Navier–Stokes and Euler runs.
+void bind_hydro(py::module_& m) {
   py::class_<hydro::TvnsSolution>(m, "TvnsSolution")
       .def_property_readonly("d", [](const hydro::TvnsSolution& s) { return s.config().d; })
       .def_property_readonly("eos", [](const hydro::TvnsSolution& s) { return hydro::to_string(s.config().eos); })
@@ -543,6 +547,10 @@ PYBIND11_MODULE(_coldblast, m) {
         py::arg("start"), py::arg("r0"), py::arg("progress"));
   m.attr("default_core_cells") = hydro::default_core_cells;
   m.attr("default_euler_cells") = hydro::default_euler_cells;
+}
+
+/// MD runs, impurity states, the default scene and run summaries.
+void bind_md(py::module_& m) {
   m.def("md_run", &md_run, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("realizations"),
         py::arg("seed"), py::arg("threads"), py::arg("out"), py::arg("resume"), py::arg("overwrite"),
         py::arg("progress"));
@@ -551,6 +559,10 @@ PYBIND11_MODULE(_coldblast, m) {
         py::arg("overwrite"), py::arg("progress"));
   m.def("default_scene_toml", [] { return run::default_scene_toml(); });
   m.def("read_run_summary", &read_run_summary, py::arg("directory"));
+}
+
+/// compare and reproduce.
+void bind_compare(py::module_& m) {
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
         py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"),
         py::arg("hydro_eos"), py::arg("hydro_phi"), py::arg("hydro_transport"), py::arg("md_run"), py::arg("out"),
@@ -558,6 +570,10 @@ PYBIND11_MODULE(_coldblast, m) {
   m.def("reproduce", &reproduce, py::arg("scale"), py::arg("out"), py::arg("threads"), py::arg("seed"),
         py::arg("realizations"), py::arg("hydro_until"), py::arg("md_run"), py::arg("tracer_trajectories"),
         py::arg("figures"), py::arg("progress"));
+}
+
+/// The kinetic tracer.
+void bind_tracer(py::module_& m) {
   m.def(
       "tracer_run",
       [](const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
@@ -575,4 +591,16 @@ PYBIND11_MODULE(_coldblast, m) {
       py::arg("start_time"), py::arg("frames_per_decade"), py::arg("cells"), py::arg("start_states"), py::arg("kernel"),
       py::arg("md_run"), py::arg("r0"), py::arg("out"), py::arg("resume"), py::arg("overwrite"), py::arg("given"),
       py::arg("progress"));
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_coldblast, m) {
+  m.doc() = "coldblast's C++ library (use the `coldblast` package, not this module directly)";
+  bind_errors();
+  bind_theory(m);
+  bind_hydro(m);
+  bind_md(m);
+  bind_compare(m);
+  bind_tracer(m);
 }
