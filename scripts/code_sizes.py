@@ -5,8 +5,8 @@ function over a limit. For the closing note and for a newcomer looking for what 
 
     scripts/code_sizes.py [--limit 60] [ROOT]
 
-Data tables (theory/observables.cpp's catalogue, the pybind11 module's registrations) count like
-any function: the limit of the style guide exempts them, this script does not judge.
+The limit of the style guide exempts data tables: the functions in DATA_TABLES, each with its
+reason, are marked as such and listed apart from the functions over the limit.
 """
 import argparse
 import os
@@ -15,6 +15,11 @@ import sys
 
 MODULES = ["common", "theory", "hydro", "md", "run", "kinetic", "compare", "cli", "python"]
 SUFFIXES = (".cpp", ".hpp")
+# (file, function) -> why it is a data table rather than code to split.
+DATA_TABLES = {
+    ("theory/observables.cpp", "observable_catalogue"):
+        "the observable catalogue: one aggregate initializer, an entry of positional fields per observable",
+}
 
 
 def sources(root, module):
@@ -50,11 +55,17 @@ def main():
         lines, largest = max(sizes)
         found = functions(args.root, files)
         length, where, name, first = max(found)
-        print(f"| {module} | {largest} ({lines}) | {name} in {where}:{first} ({length}) |")
+        table = ", data table" if (where, name) in DATA_TABLES else ""
+        print(f"| {module} | {largest} ({lines}) | {name} in {where}:{first} ({length}{table}) |")
         over += [f for f in found if f[0] > args.limit]
-    print(f"\nfunctions over {args.limit} lines: {len(over)}")
-    for length, where, name, first in sorted(over, reverse=True):
+    tables = [f for f in over if (f[1], f[2]) in DATA_TABLES]
+    code = [f for f in over if (f[1], f[2]) not in DATA_TABLES]
+    print(f"\nfunctions over {args.limit} lines outside data tables: {len(code)}")
+    for length, where, name, first in sorted(code, reverse=True):
         print(f"  {length:4d}  {name}  {where}:{first}")
+    print(f"data tables over {args.limit} lines: {len(tables)}")
+    for length, where, name, first in sorted(tables, reverse=True):
+        print(f"  {length:4d}  {name}  {where}:{first}  ({DATA_TABLES[(where, name)]})")
 
 
 if __name__ == "__main__":
