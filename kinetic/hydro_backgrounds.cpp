@@ -41,6 +41,16 @@ hydro::NavierStokesConfig navier_stokes_config(const md::BlastConfig& scene, con
   return ns;
 }
 
+/// A_d of the TvNS solution with the Navier–Stokes run's EOS.
+double reference_amplitude(const hydro::NavierStokesConfig& ns) {
+  hydro::TvnsConfig tvns_config;
+  tvns_config.d = ns.physics.d;
+  tvns_config.eos = ns.physics.eos;
+  tvns_config.phi = ns.physics.phi;
+  tvns_config.tolerance = 1e-10;
+  return hydro::solve_tvns(tvns_config).A();
+}
+
 /// The solution's profiles as background frames in time order, each on the self-similar grid x = r/R
 /// (returned in `x`; std::runtime_error when the profiles do not share it).
 std::vector<BackgroundFrame> self_similar_frames(const hydro::NavierStokesResult& solution, std::vector<double>& x) {
@@ -70,13 +80,7 @@ std::unique_ptr<GridBackground> make_navier_stokes_background(const md::BlastCon
   const bool hot_spot = hot_spot_radius > 0.0;  // the MD's hot spot; times from the deposition
   if (hot_spot) ns.physics.start = hydro::Start::hotspot, ns.physics.r0_over_lambda = hot_spot_radius / lambda;
   // R_ref(t) of the grid uses the TvNS A_d of the same EOS (hydro/navier_stokes.cpp); go 5 % beyond t_max.
-  hydro::TvnsConfig tvns_config;
-  tvns_config.d = scene.d;
-  tvns_config.eos = ns.physics.eos;
-  tvns_config.phi = ns.physics.phi;
-  tvns_config.tolerance = 1e-10;
-  const hydro::TvnsSolution reference = hydro::solve_tvns(tvns_config);
-  const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, reference.A()};
+  const theory::BlastParameters p{scene.d, scene.n, scene.a, scene.E, reference_amplitude(ns)};
   const double start = ns.resolved_start_R_over_lambda();
   // A hot spot's grid scale is R_ref(t + shift), R_ref(shift) = start λ: at 1.05 t_max it reaches `until`.
   const double shift = hot_spot ? theory::shock_time(p, start * lambda) : 0.0;
