@@ -154,6 +154,29 @@ void measure_shock_radius(const AmplitudeInputs& in, AmplitudeVerdict& v) {
   v.reference_error = v.reference * in.ns_error.A / (std::abs(in.ns.A) * (d + 2));
 }
 
+/// The centre's amplitudes from the innermost profile bin (n(centre)/n, T(centre)/Ṙ²); false when
+/// profiles.csv lacks the bin or its error (temperature_stderr: files written before it).
+bool measure_centre(theory::Amplitude id, const AmplitudeInputs& in, AmplitudeVerdict& v) {
+  const CentreBin c = md_centre_bin(in.run, in.t);
+  if (id == theory::Amplitude::n_centre_over_n) {
+    if (!std::isfinite(c.n_error) || !(c.n > 0)) return false;
+    v.measured = c.n;
+    v.error = c.n_error;
+    v.reference = in.ns.n_centre_over_n;
+    v.reference_error = in.ns_error.n_centre_over_n;
+    return true;
+  }
+  if (!std::isfinite(c.T_error) || !(c.T > 0)) return false;
+  // Ṙ from the ensemble R at t (Eq. (1) form, as for T0); its jackknife error joins T's.
+  const JackknifedValue R = jackknife_last({&in.R}, [](const std::vector<double>& a) { return a[0]; });
+  const double Rdot = theory::shock_speed_at(in.run.d, R.value, in.t);
+  v.measured = c.T / (Rdot * Rdot);
+  v.error = v.measured * std::hypot(c.T_error / c.T, 2.0 * R.error / R.value);
+  v.reference = in.ns.T_centre_over_Rdot2;
+  v.reference_error = in.ns_error.T_centre_over_Rdot2;
+  return true;
+}
+
 /// Fills `v` (its name, definition, MD and NS values) for amplitude `id`; false when the run does not
 /// record what it needs (n0, T0 in blocks.csv; H/R needs profiles.csv).
 bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, AmplitudeVerdict& v) {
@@ -188,27 +211,9 @@ bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, Amplitud
     case theory::Amplitude::R:
       measure_shock_radius(in, v);
       return true;
-    case theory::Amplitude::n_centre_over_n: {
-      const CentreBin c = md_centre_bin(in.run, in.t);
-      if (!std::isfinite(c.n_error) || !(c.n > 0)) return false;
-      v.measured = c.n;
-      v.error = c.n_error;
-      v.reference = in.ns.n_centre_over_n;
-      v.reference_error = in.ns_error.n_centre_over_n;
-      return true;
-    }
-    case theory::Amplitude::T_centre_over_Rdot2: {
-      const CentreBin c = md_centre_bin(in.run, in.t);
-      if (!std::isfinite(c.T_error) || !(c.T > 0)) return false;
-      // Ṙ from the ensemble R at t (Eq. (1) form, as for T0); its jackknife error joins T's.
-      const JackknifedValue R = jackknife_last({&in.R}, [](const std::vector<double>& a) { return a[0]; });
-      const double Rdot = theory::shock_speed_at(in.run.d, R.value, in.t);
-      v.measured = c.T / (Rdot * Rdot);
-      v.error = v.measured * std::hypot(c.T_error / c.T, 2.0 * R.error / R.value);
-      v.reference = in.ns.T_centre_over_Rdot2;
-      v.reference_error = in.ns_error.T_centre_over_Rdot2;
-      return true;
-    }
+    case theory::Amplitude::n_centre_over_n:
+    case theory::Amplitude::T_centre_over_Rdot2:
+      return measure_centre(id, in, v);
     case theory::Amplitude::H_over_R: {
       const CoreSize H = md_core_size(in.run, in.t);
       if (!std::isfinite(H.H_over_R)) return false;

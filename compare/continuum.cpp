@@ -407,6 +407,55 @@ CoreSize binned_core_size(const std::vector<double>& r_centre, const std::vector
   return core;
 }
 
+namespace {
+
+/// Where and how far the continuum's extra solves go: the model's profile requests (R/λ targets or
+/// times), its end R/λ and its cells.
+struct ProfileRequest {
+  std::vector<double> targets, times;
+  double end = 20.0;
+  int cells = 256;
+};
+
+/// The figure's curves beside the MD's profiles (reference.profiles): TvNS ideal and at the run's φ,
+/// the dilute NS (solved here, to request.end only) when the model is not dilute, and the model's NS,
+/// each at the MD's R/λ = x.
+void add_profile_curves(ContinuumReference& reference, const RunData& run, double x, const ProfileRequest& request,
+                        const ContinuumProgress& progress) {
+  const HydroModel& model = reference.model;
+  auto& curves = reference.profiles;
+  const std::string at = ", R/{/Symbol l} = " + common::format_number(std::round(x * 10) / 10);
+  curves.push_back(tvns_curve(hydro::solve_tvns({run.d, 0.0, hydro::Eos::ideal, 0.0, 1e-10}),
+                              ProfileCurve::Kind::tvns_ideal, "TvNS, ideal gas"));
+  const double phi = run_packing_fraction(run);
+  if ((run.d == 2 || run.d == 3) && phi > 0) {
+    const hydro::Eos eos = run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
+    curves.push_back(
+        tvns_curve(hydro::solve_tvns({run.d, 0.0, eos, phi, 1e-8}), ProfileCurve::Kind::tvns_phi,
+                   "TvNS, " + hydro::to_string(eos) + " {/Symbol f} = " + common::format_significant(phi, 3)));
+  }
+  if (!model.dilute()) {
+    // only for the figure: no further than the MD's R/λ needs
+    HydroModel dilute;
+    dilute.start = model.start;
+    dilute.r0_over_lambda = model.r0_over_lambda;
+    reference.ns_dilute =
+        solve_hydro_model(run.d, dilute, request.end, request.cells, request.targets, progress, request.times);
+    curves.push_back(ns_curve(nearest_profile(*reference.ns_dilute, x), run.d, ProfileCurve::Kind::ns_dilute,
+                              "NS, dilute ideal gas" + at));
+  }
+  const std::string model_label =
+      model.dilute() ? "NS, dilute ideal gas"
+                     : "NS, " + hydro::to_string(model.eos) + " + " +
+                           (model.transport == hydro::Transport::enskog ? "Enskog" : "dilute transport") +
+                           (model.start == hydro::Start::hotspot ? ", hot spot" : "");
+  curves.push_back(ns_curve(nearest_profile(reference.ns, x), run.d,
+                            model.dilute() ? ProfileCurve::Kind::ns_dilute : ProfileCurve::Kind::ns_model,
+                            model_label + at));
+}
+
+}  // namespace
+
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
                                                           double until, const ContinuumProgress& progress) {
   auto reference = std::make_shared<ContinuumReference>();
@@ -451,34 +500,7 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
   for (auto field : scalar_fields)
     reference->errors.*field = std::hypot(grid.*field - reference->amplitudes.*field, reading.*field);
 
-  auto& curves = reference->profiles;
-  const std::string at = ", R/{/Symbol l} = " + common::format_number(std::round(x * 10) / 10);
-  curves.push_back(tvns_curve(hydro::solve_tvns({run.d, 0.0, hydro::Eos::ideal, 0.0, 1e-10}),
-                              ProfileCurve::Kind::tvns_ideal, "TvNS, ideal gas"));
-  const double phi = run_packing_fraction(run);
-  if ((run.d == 2 || run.d == 3) && phi > 0) {
-    const hydro::Eos eos = run.d == 2 ? hydro::Eos::henderson : hydro::Eos::carnahan_starling;
-    curves.push_back(
-        tvns_curve(hydro::solve_tvns({run.d, 0.0, eos, phi, 1e-8}), ProfileCurve::Kind::tvns_phi,
-                   "TvNS, " + hydro::to_string(eos) + " {/Symbol f} = " + common::format_significant(phi, 3)));
-  }
-  if (!model.dilute()) {
-    // only for the figure: no further than the MD's R/λ needs
-    HydroModel dilute;
-    dilute.start = model.start;
-    dilute.r0_over_lambda = model.r0_over_lambda;
-    reference->ns_dilute = solve_hydro_model(run.d, dilute, std::max(20.0, reach), cells, targets, progress, times);
-    curves.push_back(ns_curve(nearest_profile(*reference->ns_dilute, x), run.d, ProfileCurve::Kind::ns_dilute,
-                              "NS, dilute ideal gas" + at));
-  }
-  const std::string model_label =
-      model.dilute() ? "NS, dilute ideal gas"
-                     : "NS, " + hydro::to_string(model.eos) + " + " +
-                           (model.transport == hydro::Transport::enskog ? "Enskog" : "dilute transport") +
-                           (model.start == hydro::Start::hotspot ? ", hot spot" : "");
-  curves.push_back(ns_curve(nearest_profile(reference->ns, x), run.d,
-                            model.dilute() ? ProfileCurve::Kind::ns_dilute : ProfileCurve::Kind::ns_model,
-                            model_label + at));
+  add_profile_curves(*reference, run, x, {targets, times, std::max(20.0, reach), cells}, progress);
   return reference;
 }
 

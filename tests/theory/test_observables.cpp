@@ -114,7 +114,8 @@ TEST_CASE("the amplitude catalogue: enum order, names, equations, an unknown nam
     CHECK(*amplitudes[i].definition != '\0');
     names.push_back(amplitudes[i].name);
   }
-  CHECK(names == std::vector<std::string>{"n0/n", "T0/Rdot^2", "R", "H/R"});
+  CHECK(names == std::vector<std::string>{"n0/n", "T0/Rdot^2", "R", "H/R", "n(centre)/n", "T(centre)/Rdot^2"});
   CHECK(*amplitude_info(Amplitude::R).definition_without_profiles != '\0');
-  CHECK_THROWS_WITH(amplitude_info("Kn"), "amplitude = Kn is unknown; allowed: n0/n, T0/Rdot^2, R, H/R");
+  CHECK_THROWS_WITH(amplitude_info("Kn"),
+                    "amplitude = Kn is unknown; allowed: n0/n, T0/Rdot^2, R, H/R, n(centre)/n, T(centre)/Rdot^2");
 }
