@@ -10,6 +10,7 @@
 #include "common/validate.hpp"
 #include "compare/reproduce.hpp"
 #include "compare/reproduce_report.hpp"
+#include "hydro/blast_measurements.hpp"
 
 namespace coldblast::cli {
 
@@ -79,9 +80,11 @@ void run(ReproduceOptions& options) {
               r.A3_error, r.phi_md, r.A2_md, r.A2_md_error);
   std::printf("Navier–Stokes (%s) at R/lambda = %.3g:", r.hydro["model"].get<std::string>().c_str(),
               r.hydro["R_over_lambda"].get<double>());
-  for (const char* name : {"H", "n0", "T0"})
-    std::printf("  %s %.4f (theory %s)", name, r.hydro["exponents"][name]["measured"].get<double>(),
-                r.hydro["exponents"][name]["theory_rational"].get<std::string>().c_str());
+  for (const hydro::CoreExponent& q :
+       hydro::core_exponents)  // the core's; R's is Eq. (1)'s, printed in reproduce's report
+    if (q.time_exponent != &hydro::RunningExponents::R)
+      std::printf("  %s %.4f (theory %s)", q.name, r.hydro["exponents"][q.name]["measured"].get<double>(),
+                  r.hydro["exponents"][q.name]["theory_rational"].get<std::string>().c_str());
   std::printf("\nMD: %lld realizations, %.3g collisions in %.1f s\n", r.md["realizations"].get<long long>(),
               r.md["collisions_total"].get<double>(), r.md["wall_seconds"].get<double>());
   print_verdict("theory", r.against_theory);

@@ -15,6 +15,7 @@
 #include "compare/reproduce_report.hpp"
 #include "compare/run_data.hpp"
 #include "hydro/navier_stokes.hpp"
+#include "hydro/result_files.hpp"
 #include "hydro/tvns.hpp"
 #include "md/blast_config.hpp"
 #include "run/ensemble.hpp"
@@ -113,17 +114,9 @@ void say(const ReproduceProgress& progress, const std::string& line) {
 }
 
 common::Json hydro_json(const hydro::NavierStokesResult& result) {
-  const auto exact = theory::scaling_exponents(result.config.physics.d);
-  const hydro::RunningExponents e = result.final_exponents();
-  common::Json exponents;
-  const std::pair<const char*, double> measured[] = {{"H", e.H}, {"n0", e.n0}, {"T0", e.T0}, {"R", e.R}};
-  for (const auto& [name, value] : measured)
-    exponents[name] = {{"measured", value},
-                       {"theory", theory::to_double(exact.at(name).in_time)},
-                       {"theory_rational", theory::to_string(exact.at(name).in_time)}};
   return {{"d", result.config.physics.d},
-          {"R_over_lambda", e.R_over_lambda},
-          {"exponents", exponents},
+          {"R_over_lambda", result.final_exponents().R_over_lambda},
+          {"exponents", hydro::exponents_json(result)},
           {"energy_error", result.max_energy_error},
           {"wall_seconds", result.statistics.wall_seconds}};
 }

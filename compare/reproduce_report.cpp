@@ -6,6 +6,7 @@
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/report.hpp"
+#include "hydro/blast_measurements.hpp"
 #include "theory/exponents.hpp"
 #include "theory/prefactors.hpp"
 
@@ -125,10 +126,10 @@ std::string reproduce_markdown(const ReproduceResult& r, bool figures) {
      << "\n\nRunning time exponents at R/λ = " << common::format_significant(r.hydro["R_over_lambda"].get<double>(), 6)
      << " (relative energy error " << common::format_significant(r.hydro["energy_error"].get<double>(), 2)
      << "):\n\n| quantity | measured | theory |\n|---|---|---|\n";
-  for (const char* name : {"H", "n0", "T0", "R"}) {
-    const auto& e = r.hydro["exponents"][name];
+  for (const hydro::CoreExponent& q : hydro::core_exponents) {
+    const auto& e = r.hydro["exponents"][q.name];
     char row[160];
-    std::snprintf(row, sizeof row, "| %s | %.5f | %s |\n", name, e["measured"].get<double>(),
+    std::snprintf(row, sizeof row, "| %s | %.5f | %s |\n", q.name, e["measured"].get<double>(),
                   e["theory_rational"].get<std::string>().c_str());
     md << row;
   }

@@ -33,6 +33,18 @@ struct RunningExponents {
   double H_in_R = 0, H_density_in_R = 0, n0_in_R = 0, T0_in_R = 0;  ///< exponents in R/λ
 };
 
+/// The core quantities whose time exponents a result reports, in report order, each with its field of
+/// RunningExponents; the name is also theory::ScalingExponents' (Eqs. (1), (4), (11), (12)). The one
+/// list that the result files, reproduce's JSON, its report and its summary line go through.
+struct CoreExponent {
+  const char* name;
+  double RunningExponents::*time_exponent;
+};
+inline constexpr CoreExponent core_exponents[] = {{"H", &RunningExponents::H},
+                                                  {"n0", &RunningExponents::n0},
+                                                  {"T0", &RunningExponents::T0},
+                                                  {"R", &RunningExponents::R}};
+
 /// Profile columns of the CSV: r, r_over_R, density, velocity, temperature, pressure, heat_flux.
 struct NavierStokesProfile {
   double t = 0, R = 0;

@@ -40,23 +40,6 @@ common::Json model_json(const NavierStokesResult& r) {
           {"start_R_over_lambda", *r.config.numerics.start_R_over_lambda}};
 }
 
-/// exponents (core): d ln X/d ln t at the end beside the paper's rationals (Table 2; R: 2/(d+2)).
-common::Json exponents_json(const NavierStokesResult& r) {
-  const theory::ScalingExponents theory_exponents = theory::scaling_exponents(r.config.physics.d);
-  const RunningExponents e = r.final_exponents();
-  const std::pair<const char*, std::pair<double, theory::Rational>> rows[] = {
-      {"H", {e.H, theory_exponents.H.in_time}},
-      {"n0", {e.n0, theory_exponents.n0.in_time}},
-      {"T0", {e.T0, theory_exponents.T0.in_time}},
-      {"R", {e.R, theory_exponents.R.in_time}}};
-  common::Json exponents = common::Json::object();
-  for (const auto& [name, values] : rows)
-    exponents[name] = {{"measured", values.first},
-                       {"theory", theory::to_double(values.second)},
-                       {"theory_rational", theory::to_string(values.second)}};
-  return exponents;
-}
-
 /// The Euler check's keys: A against the exact TvNS amplitude and the profiles' L1 errors.
 void add_tvns_comparison(const NavierStokesResult& r, common::Json& summary) {
   const TvnsComparison c = compare_to_tvns(r);
@@ -68,6 +51,19 @@ void add_tvns_comparison(const NavierStokesResult& r, common::Json& summary) {
 }
 
 }  // namespace
+
+common::Json exponents_json(const NavierStokesResult& r) {
+  const theory::ScalingExponents theory_exponents = theory::scaling_exponents(r.config.physics.d);
+  const RunningExponents e = r.final_exponents();
+  common::Json exponents = common::Json::object();
+  for (const CoreExponent& q : core_exponents) {
+    const theory::Rational law = theory_exponents.at(q.name).in_time;
+    exponents[q.name] = {{"measured", e.*q.time_exponent},
+                         {"theory", theory::to_double(law)},
+                         {"theory_rational", theory::to_string(law)}};
+  }
+  return exponents;
+}
 
 Table sample_table(const NavierStokesResult& r) {
   using S = NavierStokesSample;

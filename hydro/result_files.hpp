@@ -34,6 +34,10 @@ Table profile_table(const NavierStokesProfile& profile);
 /// start's R/λ), transport prefactors, energy errors, cells and cost. `coldblast hydro --format json`
 /// prints it; the Python module's result holds it as `summary` (docs/cli.md lists the keys).
 common::Json result_summary(const NavierStokesResult& result);
+/// The core's final time exponents beside the paper's rationals (Table 2; R: 2/(d+2)), by
+/// core_exponents' names: {"H": {"measured", "theory", "theory_rational"}, ...}; the summary's
+/// "exponents" and reproduce's hydro.json.
+common::Json exponents_json(const NavierStokesResult& result);
 
 /// A table as CSV text after `header` (each line "# ..."), columns in order.
 std::string table_csv(const std::string& header, const Table& table);
