@@ -36,6 +36,12 @@ double rsa_jamming_fraction(int d) {
   throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
 }
 
+double rsa_interior_deficit(int d, double n, double sigma, double R) {
+  if (d == 2) return 2.0 * n * std::pow(sigma, 3) / (3.0 * R);
+  if (d == 3) return 3.0 * M_PI * n * std::pow(sigma, 4) / (8.0 * R);
+  throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
+}
+
 namespace {
 
 /// Flat hash grid used while placing particles.
@@ -257,14 +263,15 @@ double placement_grid_width(std::size_t count, double radius, double R) {
   return std::max(2.0 * radius, std::pow(density, -1.0 / D));
 }
 
-template <int D>
-void fill_by_voxels(std::mt19937_64& rng, std::size_t count, double radius, double R, PlacementGrid<D>& grid,
-                    std::vector<Vec<D>>& centres, RsaReport& report) {
-  VoxelPhase<D> voxels(grid, centres, 2.0 * radius, R);
+/// Phase 2 of RSA until `centres` holds `count` centres: the voxel phase over the shell r_in <= |x| < R.
+template <int D, class RadiusOf>
+void fill_by_voxels(std::mt19937_64& rng, std::size_t count, double radius, double r_in, double R,
+                    PlacementGrid<D>& grid, std::vector<Vec<D>>& centres, RadiusOf radius_of, RsaReport& report) {
+  VoxelPhase<D> voxels(grid, centres, 2.0 * radius, R, r_in);
   report.voxels_initial = voxels.size();
-  const auto same_radius = [radius](std::int32_t) { return radius; };
   const auto free = [&](const Vec<D>& x) {
-    return x.squaredNorm() < R * R && !grid.overlaps(x, radius, centres, same_radius);
+    const double r2 = x.squaredNorm();
+    return r2 < R * R && r2 >= r_in * r_in && !grid.overlaps(x, radius, centres, radius_of);
   };
   const auto insert = [&](const Vec<D>& x) {
     centres.push_back(x);
@@ -277,6 +284,56 @@ void fill_by_voxels(std::mt19937_64& rng, std::size_t count, double radius, doub
       break;
     }
   report.voxel_levels = voxels.level();
+}
+
+/// RSA of up to `count` spheres of radius `radius` with centres in the shell r_in <= |x| < R (r_in = 0:
+/// the ball) that overlap none of the `obstacles` (their radii `obstacle_radius`, each <= obstacle_max;
+/// the first `obstacles.size()` ids of the placement grid). Phase 1 draws uniformly in the shell
+/// (points of the inner ball are redrawn, not counted as failures); the voxel phase follows after
+/// `switch_after` failures in a row. Returns the new centres, ordered along the placement grid.
+template <int D>
+std::vector<Vec<D>> rsa_in_shell(std::mt19937_64& rng, std::size_t count, double radius, double r_in, double R,
+                                 const std::vector<Vec<D>>& obstacles, const std::vector<double>& obstacle_radius,
+                                 double obstacle_max, RsaReport& report, std::uint64_t switch_after) {
+  report = RsaReport{};
+  const std::size_t first = obstacles.size();
+  // The grid's width follows the density: count over the shell's share of the ball.
+  const double ball_count = static_cast<double>(count) / (1.0 - std::pow(r_in / R, D));
+  PlacementGrid<D> grid(R, placement_grid_width<D>(static_cast<std::size_t>(ball_count), radius, R), first + count);
+  grid.reach_distance = radius + std::max(radius, obstacle_max);
+  std::vector<Vec<D>> centres(obstacles);
+  centres.reserve(first + count);
+  for (std::size_t i = 0; i < first; ++i) grid.insert(static_cast<std::int32_t>(i), centres[i]);
+  const auto radius_of = [&](std::int32_t j) {
+    return static_cast<std::size_t>(j) < first ? obstacle_radius[static_cast<std::size_t>(j)] : radius;
+  };
+  // Phase 1: plain trials (in a ball without obstacles, the placements of earlier versions, bit for bit).
+  std::uint64_t failures = 0;
+  while (centres.size() < first + count && failures < switch_after) {
+    Vec<D> x = uniform_in_ball<D>(rng, R);
+    while (x.squaredNorm() < r_in * r_in) x = uniform_in_ball<D>(rng, R);
+    if ((++report.trials & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
+    if (grid.overlaps(x, radius, centres, radius_of)) {
+      ++failures;
+      continue;
+    }
+    failures = 0;
+    centres.push_back(x);
+    grid.insert(static_cast<std::int32_t>(centres.size() - 1), x);
+  }
+  if (centres.size() < first + count)
+    fill_by_voxels<D>(rng, first + count, radius, r_in, R, grid, centres, radius_of, report);
+  report.placed = centres.size() - first;
+  // Order along the placement grid so that neighbours in space are near in memory.
+  const std::size_t placed = report.placed;
+  std::vector<std::int64_t> key(placed);
+  for (std::size_t i = 0; i < placed; ++i) key[i] = grid.cell(centres[first + i]);
+  std::vector<std::size_t> order(placed);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  std::vector<Vec<D>> sorted(placed);
+  for (std::size_t i = 0; i < placed; ++i) sorted[i] = centres[first + order[i]];
+  return sorted;
 }
 
 /// Puts every host into `grid` and returns, in index order, those that overlap an impurity (centre
@@ -392,38 +449,7 @@ template <int D>
 std::vector<Vec<D>> random_sequential_addition_report(std::mt19937_64& rng, std::size_t count, double radius,
                                                       double region_radius, RsaReport& report,
                                                       std::uint64_t switch_after) {
-  report = RsaReport{};
-  PlacementGrid<D> grid(region_radius, placement_grid_width<D>(count, radius, region_radius), count);
-  grid.reach_distance = 2.0 * radius;
-  std::vector<Vec<D>> centres;
-  centres.reserve(count);
-  const auto same_radius = [radius](std::int32_t) { return radius; };
-  // Phase 1: plain trials (at ordinary packing fractions the only phase, so those placements are
-  // the ones earlier versions made, bit for bit).
-  std::uint64_t failures = 0;
-  while (centres.size() < count && failures < switch_after) {
-    const Vec<D> x = uniform_in_ball<D>(rng, region_radius);
-    if ((++report.trials & 0xffff) == 0) common::throw_if_stop_requested();  // SIGTERM/SIGINT during set-up
-    if (grid.overlaps(x, radius, centres, same_radius)) {
-      ++failures;
-      continue;
-    }
-    failures = 0;
-    centres.push_back(x);
-    grid.insert(static_cast<std::int32_t>(centres.size() - 1), x);
-  }
-  if (centres.size() < count) fill_by_voxels<D>(rng, count, radius, region_radius, grid, centres, report);
-  report.placed = centres.size();
-  // Order along the placement grid so that neighbours in space are near in memory.
-  const std::size_t placed = centres.size();
-  std::vector<std::int64_t> key(placed);
-  for (std::size_t i = 0; i < placed; ++i) key[i] = grid.cell(centres[i]);
-  std::vector<std::size_t> order(placed);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
-  std::vector<Vec<D>> sorted(placed);
-  for (std::size_t i = 0; i < placed; ++i) sorted[i] = centres[order[i]];
-  return sorted;
+  return rsa_in_shell<D>(rng, count, radius, 0.0, region_radius, {}, {}, radius, report, switch_after);
 }
 
 template <int D>
@@ -437,6 +463,32 @@ std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t
                        ratio * static_cast<double>(count));
   }
   return centres;
+}
+
+template <int D>
+void add_rsa_shell(std::mt19937_64& rng, InitialState<D>& state, std::size_t count, double r_in, double r_out) {
+  const double a = state.host.radius;
+  const double largest = std::max(a, state.impurity.radius);
+  std::vector<Vec<D>> obstacles;
+  std::vector<double> obstacle_radius;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    const double r_i = state.species[i] == impurity_species ? state.impurity.radius : a;
+    if (state.position[i].norm() + a + r_i > r_in) {  // only these can touch a centre at |x| >= r_in
+      obstacles.push_back(state.position[i]);
+      obstacle_radius.push_back(r_i);
+    }
+  }
+  RsaReport report;
+  const std::vector<Vec<D>> added = rsa_in_shell<D>(rng, count, a, r_in, r_out, obstacles, obstacle_radius, largest,
+                                                    report, rsa_voxel_switch_default);
+  if (added.size() < count) {
+    const double ratio = std::pow(a, D) / (std::pow(r_out, D) - std::pow(r_in, D));  // sphere / shell volume
+    throw RsaSaturated(added.size(), count, ratio * static_cast<double>(added.size()),
+                       ratio * static_cast<double>(count));
+  }
+  state.position.insert(state.position.end(), added.begin(), added.end());
+  state.velocity.resize(state.size(), Vec<D>::Zero());
+  state.species.resize(state.size(), host_species);
 }
 
 template <int D>
@@ -617,6 +669,8 @@ template std::vector<Vec<2>> random_sequential_addition_report<2>(std::mt19937_6
 template std::vector<Vec<3>> random_sequential_addition_report<3>(std::mt19937_64&, std::size_t, double, double,
                                                                   RsaReport&, std::uint64_t);
 template std::vector<Vec<2>> random_sequential_addition<2>(std::mt19937_64&, std::size_t, double, double);
+template void add_rsa_shell<2>(std::mt19937_64&, InitialState<2>&, std::size_t, double, double);
+template void add_rsa_shell<3>(std::mt19937_64&, InitialState<3>&, std::size_t, double, double);
 template std::vector<Vec<3>> random_sequential_addition<3>(std::mt19937_64&, std::size_t, double, double);
 template KickReport place_impurities<2>(std::mt19937_64&, InitialState<2>&, std::size_t, double,
                                         std::vector<std::int32_t>&);

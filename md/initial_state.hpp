@@ -26,6 +26,15 @@ double standard_normal(std::mt19937_64& rng);
 /// Largest packing fraction random sequential addition reaches (jamming): 0.547 (d = 2), 0.3841 (d = 3).
 double rsa_jamming_fraction(int d);
 
+/// Relative deficit of the density inside a ball of radius R filled by RSA with round(n Ω_d R^d)
+/// spheres of diameter sigma, to first order in n: the free edge leaves candidates near it more room,
+/// so a layer at the edge holds a surface excess Γ per area, taken from the interior. A candidate at
+/// depth z < sigma misses the part V_out(z) of its exclusion ball beyond the edge while the density
+/// grows from 0 to n, so Γ = (n²/2) ∫_0^sigma V_out(z) dz = n² sigma³/3 (d = 2), π n² sigma⁴/8 (d = 3)
+/// (flat edge, R >> sigma), and the deficit is Γ S/(n V) = d Γ/(n R): 2 n sigma³/(3 R) and
+/// 3π n sigma⁴/(8 R). Measured: tests/md/test_rsa.cpp; docs/md-output.md, "Region".
+double rsa_interior_deficit(int d, double n, double sigma, double R);
+
 /// Consecutive failed random trials after which RSA switches to its voxel phase (below).
 inline constexpr std::uint64_t rsa_voxel_switch_default = 1000;
 
@@ -63,6 +72,14 @@ class RsaSaturated : public std::invalid_argument {
 template <int D>
 std::vector<Vec<D>> random_sequential_addition(std::mt19937_64& rng, std::size_t count, double radius,
                                                double region_radius);
+
+/// Widens a placed configuration (a grown blast region, md/realization.hpp): `count` resting hosts by
+/// RSA with centres in the shell r_in <= |x| < r_out, overlapping none of the particles already in
+/// `state` (of either species), appended to it. The gas inside r_in is untouched, so a region grown
+/// shell by shell holds the same particles whenever it grows. Throws RsaSaturated if the shell
+/// saturates first.
+template <int D>
+void add_rsa_shell(std::mt19937_64& rng, InitialState<D>& state, std::size_t count, double r_in, double r_out);
 
 /// How kick_impurities moved the host particles that a larger impurity would overlap.
 struct KickReport {
