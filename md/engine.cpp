@@ -147,7 +147,7 @@ void Engine<D, Queue>::guard_tripped() const {
           << " (2 sigma) of the edge of the simulated region (radius " << config_.region_radius << ") at t = " << now_
           << ": the shock outran the theory estimate; "
           << (config_.guard_advice_at ? config_.guard_advice_at(now_) : config_.guard_advice);
-  throw std::runtime_error(message.str());
+  throw GuardTripped(message.str(), now_);
 }
 
 template <int D, class Queue>

@@ -9,6 +9,7 @@
 // (md/event_queue.hpp) and the observers that watch the collisions (md/collision_observer.hpp).
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,13 @@ struct EngineConfig {
   /// recollision (Eq. (36) of the paper has none); host-host collisions are unchanged, and energy
   /// and momentum stay conserved. At most 64 impurities.
   bool impurity_recollisions = true;
+};
+
+/// A moving particle reached the guard of an open region (EngineConfig::guard_radius) at `time`.
+class GuardTripped : public std::runtime_error {
+ public:
+  GuardTripped(const std::string& message, double time_) : std::runtime_error(message), time(time_) {}
+  double time;
 };
 
 template <int D, class Queue>
@@ -156,7 +164,7 @@ class Engine {
   void check_guard(std::int32_t id) const {
     if (!config_.periodic && particles_[id].position_at(now_).squaredNorm() > guard_trigger2_) guard_tripped();
   }
-  [[noreturn]] void guard_tripped() const;
+  [[noreturn]] void guard_tripped() const;  // throws GuardTripped
   void check_overlaps_of(std::int32_t id, double tolerance = 1e-9) const;
   // Throws std::logic_error if j (displaced by the periodic image `shift`) overlaps i, at x_i, now.
   void check_pair(std::int32_t i, const Vec<D>& x_i, std::int32_t j, const Vec<D>& shift, double tolerance) const;

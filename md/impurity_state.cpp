@@ -10,11 +10,11 @@ namespace coldblast::md {
 
 namespace {
 template <int D>
-std::vector<ImpurityState> states_at(const ResolvedScene& scene, long long index, double t) {
-  const InitialState<D> state = blast_initial_state<D>(scene, index);
+std::vector<ImpurityState> states_in(const ResolvedScene& scene, long long index, double t, int growths) {
+  const InitialState<D> state = blast_initial_state<D>(scene, index, growths);
   // The engine of `md run` (blast_engine_config; bucketed and heap calendars give the same
   // trajectories, tested), without observers: they do not change a trajectory.
-  Engine<D, CalendarEventQueue> engine(blast_engine_config<D>(scene), state);
+  Engine<D, CalendarEventQueue> engine(blast_engine_config<D>(scene, growths), state);
   engine.run_until(t);
   std::vector<ImpurityState> states;
   for (std::size_t id = 0; id < state.size(); ++id) {
@@ -33,6 +33,12 @@ std::vector<ImpurityState> states_at(const ResolvedScene& scene, long long index
     states.push_back(std::move(s));
   }
   return states;
+}
+
+/// states_in in the region `md run` grows to (with_growing_region).
+template <int D>
+std::vector<ImpurityState> states_at(const ResolvedScene& scene, long long index, double t) {
+  return with_growing_region(scene, [&](int growths) { return states_in<D>(scene, index, t, growths); });
 }
 
 std::string number_text(double x) {

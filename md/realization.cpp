@@ -61,20 +61,23 @@ std::vector<PathPoint> impurity_paths(const Engine<D, Queue>& engine, const std:
   return points;
 }
 
+/// One attempt at realization `index` in the region grown `growths` times (run_realization_in).
 template <int D, class Queue>
-RealizationOutput run_realization_in(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
-                                     const RealizationExtras& extras,
-                                     const std::function<void(long long, double)>& realization_time) {
+RealizationOutput run_attempt(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
+                              const RealizationExtras& extras,
+                              const std::function<void(long long, double)>& realization_time,
+                              const InitialState<D>& state, int growths) {
   const BlastConfig& c = scene.config;
-  if (realization_time) realization_time(index, 0.0);
-  const InitialState<D> state = blast_initial_state<D>(scene, index);
 
-  const EngineConfig<D> config = blast_engine_config<D>(scene);
+  const EngineConfig<D> config = blast_engine_config<D>(scene, growths);
   Engine<D, Queue> engine(config, state);
   BlastObserver<D, Queue> observer(scene, layout, engine, extras.paths);
 
   RealizationOutput out;
   out.record.assign(layout.size(), 0.0);
+  out.growths = growths;
+  out.region_radius = config.region_radius;
+  out.particles = state.size();
   std::vector<std::pair<double, int>> stops;  // (time, k) with k = -1 for a snapshot
   for (std::size_t k = 0; k < scene.times.size(); ++k) stops.push_back({scene.times[k], static_cast<int>(k)});
   for (const double t : extras.snapshot_times) stops.push_back({t, -1});
@@ -86,8 +89,10 @@ RealizationOutput run_realization_in(const ResolvedScene& scene, const Observabl
     if (realization_time) realization_time(index, t);
     if (k >= 0)
       observer.measure(k, out.record);
-    else
+    else {
       out.snapshots.push_back(capture(engine, extras.selection));
+      out.snapshots.back().region_radius = config.region_radius;
+    }
   }
   engine.run_until(c.t_max);
   out.collisions = engine.collision_count();
@@ -99,26 +104,40 @@ RealizationOutput run_realization_in(const ResolvedScene& scene, const Observabl
   return out;
 }
 
-/// What to do when a particle reached the guard at time `now`: the box_margin whose region would hold
-/// it to t_max if every particle ahead of the blast kept its speed (in the cold gas they only slow
-/// down, apart from hosts hit head-on by heavier impurities), the region scaled by t_max/now; above
-/// box_margin's 100, lower t_max or E instead.
-std::string guard_advice(const ResolvedScene& scene, double now) {
-  const BlastConfig& c = scene.config;
-  const double needed = scene.region_radius * c.t_max / std::max(now, 1e-300) / scene.shock_radius_at_t_max;
-  const std::string margin = "raise box_margin (now " + format_number(c.box_margin) + ")";
-  if (needed > 100.0)
-    return margin + ": it would need " + format_number(needed) + ", above its maximum 100, so lower t_max or E";
-  return margin + " to " + format_number(std::ceil(needed * 10.0) / 10.0) +
-         " (the region scaled by t_max/t, enough if no particle ahead of the blast speeds up) or give a smaller A_d "
-         "(now " +
-         format_number(scene.A_d) + ")";
+/// run_attempt in regions grown until one holds the moving particles to t_max (with_growing_region).
+template <int D, class Queue>
+RealizationOutput run_realization_in(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
+                                     const RealizationExtras& extras,
+                                     const std::function<void(long long, double)>& realization_time) {
+  InitialState<D> state;
+  return with_growing_region(scene, [&](int growths) {
+    if (realization_time) realization_time(index, 0.0);
+    if (growths == 0)
+      state = blast_initial_state<D>(scene, index);
+    else
+      grow_initial_state<D>(scene, index, state, growths);  // the attempt before's gas, plus a shell
+    return run_attempt<D, Queue>(scene, layout, index, extras, realization_time, state, growths);
+  });
+}
+
+/// The guard's advice in the widest region a realization may grow to: t_max or E are too large.
+std::string guard_advice(const ResolvedScene& scene, int growths) {
+  return "the region grew " + std::to_string(growths) + " times to radius " +
+         format_number(region_radius_after(scene, growths)) + ", the widest that " +
+         format_number(max_region_particles) + " particles allow; lower t_max or E";
+}
+
+/// The generator of shell k >= 1 of a grown region: a stream of its own, so that the first region
+/// and the start draw what they draw in a region that never grows.
+std::mt19937_64 shell_rng(std::uint64_t seed, long long index, int k) {
+  return realization_rng(common::splitmix64(seed ^ (0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(k))),
+                         static_cast<std::uint64_t>(index));
 }
 
 }  // namespace
 
 template <int D>
-InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index) {
+InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index, int growths) {
   const BlastConfig& c = scene.config;
   auto rng = realization_rng(c.seed, static_cast<std::uint64_t>(index));
   InitialState<D> state;
@@ -138,26 +157,40 @@ InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index)
   state.velocity.assign(scene.particle_count, Vec<D>::Zero());
   state.species.assign(scene.particle_count, host_species);
   start_blast<D>(rng, state, c.start, static_cast<std::size_t>(c.impurities.count), c.E, scene.region_radius);
+  for (int k = 1; k <= growths; ++k) grow_initial_state<D>(scene, index, state, k);
   return state;
 }
-template InitialState<2> blast_initial_state<2>(const ResolvedScene&, long long);
-template InitialState<3> blast_initial_state<3>(const ResolvedScene&, long long);
+template InitialState<2> blast_initial_state<2>(const ResolvedScene&, long long, int);
+template InitialState<3> blast_initial_state<3>(const ResolvedScene&, long long, int);
 
 template <int D>
-EngineConfig<D> blast_engine_config(const ResolvedScene& scene) {
+void grow_initial_state(const ResolvedScene& scene, long long index, InitialState<D>& state, int growth) {
+  const double r_in = region_radius_after(scene, growth - 1), r_out = region_radius_after(scene, growth);
+  if (growth < 1 || state.size() != particles_within(scene, r_in))
+    throw std::logic_error("grow_initial_state: growth " + std::to_string(growth) +
+                           " needs the state after growth - 1 (" + std::to_string(particles_within(scene, r_in)) +
+                           " particles), not " + std::to_string(state.size()));
+  auto shell = shell_rng(scene.config.seed, index, growth);
+  add_rsa_shell<D>(shell, state, particles_within(scene, r_out) - state.size(), r_in, r_out);
+}
+template void grow_initial_state<2>(const ResolvedScene&, long long, InitialState<2>&, int);
+template void grow_initial_state<3>(const ResolvedScene&, long long, InitialState<3>&, int);
+
+template <int D>
+EngineConfig<D> blast_engine_config(const ResolvedScene& scene, int growths) {
   const BlastConfig& c = scene.config;
   EngineConfig<D> config;
   config.periodic = false;
-  config.region_radius = scene.region_radius;
-  config.guard_radius = scene.guard_radius;
-  config.guard_advice_at = [scene](double now) { return guard_advice(scene, now); };
+  config.region_radius = region_radius_after(scene, growths);
+  config.guard_radius = config.region_radius - (scene.region_radius - scene.guard_radius);
+  config.guard_advice = guard_advice(scene, growths);
   config.cell_width = c.cell_width;
   config.overlap_check = c.overlap_check;
   config.impurity_recollisions = c.impurities.recollide;
   return config;
 }
-template EngineConfig<2> blast_engine_config<2>(const ResolvedScene&);
-template EngineConfig<3> blast_engine_config<3>(const ResolvedScene&);
+template EngineConfig<2> blast_engine_config<2>(const ResolvedScene&, int);
+template EngineConfig<3> blast_engine_config<3>(const ResolvedScene&, int);
 
 RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
                                   const RealizationExtras& extras, const std::function<void(long long, double)>& time) {

@@ -47,6 +47,13 @@ void add_files(NamedFiles& files, const NamedFiles& more) {
   files.assign(by_name.begin(), by_name.end());
 }
 
+/// The note on a realization whose region grew (md::run_realization): stderr says why it took longer.
+std::string growth_note(long long r, const md::RealizationOutput& out) {
+  return "realization " + std::to_string(r) + " ran in a region grown " + std::to_string(out.growths) + " time" +
+         (out.growths == 1 ? "" : "s") + " (radius " + common::format_significant(out.region_radius, 4) + ", " +
+         std::to_string(out.particles) + " particles): a moving particle reached the guard of the smaller one";
+}
+
 BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_id, long long block, BlockProgress start,
                         const std::atomic<bool>* stop, const BlockCallbacks& callbacks) {
   const md::ObservableLayout layout(scene);
@@ -72,6 +79,11 @@ BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_i
       const md::RealizationOutput out =
           md::run_realization(scene, layout, r, realization_extras(scene, r), callbacks.realization_time);
       md::add_realization(s, out.record, out.collisions, out.energy_error);
+      if (out.growths > 0 && callbacks.note) {
+        static std::mutex one_at_a_time;
+        const std::lock_guard<std::mutex> lock(one_at_a_time);
+        callbacks.note(growth_note(r, out));
+      }
       const NamedFiles files = realization_files(scene, run_id, r, out);
       progress.files.insert(progress.files.end(), files.begin(), files.end());
       if (callbacks.realization_done) callbacks.realization_done();
@@ -138,6 +150,7 @@ EnsemblePlan plan_ensemble(const md::BlastConfig& config, const RunOptions& opti
 BlockCallbacks checkpoint_callbacks(const RunOptions& options, long long block) {
   BlockCallbacks callbacks;
   callbacks.realization_time = options.realization_time;
+  callbacks.note = options.warning;
   callbacks.save_seconds = options.checkpoint_seconds;
   if (!options.out.empty())
     callbacks.save = [folder = checkpoint_folder(options.out), block](BlockProgress& progress) {

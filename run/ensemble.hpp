@@ -51,7 +51,8 @@ struct RunOptions {
   /// The run id (run/run_directory.hpp); empty = a new one, or the checkpoint's when resuming.
   std::string run_id;
   /// Called before any work with a warning for stderr (snapshots above ~100 MB:
-  /// run/snapshot_files.hpp); may be empty.
+  /// run/snapshot_files.hpp), and after a realization whose region grew (md::run_realization),
+  /// from the thread that ran it, one call at a time; may be empty.
   std::function<void(const std::string&)> warning;
 };
 
@@ -86,6 +87,7 @@ struct BlockProgress {
 struct BlockCallbacks {
   std::function<void()> realization_done;                   ///< after each realization
   std::function<void(long long, double)> realization_time;  ///< RunOptions::realization_time
+  std::function<void(const std::string&)> note;             ///< RunOptions::warning
   /// Saves the block's progress (the checkpoint): every `save_seconds`, and when the block stops
   /// early (a stop request, another thread's failure, its own failure) with realizations done.
   std::function<void(BlockProgress&)> save;

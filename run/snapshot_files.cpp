@@ -75,9 +75,15 @@ double snapshot_bytes_estimate(const md::ResolvedScene& scene) {
     until_t.t_max = t;
     const double R = theory::shock_radius(blast, t);  // Eq. (1) [R-shock]
     const double reach = std::max(1.2 * R, md::early_reach_bound(until_t, scene.impurity_radius, R));
-    const double radius = std::min(scene.region_radius, reach + 2.0 * c.a * c.snapshot_margin);
+    // The region a realization grows to when the reach passes its guard (md/realization.hpp).
+    int growths = 0;
+    while (md::region_radius_after(scene, growths) - (scene.region_radius - scene.guard_radius) < reach &&
+           md::region_radius_after(scene, growths + 1) <= scene.max_region_radius)
+      ++growths;
+    const double region = md::region_radius_after(scene, growths);
+    const double radius = std::min(region, reach + 2.0 * c.a * c.snapshot_margin);
     const double front = c.n * theory::unit_ball_volume(c.d) * std::pow(radius, c.d);
-    const auto all = static_cast<double>(scene.particle_count);
+    const auto all = static_cast<double>(md::particles_within(scene, region));
     particles += (c.snapshot_particles == "all" ? all : std::min(all, front)) / c.snapshot_stride;
   }
   return particles * static_cast<double>(c.snapshot_realizations.size()) * (c.d == 2 ? 110.0 : 170.0);
@@ -102,7 +108,8 @@ std::string snapshot_size_warning(const md::ResolvedScene& scene) {
 
 std::string extxyz_frame(const md::ResolvedScene& scene, const std::string& run_id, const md::SnapshotFrame& frame) {
   const int d = scene.config.d;
-  const double L = 2.0 * scene.region_radius, lo = -scene.region_radius;
+  const double region = std::max(scene.region_radius, frame.region_radius);  // a grown region is wider
+  const double L = 2.0 * region, lo = -region;
   const double Lz = d == 3 ? L : 2.0 * scene.config.a;
   const double oz = d == 3 ? lo : -scene.config.a;
   std::ostringstream out;

@@ -1,0 +1,90 @@
+// A realization (md/realization.cpp) whose moving particles reach the guard of its region starts
+// again in a wider region holding the same gas inside: the same realization, up to the guard
+// exactly as before, and then to t_max.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "md/event_queue.hpp"
+#include "md/observers.hpp"
+#include "md/realization.hpp"
+#include "run/scene_file.hpp"
+
+using namespace coldblast::md;
+using coldblast::run::default_scene_toml;
+using coldblast::run::parse_scene;
+
+namespace {
+/// The impurities' positions and the collision count after running realization `index`, grown
+/// `growths` times, to t.
+struct Snapshot {
+  std::vector<Vec<3>> impurities;
+  std::uint64_t collisions = 0;
+};
+Snapshot run_to(const ResolvedScene& scene, long long index, int growths, double t) {
+  const InitialState<3> state = blast_initial_state<3>(scene, index, growths);
+  Engine<3, CalendarEventQueue> engine(blast_engine_config<3>(scene, growths), state);
+  engine.run_until(t);
+  Snapshot s;
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (state.species[i] == impurity_species) s.impurities.push_back(engine.position(static_cast<std::int32_t>(i)));
+  s.collisions = engine.collision_count();
+  return s;
+}
+}  // namespace
+
+TEST_CASE("a realization that reaches its region's guard grows the region and stays the same realization", "[fast]") {
+  // A lone impurity in 3D runs far ahead of Eq. (1) early on (it needed box_margin 5-6 before the
+  // region held its early reach, docs/stress.md). Its region is shrunk by hand to box_margin 3 ×
+  // R(t_max), which realization 0's particles outrun.
+  ResolvedScene scene = resolve_scene(parse_scene(
+      default_scene_toml(), {"d=3", "impurities.count=1", "t_max=20", "A_d=0.3", "box_margin=3", "realizations=1"}));
+  const double bands = scene.region_radius - scene.guard_radius;  // 2 contact distances
+  scene.region_radius = 3.0 * scene.shock_radius_at_t_max + 2.0 * bands;
+  scene.guard_radius = scene.region_radius - bands;
+  scene.particle_count = particles_within(scene, scene.region_radius);
+  double tripped = -1.0;
+  try {
+    run_to(scene, 0, 0, scene.config.t_max);
+  } catch (const GuardTripped& e) {
+    tripped = e.time;
+  }
+  REQUIRE(tripped > 0.0);
+  // Up to the guard no moving particle can touch the new shell: the same collisions, and the
+  // impurity's position to round-off (a wider cell grid rounds its crossings differently).
+  const Snapshot first = run_to(scene, 0, 0, 0.999 * tripped), grown = run_to(scene, 0, 1, 0.999 * tripped);
+  CHECK(first.collisions > 0);
+  CHECK(grown.collisions == first.collisions);
+  REQUIRE(grown.impurities.size() == 1);
+  CHECK((grown.impurities[0] - first.impurities[0]).norm() < 1e-9 * first.impurities[0].norm());
+
+  // run_realization grows until the region holds it to t_max, energy conserved.
+  const ObservableLayout layout(scene);
+  const RealizationOutput out = run_realization(scene, layout, 0);
+  CHECK(out.growths >= 1);
+  CHECK(out.region_radius == Approx(scene.region_radius * std::pow(region_growth, out.growths)).epsilon(1e-15));
+  CHECK(out.particles == particles_within(scene, out.region_radius));
+  CHECK(out.energy_error < 1e-12);
+  // It ran in the first region that holds it: the one before trips its guard too.
+  bool smaller_trips = false;
+  try {
+    run_to(scene, 0, out.growths - 1, scene.config.t_max);
+  } catch (const GuardTripped&) {
+    smaller_trips = true;
+  }
+  CHECK(smaller_trips);
+}
+
+TEST_CASE("the paper scenes never grow their region", "[fast]") {
+  // box_margin × R(t_max) holds the blast: the realizations of docs/benchmarks.md's checksums run
+  // in the region Eq. (1) gives (md_driver blast 2 1: ff2b3608fe53c804, unchanged by growing regions).
+  const ResolvedScene scene = resolve_scene(parse_scene(
+      default_scene_toml(), {"n=0.15", "E=5.7", "A_d=0.22380034", "t_min=0.9765625", "box_margin=1.6", "t_max=4000"}));
+  const ObservableLayout layout(scene);
+  for (long long r = 0; r < 2; ++r) {
+    const RealizationOutput out = run_realization(scene, layout, r);
+    CHECK(out.growths == 0);
+    CHECK(out.particles == scene.particle_count);
+  }
+}
