@@ -117,6 +117,7 @@ void BlastConfig::validate() const {
   require_integer_in_range("realizations", realizations, 1, 1000000000);
   require_integer_in_range("block_size", block_size, 1, 1000000);
   require_in_range("box_margin", box_margin, 1.25, 100.0, Bound::closed, Bound::closed);
+  require_integer_in_range("region_growths", region_growths, 0, 30);
   require_in_range("cell_width", cell_width, 0.0, inf, Bound::closed, Bound::open, " (0 = automatic)");
   if (queue != "calendar" && queue != "heap")
     throw std::invalid_argument("queue = " + queue + " is not one of: calendar, heap");

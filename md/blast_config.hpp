@@ -48,6 +48,9 @@ struct BlastConfig {
   int block_size = 16;          ///< realizations per block for jackknife errors (compare/)
   std::vector<std::string> observables = default_observable_names();
   double box_margin = 3.0;  ///< simulated radius = box_margin × R(t_max) of Eq. (1), >= 1.25 (3: safe for small blasts)
+  /// How many times a realization's region may grow (md/realization.hpp), in [0, 30]; 0: a particle
+  /// at the guard stops the run (exit 1), as before regions grew.
+  int region_growths = 8;
   double cell_width = 0.0;         ///< cell side (length); 0 = automatic
   std::string queue = "calendar";  ///< event calendar: "calendar" (bucketed) or "heap"
   /// Snapshots (observable "snapshots"; docs/md-output.md): their times (time), in (0, t_max], or

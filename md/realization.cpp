@@ -120,11 +120,24 @@ RealizationOutput run_realization_in(const ResolvedScene& scene, const Observabl
   });
 }
 
-/// The guard's advice in the widest region a realization may grow to: t_max or E are too large.
-std::string guard_advice(const ResolvedScene& scene, int growths) {
-  return "the region grew " + std::to_string(growths) + " times to radius " +
-         format_number(region_radius_after(scene, growths)) + ", the widest that " +
-         format_number(max_region_particles) + " particles allow; lower t_max or E";
+/// What to do when a particle reached the guard of the last region a realization may grow to
+/// (last_growth), at time `now`. Below the particle cap: more growths, or a first region that holds
+/// the particles to t_max if every particle ahead of the blast kept its speed (in the cold gas they
+/// only slow down, apart from hosts hit head-on by heavier impurities), scaled by t_max/now.
+std::string guard_advice(const ResolvedScene& scene, int growths, double now) {
+  const BlastConfig& c = scene.config;
+  const std::string grew = growths == 0 ? "" : "(the region grew " + std::to_string(growths) + " times) ";
+  if (region_radius_after(scene, growths + 1) > scene.max_region_radius)
+    return grew + "a wider region would hold more than 1.5e9 particles; lower t_max or E";
+  const double needed =
+      region_radius_after(scene, growths) * c.t_max / std::max(now, 1e-300) / scene.shock_radius_at_t_max;
+  const std::string margin = grew + "raise region_growths (now " + std::to_string(c.region_growths) +
+                             ") or box_margin (now " + format_number(c.box_margin) + ")";
+  if (needed > 100.0) return margin + ", or lower t_max or E";
+  return margin + " to " + format_number(std::ceil(needed * 10.0) / 10.0) +
+         " (the region scaled by t_max/t, enough if no particle ahead of the blast speeds up), or give a smaller A_d "
+         "(now " +
+         format_number(scene.A_d) + ")";
 }
 
 /// The generator of shell k >= 1 of a grown region: a stream of its own, so that the first region
@@ -163,6 +176,10 @@ InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index,
 template InitialState<2> blast_initial_state<2>(const ResolvedScene&, long long, int);
 template InitialState<3> blast_initial_state<3>(const ResolvedScene&, long long, int);
 
+bool last_growth(const ResolvedScene& scene, int growths) {
+  return growths >= scene.config.region_growths || region_radius_after(scene, growths + 1) > scene.max_region_radius;
+}
+
 template <int D>
 void grow_initial_state(const ResolvedScene& scene, long long index, InitialState<D>& state, int growth) {
   const double r_in = region_radius_after(scene, growth - 1), r_out = region_radius_after(scene, growth);
@@ -183,7 +200,7 @@ EngineConfig<D> blast_engine_config(const ResolvedScene& scene, int growths) {
   config.periodic = false;
   config.region_radius = region_radius_after(scene, growths);
   config.guard_radius = config.region_radius - (scene.region_radius - scene.guard_radius);
-  config.guard_advice = guard_advice(scene, growths);
+  config.guard_advice_at = [scene, growths](double now) { return guard_advice(scene, growths, now); };
   config.cell_width = c.cell_width;
   config.overlap_check = c.overlap_check;
   config.impurity_recollisions = c.impurities.recollide;

@@ -30,17 +30,20 @@ InitialState<D> blast_initial_state(const ResolvedScene& scene, long long index,
 template <int D>
 void grow_initial_state(const ResolvedScene& scene, long long index, InitialState<D>& state, int growth);
 
+/// Whether a region grown `growths` times may grow no further (config.region_growths, max_region_radius).
+bool last_growth(const ResolvedScene& scene, int growths);
+
 /// Calls attempt(growths) for growths = 0, 1, ... until a call returns without md::GuardTripped,
 /// and returns its result: a realization in a region grown until it holds the moving particles
-/// (run_realization). A region wider than scene.max_region_radius is not tried: the last guard's
-/// error is rethrown.
+/// (run_realization). Beyond config.region_growths growths, or a region wider than
+/// scene.max_region_radius, is not tried: the last guard's error is rethrown.
 template <class Attempt>
 auto with_growing_region(const ResolvedScene& scene, Attempt attempt) {
   for (int growths = 0;; ++growths) {
     try {
       return attempt(growths);
     } catch (const GuardTripped&) {
-      if (region_radius_after(scene, growths + 1) > scene.max_region_radius) throw;
+      if (last_growth(scene, growths)) throw;
     }
   }
 }

@@ -167,6 +167,8 @@ bool apply_run_key(const std::string& key, const toml::node& node, BlastConfig& 
     c.block_size = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
   } else if (key == "box_margin") {
     c.box_margin = number(node, key);
+  } else if (key == "region_growths") {
+    c.region_growths = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
   } else if (key == "cell_width") {
     c.cell_width = number(node, key);
   } else if (key == "queue") {
@@ -238,7 +240,7 @@ BlastConfig config_from_table(const toml::table& table) {
           " (allowed: name, d, n, a, E, A_d, impurities.{count,mass,radius,recollide}, start.{kind,r0}, t_min, t_max, "
           "realizations, "
           "seed, "
-          "block_size, observables, box_margin, cell_width, queue, snapshot_times, snapshot_fractions, "
+          "block_size, observables, box_margin, region_growths, cell_width, queue, snapshot_times, snapshot_fractions, "
           "snapshot_particles, snapshot_margin, snapshot_stride, snapshot_realizations, profile_bins, p_imp_bins, "
           "overlap_check, [hydro])");
   }
@@ -331,6 +333,7 @@ std::string scene_toml(const BlastConfig& c) {
       out << (i ? ", " : "") << format_number(c.snapshot_fractions[i]);
     out << "]";
   }
+  if (c.region_growths != defaults.region_growths) out << "\nregion_growths = " << c.region_growths;
   if (c.snapshot_particles != defaults.snapshot_particles)
     out << "\nsnapshot_particles = " << quoted(c.snapshot_particles);
   if (c.snapshot_margin != defaults.snapshot_margin) out << "\nsnapshot_margin = " << format_number(c.snapshot_margin);

@@ -23,10 +23,10 @@ endif()
 # in both realizations, one per rank (rank 1's is the path where a worker reports to rank 0); the
 # regex accepts either rank's message. (A_d = 0.1 at t_max = 200 tripped only through the early
 # phase, which the region now holds: md::early_reach_bound.)
-execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set box_margin=1.25 --set A_d=10 --set t_max=1000 --seed 2
+execute_process(COMMAND ${MPIEXEC} ${BINARY} md run --set box_margin=1.25 --set region_growths=0 --set A_d=10 --set t_max=1000 --seed 2
                         --realizations 2 --set block_size=1 --out ${WORK}/failed
                 TIMEOUT 120 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 1 OR NOT err MATCHES "coldblast: failed: (rank 1: )?a moving particle.*raise box_margin"
+if(NOT code EQUAL 1 OR NOT err MATCHES "coldblast: failed: (rank 1: )?a moving particle.*raise region_growths \\(now 0\\) or box_margin"
    OR EXISTS ${WORK}/failed/observables.csv)
   message(FATAL_ERROR "guard trip under mpirun: exit ${code}, expected 1 naming box_margin\n${out}${err}")
 endif()

@@ -76,6 +76,31 @@ TEST_CASE("a realization that reaches its region's guard grows the region and st
   CHECK(smaller_trips);
 }
 
+TEST_CASE("region_growths bounds the growth: 0 stops the run at the guard, naming the keys", "[fast]") {
+  using Catch::Contains;
+  CHECK_THROWS_WITH(resolve_scene(parse_scene(default_scene_toml(), {"region_growths=31", "A_d=0.3"})),
+                    Contains("region_growths = 31 is outside [0, 30]"));
+  const auto scene_text = coldblast::run::scene_toml(parse_scene(default_scene_toml(), {"region_growths=0"}));
+  CHECK_THAT(scene_text, Contains("region_growths = 0"));  // written only when not the default 8
+  CHECK(parse_scene(scene_text, {}).region_growths == 0);
+  CHECK_THAT(coldblast::run::scene_toml(parse_scene(default_scene_toml(), {})), !Contains("region_growths"));
+  // The shrunk region of the case above, not allowed to grow.
+  ResolvedScene scene = resolve_scene(parse_scene(
+      default_scene_toml(), {"d=3", "impurities.count=1", "t_max=20", "A_d=0.3", "box_margin=3", "region_growths=0"}));
+  const double bands = scene.region_radius - scene.guard_radius;
+  scene.region_radius = 3.0 * scene.shock_radius_at_t_max + 2.0 * bands;
+  scene.guard_radius = scene.region_radius - bands;
+  scene.particle_count = particles_within(scene, scene.region_radius);
+  CHECK(last_growth(scene, 0));
+  CHECK_THROWS_AS(run_realization(scene, ObservableLayout(scene), 0), GuardTripped);
+  CHECK_THROWS_WITH(
+      run_realization(scene, ObservableLayout(scene), 0),
+      Contains("a moving particle came within") && Contains("raise region_growths (now 0) or box_margin"));
+  scene.config.region_growths = 8;
+  CHECK(!last_growth(scene, 7));
+  CHECK(last_growth(scene, 8));
+}
+
 TEST_CASE("the paper scenes never grow their region", "[fast]") {
   // box_margin × R(t_max) holds the blast: the realizations of docs/benchmarks.md's checksums run
   // in the region Eq. (1) gives (md_driver blast 2 1: ff2b3608fe53c804, unchanged by growing regions).
