@@ -84,7 +84,8 @@ double region_radius_after(const ResolvedScene& scene, int growths) {
 
 std::size_t particles_within(const ResolvedScene& scene, double r) {
   const BlastConfig& c = scene.config;
-  return static_cast<std::size_t>(std::llround(c.n * theory::unit_ball_volume(c.d) * std::pow(r, c.d)));
+  const double volume = theory::unit_ball_volume(c.d) * std::pow(r, c.d), surface = c.d * volume / r;
+  return static_cast<std::size_t>(std::llround(c.n * volume + rsa_surface_excess(c.d, c.n, 2.0 * c.a) * surface));
 }
 
 const std::vector<std::string>& default_observable_names() {
@@ -181,33 +182,24 @@ ResolvedScene resolve_scene(const BlastConfig& config, const AmplitudePolicy& am
   const theory::BlastParameters p{c.d, c.n, c.a, c.E, s.A_d};
   s.shock_radius_at_t_max = theory::shock_radius(p, c.t_max);  // Eq. (1) [R-shock]
   const double contact = 2.0 * std::max(c.a, s.impurity_radius);
-  // The guard sits 2σ inside the outermost particles; the shock must stay inside box_margin × R. A
-  // blast that has not reached Eq. (1) by t_max (small E or t_max, a dilute gas, a light or lone
-  // impurity) needs more: the region is never smaller than the impurities' neighbourhood
-  // (minimum_region_radius) plus where they can get in their early phase (early_reach_bound). A
-  // realization whose particles get further still grows its region (md/realization.hpp). Why the
-  // region does not start smaller and grow: docs/md-output.md, "Region".
+  // The guard sits 2σ inside the outermost particles; the shock must stay inside box_margin × R, and
+  // the region never holds fewer than the impurities' neighbourhood (minimum_region_radius). A
+  // realization whose particles get further (a light, heavy or lone impurity before Eq. (1) holds)
+  // grows its region (md/realization.hpp): no estimate of their reach sizes every realization's gas.
   const double shock_region = c.box_margin * s.shock_radius_at_t_max;
-  const double impurity_region =
-      minimum_region_radius(c) + early_reach_bound(c, s.impurity_radius, s.shock_radius_at_t_max);
+  const double impurity_region = minimum_region_radius(c);
   s.region_radius = std::max(shock_region, impurity_region) + 2.0 * contact + 2.0 * std::max(contact, c.cell_width);
   s.guard_radius = s.region_radius - 2.0 * contact;
   const double per_volume = c.n * theory::unit_ball_volume(c.d);
   const double count = per_volume * std::pow(s.region_radius, c.d);
   if (count > max_region_particles) {
     std::ostringstream message;
-    message << "the blast region holds " << std::setprecision(3) << count << " particles (more than 1.5e9): ";
-    if (impurity_region > shock_region)  // a light or lone impurity outruns the shock early on
-      message << "its radius " << std::setprecision(4) << s.region_radius
-              << " is set by how far the impurities can get before the blast forms, not by the shock (R = "
-              << s.shock_radius_at_t_max << "); raise impurities.mass (= " << c.impurities.mass
-              << "), or lower t_max or E";
-    else
-      message << "lower t_max or E";
+    message << "the blast region holds " << std::setprecision(3) << count
+            << " particles (more than 1.5e9): lower t_max or E";
     throw std::invalid_argument(message.str());
   }
   s.max_region_radius = std::pow(max_region_particles / per_volume, 1.0 / c.d);
-  s.particle_count = static_cast<std::size_t>(std::llround(count));
+  s.particle_count = particles_within(s, s.region_radius);
   require_integer_in_range("impurities.count", c.impurities.count, 1, static_cast<long long>(s.particle_count),
                            " (at most the " + std::to_string(s.particle_count) + " particles of the region)");
   for (int k = 0;; ++k) {

@@ -82,8 +82,8 @@ const std::vector<std::string>& known_observable_names();
 using AmplitudePolicy = std::function<theory::AmplitudeChoice(int d, double phi)>;
 
 /// How far the fastest impurity can get from its start by t_max in the early phase of a blast, before
-/// Eq. (1) holds (length): an upper-side estimate that sizes the region with Eq. (1)'s box_margin ×
-/// R(t_max) (resolve_scene; a realization that gets further grows its region, md/realization.hpp). For an
+/// Eq. (1) holds (length): an upper-side estimate, used by the snapshots' size estimate (the region
+/// starts at box_margin × R(t_max) and grows where a realization needs it, md/realization.hpp). For an
 /// impurity of mass μ (hosts 1) and radius a_imp among resting hosts:
 /// - speed at most v0 = sqrt(2 E1/μ), E1 = E for one impurity and E (k - 1)/k for k >= 2 (zero total
 ///   momentum: the other k - 1 carry at least p²/(2 (k - 1) μ)); in the cold gas no particle is
@@ -114,13 +114,12 @@ struct ResolvedScene {
   double phi, lambda;            ///< packing fraction (Eq. 2) and mean free path (Eq. 5)
   double impurity_radius;        ///< resolved impurity radius
   double shock_radius_at_t_max;  ///< Eq. (1) at t_max
-  /// The region filled at first (length): max(box_margin R(t_max), r_count + 2 r_100 +
-  /// early_reach_bound) + guard bands. A realization whose moving particles reach its guard restarts
-  /// in a region region_growth times wider, the same gas inside plus a new shell
-  /// (region_radius_after; md/realization.hpp).
+  /// The region filled at first (length): max(box_margin R(t_max), r_count + 2 r_100) + guard bands.
+  /// A realization whose moving particles reach its guard restarts in a region region_growth times
+  /// wider, the same gas inside plus a new shell (region_radius_after; md/realization.hpp).
   double region_radius;
   double guard_radius;             ///< moving particles must stay inside (region_radius - 2 sigma)
-  std::size_t particle_count;      ///< round(n Ω_d region_radius^d)
+  std::size_t particle_count;      ///< particles_within(region_radius)
   double max_region_radius = 0.0;  ///< the widest region a realization may grow to (max_region_particles)
   std::vector<double> times;       ///< recording times t_k = t_min 2^(k/4) <= t_max
   std::vector<double> snapshot_times;
@@ -137,8 +136,10 @@ inline constexpr double max_region_particles = 1.5e9;
 
 /// Radius of the region after `growths` growths: region_radius × region_growth^growths (length).
 double region_radius_after(const ResolvedScene& scene, int growths);
-/// The particles of a region of radius r: round(n Ω_d r^d); the shell between two regions holds the
-/// difference, so a grown region holds what a region of its size would.
+/// The particles of a region of radius r: round(n V + Γ S), V = Ω_d r^d and S its surface, Γ RSA's
+/// surface excess at a free edge (md::rsa_surface_excess), so that the density inside is n and not
+/// n (1 - d Γ/(n r)); the shell between two regions holds the difference, so a grown region holds
+/// what a region of its size would.
 std::size_t particles_within(const ResolvedScene& scene, double r);
 
 /// Validates `config` and derives the amplitude, region, particle count and recording times. A_d = 0

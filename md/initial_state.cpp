@@ -36,10 +36,14 @@ double rsa_jamming_fraction(int d) {
   throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
 }
 
-double rsa_interior_deficit(int d, double n, double sigma, double R) {
-  if (d == 2) return 2.0 * n * std::pow(sigma, 3) / (3.0 * R);
-  if (d == 3) return 3.0 * M_PI * n * std::pow(sigma, 4) / (8.0 * R);
+double rsa_surface_excess(int d, double n, double sigma) {
+  if (d == 2) return n * n * std::pow(sigma, 3) / 3.0;
+  if (d == 3) return M_PI * n * n * std::pow(sigma, 4) / 8.0;
   throw std::invalid_argument("d = " + std::to_string(d) + " is outside [2, 3]");
+}
+
+double rsa_interior_deficit(int d, double n, double sigma, double R) {
+  return d * rsa_surface_excess(d, n, sigma) / (n * R);  // Γ S/(n V), S/V = d/R
 }
 
 namespace {

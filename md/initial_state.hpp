@@ -34,6 +34,8 @@ double rsa_jamming_fraction(int d);
 /// (flat edge, R >> sigma), and the deficit is Γ S/(n V) = d Γ/(n R): 2 n sigma³/(3 R) and
 /// 3π n sigma⁴/(8 R). Measured: tests/md/test_rsa.cpp; docs/md-output.md, "Region".
 double rsa_interior_deficit(int d, double n, double sigma, double R);
+/// That surface excess Γ per area (per length in 2D): n² sigma³/3 (d = 2), π n² sigma⁴/8 (d = 3).
+double rsa_surface_excess(int d, double n, double sigma);
 
 /// Consecutive failed random trials after which RSA switches to its voxel phase (below).
 inline constexpr std::uint64_t rsa_voxel_switch_default = 1000;

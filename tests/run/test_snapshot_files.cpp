@@ -189,7 +189,7 @@ TEST_CASE("a 3D snapshot by default holds the moving particles and the resting o
                                          "A_d=0.2243",
                                          "t_max=40",
                                          "realizations=1",
-                                         "box_margin=2",
+                                         "box_margin=5",
                                          R"(observables=["R","snapshots"])",
                                          "snapshot_fractions=[1.0]"};
   const fs::path dir = coldblast::test::unique_temp_path("coldblast_test_snapshot_subset");
@@ -221,8 +221,8 @@ TEST_CASE("a 3D snapshot by default holds the moving particles and the resting o
   CHECK(got == expected);
   const double share = static_cast<double>(subset.size()) / static_cast<double>(every.size());
   INFO("subset " << subset.size() << " of " << every.size() << " particles, reach " << reach);
-  // The region's radius is box_margin = 2 times R(t_max) of Eq. (1) (plus guard bands), the front
-  // ~R + 5 diameters: the subset is about (1/2)^3 of the gas, not all of it.
+  // The region's radius is box_margin = 5 times R(t_max) of Eq. (1) (plus guard bands), the front
+  // (the particles ahead of the blast) + 5 diameters: the subset is a small part of the gas.
   CHECK(share < 0.25);
   // The size estimate that the 100 MB warning uses errs high while the blast forms (its radius is
   // md::early_reach_bound's when that exceeds 1.2 R(t)), never below half the files written.
