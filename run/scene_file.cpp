@@ -73,6 +73,11 @@ long long integer(const toml::node& node, const std::string& key) {
     return static_cast<long long>(*v);
   throw std::invalid_argument("scene key " + key + " must be an integer");
 }
+/// integer() as an int, clamped to [lo, hi] so that an out-of-range value still reaches validate(),
+/// which names the key and its allowed range (a plain cast would wrap it into range).
+int clamped_int(const toml::node& node, const std::string& key, long long lo, long long hi) {
+  return static_cast<int>(std::clamp<long long>(integer(node, key), lo, hi));
+}
 std::string text(const toml::node& node, const std::string& key) {
   if (auto v = node.value<std::string>()) return *v;
   throw std::invalid_argument("scene key " + key + " must be a string");
@@ -107,8 +112,7 @@ void apply_impurities(const toml::table& table, ImpurityConfig& impurities) {
   for (auto&& [key_view, node] : table) {
     const std::string key(key_view.str());
     if (key == "count")
-      impurities.count =
-          static_cast<int>(std::clamp<long long>(integer(node, "impurities.count"), INT32_MIN, INT32_MAX));
+      impurities.count = clamped_int(node, "impurities.count", INT32_MIN, INT32_MAX);
     else if (key == "mass")
       impurities.mass = number(node, "impurities.mass");
     else if (key == "radius")
@@ -137,7 +141,7 @@ bool apply_physics_key(const std::string& key, const toml::node& node, BlastConf
   if (key == "name")
     c.name = text(node, key);
   else if (key == "d")
-    c.d = static_cast<int>(std::clamp<long long>(integer(node, key), -1000, 1000));
+    c.d = clamped_int(node, key, -1000, 1000);
   else if (key == "n")
     c.n = number(node, key);
   else if (key == "a")
@@ -164,19 +168,19 @@ bool apply_run_key(const std::string& key, const toml::node& node, BlastConfig& 
     require_integer_in_range("seed", s, 0, std::numeric_limits<long long>::max());
     c.seed = static_cast<std::uint64_t>(s);
   } else if (key == "block_size") {
-    c.block_size = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
+    c.block_size = clamped_int(node, key, -1, INT32_MAX);
   } else if (key == "box_margin") {
     c.box_margin = number(node, key);
   } else if (key == "region_growths") {
-    c.region_growths = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+    c.region_growths = clamped_int(node, key, -1, 1000000);
   } else if (key == "cell_width") {
     c.cell_width = number(node, key);
   } else if (key == "queue") {
     c.queue = text(node, key);
   } else if (key == "profile_bins") {
-    c.profile_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+    c.profile_bins = clamped_int(node, key, -1, 1000000);
   } else if (key == "p_imp_bins") {
-    c.p_imp_bins = static_cast<int>(std::clamp<long long>(integer(node, key), -1, 1000000));
+    c.p_imp_bins = clamped_int(node, key, -1, 1000000);
   } else if (key == "overlap_check") {
     c.overlap_check = boolean(node, key);
   } else if (key == "snapshot_particles") {
@@ -184,7 +188,7 @@ bool apply_run_key(const std::string& key, const toml::node& node, BlastConfig& 
   } else if (key == "snapshot_margin") {
     c.snapshot_margin = number(node, key);
   } else if (key == "snapshot_stride") {
-    c.snapshot_stride = static_cast<int>(std::clamp<long long>(integer(node, key), -1, INT32_MAX));
+    c.snapshot_stride = clamped_int(node, key, -1, INT32_MAX);
   } else {
     return false;
   }
