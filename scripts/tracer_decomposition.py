@@ -24,11 +24,14 @@ profiles' binning and noise.
 Usage:
     scripts/tracer_decomposition.py MD_DIR TRACER_NS_DIR TRACER_MD_DIR [--times 15.625,250,4000]
                                      [--figure decomposition.png] [--title TEXT] [--variants DIR...]
-Prints markdown tables (all common times unless --times) and draws the figure with gnuplot.
+Prints markdown tables (all common times unless --times) and draws the figure with gnuplot. Times up
+to a tracer's own start (summary.json's start_time) are left out: its R_imp and C_imp are 0 there by
+construction.
 """
 import argparse
 import csv
 import io
+import json
 import os
 import subprocess
 import tempfile
@@ -103,10 +106,22 @@ def moment_ratio(directory, t):
     return ratio, float(np.sqrt(((derivative * e) ** 2).sum()))
 
 
+def start_time(run):
+    """The time a tracer run's trajectories start (summary.json's start_time; 0 if it records none)."""
+    path = os.path.join(run, "summary.json")
+    if not os.path.exists(path):
+        return 0.0
+    with open(path) as f:
+        return float(json.load(f).get("start_time", 0.0))
+
+
 def decomposition(md, ns, md_fields, times=None):
     """{name: rows}, each row (t, total, total_error, own, own_error, background, background_error)
     in per cent of the MD's value, and {"p_imp": rows (t, md, ns, md_fields ratios and errors)}."""
     common = recorded_times(md, "R_imp") & recorded_times(ns, "R_imp") & recorded_times(md_fields, "R_imp")
+    # At a tracer's own start its R_imp and C_imp are 0 by construction (it counts from there), not a measurement.
+    start = max(start_time(ns), start_time(md_fields))
+    common = {t for t in common if t > start * (1 + 1e-9)}
     times = sorted(common if times is None else [t for t in common if any(abs(t / x - 1) < 1e-6 for x in times)])
     out = {"times": times, "paired": {}}
     np.seterr(divide="ignore", invalid="ignore")  # an MD value of 0 (C_imp at t_min) gives NaN, drawn as a gap
@@ -217,7 +232,7 @@ def draw(result, path, title):
             f"'{data}' u 1:6:7 w yerrorlines pt 5 ps 0.5 lc rgb '#d62728' t 'tracer in MD fields'\n")
         script = (f"set terminal pngcairo size 1400,1000 font ',10'\nset output {quoted(path)}\n"
                   f"set multiplot layout 2,2 title {quoted(title)}\nset logscale x\nset xlabel 't'\nset grid\n"
-                  "set key top right\n" + "".join(panels) + "unset multiplot\n")
+                  "set key below\n" + "".join(panels) + "unset multiplot\n")
         subprocess.run(["gnuplot"], input=script, text=True, check=True)
 
 

@@ -204,6 +204,10 @@ def test_tracer_decomposition_adds_up_with_the_jackknife_errors(tmp_path):
     assert "| 4000 |" in out and "+10.0 ± " in out and "paired jackknife" in out
     assert "| t | variant |" in out and "| 4000 | +1.00 ± " in out
     assert (tmp_path / "d.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # A tracer's own start time is no measurement (its R_imp and C_imp count from there): left out.
+    with open(os.path.join(fields, "summary.json"), "w") as f:
+        f.write('{"start_time": 250.0}')
+    assert td.decomposition(md, ns, fields, [15.625, 250.0, 4000.0])["times"] == [4000.0]
 
 
 def test_profile_variants_keep_mass_momentum_and_energy_and_perturb_by_the_errors(tmp_path):
