@@ -115,8 +115,9 @@ struct ResolvedScene {
   double impurity_radius;        ///< resolved impurity radius
   double shock_radius_at_t_max;  ///< Eq. (1) at t_max
   /// The region filled at first (length): max(box_margin R(t_max), r_count + 2 r_100) + guard bands.
-  /// A realization whose moving particles reach its guard restarts in a region region_growth times
-  /// wider, the same gas inside plus a new shell (region_radius_after; md/realization.hpp).
+  /// A realization whose moving particles reach its guard grows, in place, into a region
+  /// region_growth times wider: the same gas inside plus a new shell (region_radius_after;
+  /// md/realization.hpp, GrowingBlast).
   double region_radius;
   double guard_radius;             ///< moving particles must stay inside (region_radius - 2 sigma)
   std::size_t particle_count;      ///< particles_within(region_radius)

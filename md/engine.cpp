@@ -10,17 +10,18 @@ namespace coldblast::md {
 
 namespace {
 template <int D>
-CellDemand cell_demand(const EngineConfig<D>& config, const InitialState<D>& state) {
+CellDemand cell_demand(const EngineConfig<D>& config, const std::vector<std::uint8_t>& species, double host_radius,
+                       double impurity_radius) {
   CellDemand demand;
   demand.periodic = config.periodic;
   demand.requested_width = config.cell_width;
   demand.region_radius = config.region_radius;
   demand.periodic_volume = config.box.prod();
   demand.periodic_side = config.box.minCoeff();
-  demand.particles = state.size();
-  demand.host_radius = state.host.radius;
-  demand.impurity_radius = state.impurity.radius;
-  for (const std::uint8_t s : state.species) demand.impurities += s != host_species;
+  demand.particles = species.size();
+  demand.host_radius = host_radius;
+  demand.impurity_radius = impurity_radius;
+  for (const std::uint8_t s : species) demand.impurities += s != host_species;
   demand.wide_cells_for_big = config.wide_cells_for_big;
   return demand;
 }
@@ -53,8 +54,7 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
       same_radius_(state.host.radius == state.impurity.radius),
       simd_crossing_(D == 3 && config.simd && pair_kernel_available()),
       use_kernel_(simd_crossing_ && same_radius_),
-      cells_(make_cells(config, plan_cells<D>(cell_demand(config, state)), state.size(),
-                        2.0 * std::max(state.host.radius, state.impurity.radius))),
+      cells_(make_cells(config, plan(), state.size(), 2.0 * std::max(state.host.radius, state.impurity.radius))),
       queue_(state.size()) {
   if (state.velocity.size() != state.size() || state.species.size() != state.size())
     throw std::invalid_argument("initial state: position, velocity and species sizes differ");
@@ -67,13 +67,65 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
   if (!config.impurity_recollisions) assign_impurity_bits();
   if (!config.periodic) set_guard_trigger();
   place_particles(state);
-  const int big_reach = plan_cells<D>(cell_demand(config, state)).big_reach;
-  if (big_reach != 0) {
-    big_ = BigParticles<D>(cells_, big_reach);
-    for (std::size_t i = 0; i < state.size(); ++i)
-      if (species_[i] != host_species) big_.add(static_cast<std::int32_t>(i), particles_[i].cell);
-  }
+  place_big_particles();
   start_initial_motion(state);
+  if (guard_hit_) guard_tripped();
+}
+
+template <int D, class Queue>
+CellPlan Engine<D, Queue>::plan() const {
+  return plan_cells<D>(cell_demand(config_, species_, radius_[host_species], radius_[impurity_species]));
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::place_big_particles() {
+  const int big_reach = plan().big_reach;
+  big_ = BigParticles<D>();
+  if (big_reach == 0) return;
+  big_ = BigParticles<D>(cells_, big_reach);
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    if (species_[i] != host_species) big_.add(static_cast<std::int32_t>(i), particles_[i].cell);
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::grow(const EngineConfig<D>& wider, const std::vector<Vec<D>>& resting) {
+  if (config_.periodic || wider.periodic || !(wider.region_radius > config_.region_radius))
+    throw std::invalid_argument("Engine::grow: the region must be open and grow (radius " +
+                                std::to_string(config_.region_radius) + " -> " + std::to_string(wider.region_radius) +
+                                ")");
+  const std::size_t old = particles_.size(), count = old + resting.size();
+  if (count >= static_cast<std::size_t>(INT32_MAX)) throw std::invalid_argument("too many particles");
+  config_ = wider;
+  particles_.resize(count);
+  predictions_.resize(count);
+  species_.resize(count, host_species);
+  moving_flag_.resize(count, 0);
+  crossing_.resize(count, 0);
+  if (ghosts_) {
+    ghost_mask_.resize(count, 0);
+    own_bit_.resize(count, 0);
+  }
+  for (std::size_t k = 0; k < resting.size(); ++k) {
+    Particle<D>& p = particles_[old + k];
+    p.position = resting[k];
+    p.time = now_;
+  }
+  // A new grid over the wider region; every particle into the cell that holds it now.
+  cells_ = make_cells(config_, plan(), count, 2.0 * std::max(radius_[host_species], radius_[impurity_species]));
+  for (std::size_t i = 0; i < count; ++i) {
+    Particle<D>& p = particles_[i];
+    p.cell = cells_.cell_of(p.position_at(now_));
+    cells_.insert(static_cast<std::int32_t>(i), p.cell);
+  }
+  place_big_particles();
+  set_guard_trigger();
+  // Every moving particle predicts afresh: a prediction is a function of the two stored states
+  // alone, so the contacts found are those of a run that had the wider region from the start.
+  queue_ = Queue(count);
+  for (const std::int32_t id : moving_) {
+    full_scan(id);
+    schedule(id);
+  }
 }
 
 template <int D, class Queue>
@@ -141,7 +193,8 @@ void Engine<D, Queue>::start_moving(std::int32_t id) {
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::guard_tripped() const {
+void Engine<D, Queue>::guard_tripped() {
+  guard_hit_ = false;  // the caller may grow the region (grow) and run on
   std::ostringstream message;
   message << "a moving particle came within " << 2.0 * (2.0 * radius_[host_species])
           << " (2 sigma) of the edge of the simulated region (radius " << config_.region_radius << ") at t = " << now_
@@ -368,6 +421,8 @@ void Engine<D, Queue>::run_until(double t) {
     prefetch_next();
     queue_.pop();
     process(id, time);
+    if (guard_hit_) [[unlikely]]
+      guard_tripped();
   }
   now_ = t;
 }
@@ -380,6 +435,8 @@ void Engine<D, Queue>::run_collisions(std::uint64_t count) {
     prefetch_next();
     queue_.pop();
     process(id, time);
+    if (guard_hit_) [[unlikely]]
+      guard_tripped();
   }
 }
 

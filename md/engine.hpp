@@ -73,12 +73,25 @@ class Engine {
   /// engine or the runs it watches.
   void watch(CollisionObserver<D>& observer) { observers_.push_back(&observer); }
 
-  /// Processes every event up to time t (>= now()), then sets now() = t.
+  /// Processes every event up to time t (>= now()), then sets now() = t. Open geometry: throws
+  /// GuardTripped after the event in which a moving particle reached the guard; the engine is whole
+  /// then (now() is that event's time), and may grow (grow) and run on.
   void run_until(double t);
   /// Processes events until `count` more collisions happened; now() is the last event's time.
+  /// GuardTripped as run_until.
   void run_collisions(std::uint64_t count);
+  /// Widens an open region between events: `wider` (region and guard radii larger; the other keys
+  /// as before) and `resting` host particles at rest, which must lie where no moving particle
+  /// reaches before it has crossed into their neighbour cells (beyond the old region: the guard
+  /// keeps moving particles a cell diagonal inside it). The cells are laid anew over the wider
+  /// region and every moving particle predicts afresh. A prediction is a function of the two
+  /// particles' stored states alone, so the trajectory is the one the wider region would have given
+  /// from the start, up to the calendar's order of events at equal times.
+  void grow(const EngineConfig<D>& wider, const std::vector<Vec<D>>& resting);
 
   double now() const { return now_; }
+  /// The geometry it runs in (grow widens it).
+  const EngineConfig<D>& config() const { return config_; }
   std::size_t size() const { return particles_.size(); }
   const Particle<D>& particle(std::int32_t id) const { return particles_[id]; }
   Vec<D> position(std::int32_t id) const { return particles_[id].position_at(now_); }
@@ -161,10 +174,14 @@ class Engine {
   void set_guard_trigger();
   void place_particles(const InitialState<D>& state);
   void start_initial_motion(const InitialState<D>& state);
-  void check_guard(std::int32_t id) const {
-    if (!config_.periodic && particles_[id].position_at(now_).squaredNorm() > guard_trigger2_) guard_tripped();
+  // A moving particle beyond the guard's trigger: the event in hand completes (its scans, its
+  // events, the observers), then run_until or run_collisions throws GuardTripped (guard_tripped).
+  void check_guard(std::int32_t id) {
+    if (!config_.periodic && particles_[id].position_at(now_).squaredNorm() > guard_trigger2_) guard_hit_ = true;
   }
-  [[noreturn]] void guard_tripped() const;  // throws GuardTripped
+  [[noreturn]] void guard_tripped();  // throws GuardTripped (and clears guard_hit_)
+  CellPlan plan() const;              // the cell scheme for this region and these particles
+  void place_big_particles();         // the big particles' stencils on the current cells
   void check_overlaps_of(std::int32_t id, double tolerance = 1e-9) const;
   // Throws std::logic_error if j (displaced by the periodic image `shift`) overlaps i, at x_i, now.
   void check_pair(std::int32_t i, const Vec<D>& x_i, std::int32_t j, const Vec<D>& shift, double tolerance) const;
@@ -181,6 +198,7 @@ class Engine {
   bool simd_crossing_ = false;   // the SIMD crossing time (config.simd, D = 3, CPU with AVX2)
   bool use_kernel_ = false;      // the SIMD pair kernel (config.simd, D = 3, equal radii, CPU with AVX2)
   double guard_trigger2_ = 0.0;  // open: squared |x| beyond which a moving particle stops the run
+  bool guard_hit_ = false;       // a moving particle passed the trigger during the event in hand
   CellList<D> cells_;
   BigParticles<D> big_;
   Queue queue_;

@@ -9,13 +9,15 @@
 namespace coldblast::md {
 
 namespace {
+/// The impurities of realization `index` at time t, in the region `md run` grows to (GrowingBlast).
 template <int D>
-std::vector<ImpurityState> states_in(const ResolvedScene& scene, long long index, double t, int growths) {
-  const InitialState<D> state = blast_initial_state<D>(scene, index, growths);
+std::vector<ImpurityState> states_at(const ResolvedScene& scene, long long index, double t) {
   // The engine of `md run` (blast_engine_config; bucketed and heap calendars give the same
   // trajectories, tested), without observers: they do not change a trajectory.
-  Engine<D, CalendarEventQueue> engine(blast_engine_config<D>(scene, growths), state);
-  engine.run_until(t);
+  GrowingBlast<D, CalendarEventQueue> blast(scene, index);
+  blast.run_until(t);
+  const Engine<D, CalendarEventQueue>& engine = blast.engine();
+  const InitialState<D>& state = blast.state();
   std::vector<ImpurityState> states;
   for (std::size_t id = 0; id < state.size(); ++id) {
     if (state.species[id] != impurity_species) continue;
@@ -33,12 +35,6 @@ std::vector<ImpurityState> states_in(const ResolvedScene& scene, long long index
     states.push_back(std::move(s));
   }
   return states;
-}
-
-/// states_in in the region `md run` grows to (with_growing_region).
-template <int D>
-std::vector<ImpurityState> states_at(const ResolvedScene& scene, long long index, double t) {
-  return with_growing_region(scene, [&](int growths) { return states_in<D>(scene, index, t, growths); });
 }
 
 std::string number_text(double x) {

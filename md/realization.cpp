@@ -61,23 +61,19 @@ std::vector<PathPoint> impurity_paths(const Engine<D, Queue>& engine, const std:
   return points;
 }
 
-/// One attempt at realization `index` in the region grown `growths` times (run_realization_in).
+/// Realization `index` in a region that grows where the blast reaches (GrowingBlast), to t_max.
 template <int D, class Queue>
-RealizationOutput run_attempt(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
-                              const RealizationExtras& extras,
-                              const std::function<void(long long, double)>& realization_time,
-                              const InitialState<D>& state, int growths) {
+RealizationOutput run_realization_in(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
+                                     const RealizationExtras& extras,
+                                     const std::function<void(long long, double)>& realization_time) {
   const BlastConfig& c = scene.config;
-
-  const EngineConfig<D> config = blast_engine_config<D>(scene, growths);
-  Engine<D, Queue> engine(config, state);
+  if (realization_time) realization_time(index, 0.0);
+  GrowingBlast<D, Queue> blast(scene, index);
+  Engine<D, Queue>& engine = blast.engine();
   BlastObserver<D, Queue> observer(scene, layout, engine, extras.paths);
 
   RealizationOutput out;
   out.record.assign(layout.size(), 0.0);
-  out.growths = growths;
-  out.region_radius = config.region_radius;
-  out.particles = state.size();
   std::vector<std::pair<double, int>> stops;  // (time, k) with k = -1 for a snapshot
   for (std::size_t k = 0; k < scene.times.size(); ++k) stops.push_back({scene.times[k], static_cast<int>(k)});
   for (const double t : extras.snapshot_times) stops.push_back({t, -1});
@@ -85,16 +81,19 @@ RealizationOutput run_attempt(const ResolvedScene& scene, const ObservableLayout
   std::vector<Vec<D>> start;
   for (const std::int32_t id : observer.impurities()) start.push_back(engine.position(id));
   for (const auto& [t, k] : stops) {
-    engine.run_until(t);
+    blast.run_until(t);
     if (realization_time) realization_time(index, t);
     if (k >= 0)
       observer.measure(k, out.record);
     else {
       out.snapshots.push_back(capture(engine, extras.selection));
-      out.snapshots.back().region_radius = config.region_radius;
+      out.snapshots.back().region_radius = engine.config().region_radius;
     }
   }
-  engine.run_until(c.t_max);
+  blast.run_until(c.t_max);
+  out.growths = blast.growths();
+  out.region_radius = engine.config().region_radius;
+  out.particles = engine.size();
   out.collisions = engine.collision_count();
   out.energy_error = std::abs(engine.kinetic_energy() - c.E) / c.E;
   if (observer.trajectories())
@@ -102,22 +101,6 @@ RealizationOutput run_attempt(const ResolvedScene& scene, const ObservableLayout
   for (const double v : out.record)
     if (!std::isfinite(v)) throw std::runtime_error("non-finite observable in realization " + std::to_string(index));
   return out;
-}
-
-/// run_attempt in regions grown until one holds the moving particles to t_max (with_growing_region).
-template <int D, class Queue>
-RealizationOutput run_realization_in(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
-                                     const RealizationExtras& extras,
-                                     const std::function<void(long long, double)>& realization_time) {
-  InitialState<D> state;
-  return with_growing_region(scene, [&](int growths) {
-    if (realization_time) realization_time(index, 0.0);
-    if (growths == 0)
-      state = blast_initial_state<D>(scene, index);
-    else
-      grow_initial_state<D>(scene, index, state, growths);  // the attempt before's gas, plus a shell
-    return run_attempt<D, Queue>(scene, layout, index, extras, realization_time, state, growths);
-  });
 }
 
 /// What to do when a particle reached the guard of the last region a realization may grow to

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "md/blast_config.hpp"
@@ -33,26 +34,58 @@ void grow_initial_state(const ResolvedScene& scene, long long index, InitialStat
 /// Whether a region grown `growths` times may grow no further (config.region_growths, max_region_radius).
 bool last_growth(const ResolvedScene& scene, int growths);
 
-/// Calls attempt(growths) for growths = 0, 1, ... until a call returns without md::GuardTripped,
-/// and returns its result: a realization in a region grown until it holds the moving particles
-/// (run_realization). Beyond config.region_growths growths, or a region wider than
-/// scene.max_region_radius, is not tried: the last guard's error is rethrown.
-template <class Attempt>
-auto with_growing_region(const ResolvedScene& scene, Attempt attempt) {
-  for (int growths = 0;; ++growths) {
-    try {
-      return attempt(growths);
-    } catch (const GuardTripped&) {
-      if (last_growth(scene, growths)) throw;
-    }
-  }
-}
-
 /// The engine settings of a blast realization (open region grown `growths` times, guard and its
 /// advice, cell width, overlap check): the one scene → EngineConfig mapping, shared by ensembles and
 /// benchmarks.
 template <int D>
 EngineConfig<D> blast_engine_config(const ResolvedScene& scene, int growths = 0);
+
+/// The engine of realization `index`, its gas filled where the blast reaches: it starts in the
+/// scene's region, and when a moving particle reaches the guard (md::GuardTripped) the state gains
+/// the next RSA shell (grow_initial_state) and the engine takes its particles, at rest, between two
+/// events (Engine::grow), and runs on: the trajectory of a run in the wider region from t = 0
+/// (tested). A guard reached while the engine is built (an initial motion beyond it) builds it in
+/// the next region. Beyond config.region_growths growths, or a region wider than
+/// scene.max_region_radius, the guard's md::GuardTripped is rethrown.
+template <int D, class Queue>
+class GrowingBlast {
+ public:
+  GrowingBlast(const ResolvedScene& scene, long long index)
+      : scene_(scene), index_(index), state_(blast_initial_state<D>(scene, index)) {
+    for (;;) try {
+        engine_ = std::make_unique<Engine<D, Queue>>(blast_engine_config<D>(scene_, growths_), state_);
+        return;
+      } catch (const GuardTripped&) {
+        if (last_growth(scene_, growths_)) throw;
+        grow_initial_state<D>(scene_, index_, state_, ++growths_);
+      }
+  }
+  /// engine().run_until(t), growing the region whenever the guard trips.
+  void run_until(double t) {
+    for (;;) try {
+        engine_->run_until(t);
+        return;
+      } catch (const GuardTripped&) {
+        if (last_growth(scene_, growths_)) throw;
+        const std::size_t old = state_.size();
+        grow_initial_state<D>(scene_, index_, state_, ++growths_);
+        engine_->grow(
+            blast_engine_config<D>(scene_, growths_),
+            std::vector<Vec<D>>(state_.position.begin() + static_cast<std::ptrdiff_t>(old), state_.position.end()));
+      }
+  }
+  Engine<D, Queue>& engine() { return *engine_; }
+  /// The initial state of the region it runs in now (blast_initial_state(scene, index, growths())).
+  const InitialState<D>& state() const { return state_; }
+  int growths() const { return growths_; }
+
+ private:
+  const ResolvedScene& scene_;
+  long long index_;
+  InitialState<D> state_;
+  int growths_ = 0;
+  std::unique_ptr<Engine<D, Queue>> engine_;
+};
 
 /// Which particles a snapshot holds (run/ chooses; the scene's snapshot_* keys).
 struct SnapshotSelection {
@@ -101,15 +134,12 @@ struct RealizationOutput {
 };
 
 /// Runs realization `index` to t_max: the observers' record at each recording time, the extras
-/// asked for. The gas is filled where the blast reaches: the realization starts in the scene's
-/// region; if a moving particle reaches its guard (md::GuardTripped), it starts again from t = 0 in
-/// a region region_growth times wider that holds the same gas inside (blast_initial_state), and so
-/// on up to max_region_radius. The realization is the same: up to the guard, no moving particle
-/// could touch the new shell (round-off aside: the cell grid is wider). `time(index, t)` (may be
-/// empty) is called at the start of each attempt (t = 0, before the initial state is built) and as
-/// the realization passes each recorded time. Throws std::invalid_argument for a scene whose region
-/// does not hold its particles, std::runtime_error (md::GuardTripped) when a particle reaches the
-/// guard of the widest region, or an observable is not finite.
+/// asked for. The gas is filled where the blast reaches (GrowingBlast): the realization starts in
+/// the scene's region, which grows region_growth times wider, in place, whenever a moving particle
+/// reaches its guard, up to max_region_radius. `time(index, t)` (may be empty) is called at the start
+/// (t = 0, before the initial state is built) and as the realization passes each recorded time. Throws
+/// std::invalid_argument for a scene whose region does not hold its particles, std::runtime_error (md::GuardTripped)
+/// when a particle reaches the guard of the widest region, or an observable is not finite.
 RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
                                   const RealizationExtras& extras = {},
                                   const std::function<void(long long, double)>& time = {});

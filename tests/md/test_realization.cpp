@@ -32,22 +32,34 @@ Snapshot run_to(const ResolvedScene& scene, long long index, int growths, double
   s.collisions = engine.collision_count();
   return s;
 }
+
+/// The first realization (index < 20) whose moving particles reach the guard of the unwidened
+/// region before t_max, and the time they do (-1 if none does).
+struct Trip {
+  long long index = -1;
+  double time = -1.0;
+};
+Trip first_trip(const ResolvedScene& scene) {
+  for (long long index = 0; index < 20; ++index) try {
+      run_to(scene, index, 0, scene.config.t_max);
+    } catch (const GuardTripped& e) {
+      return {index, e.time};
+    }
+  return {};
+}
+
+/// A lone impurity in 3D runs far ahead of Eq. (1) early on (it needed box_margin 5-6 before
+/// regions grew, docs/stress.md): box_margin 3 × R(t_max) does not hold all its realizations.
+ResolvedScene lone_impurity_scene(const std::string& extra = "region_growths=8") {
+  return resolve_scene(parse_scene(default_scene_toml(), {"d=3", "impurities.count=1", "t_max=20", "A_d=0.3",
+                                                          "box_margin=3", "realizations=1", extra}));
+}
 }  // namespace
 
 TEST_CASE("a realization that reaches its region's guard grows the region and stays the same realization", "[fast]") {
-  // A lone impurity in 3D runs far ahead of Eq. (1) early on (it needed box_margin 5-6 before
-  // regions grew, docs/stress.md): the first of its realizations whose particles reach the guard of
-  // box_margin 3 × R(t_max).
-  const ResolvedScene scene = resolve_scene(parse_scene(
-      default_scene_toml(), {"d=3", "impurities.count=1", "t_max=20", "A_d=0.3", "box_margin=3", "realizations=1"}));
-  double tripped = -1.0;
-  long long index = 0;
-  for (; index < 20 && tripped < 0.0; ++index) try {
-      run_to(scene, index, 0, scene.config.t_max);
-    } catch (const GuardTripped& e) {
-      tripped = e.time;
-    }
-  --index;
+  // The first realization of a lone impurity whose particles reach the guard of box_margin 3 × R(t_max).
+  const ResolvedScene scene = lone_impurity_scene();
+  const auto [index, tripped] = first_trip(scene);
   REQUIRE(tripped > 0.0);
   // Up to the guard no moving particle can touch the new shell: the same collisions, and the
   // impurity's position to round-off (a wider cell grid rounds its crossings differently).
@@ -74,6 +86,51 @@ TEST_CASE("a realization that reaches its region's guard grows the region and st
   CHECK(smaller_trips);
 }
 
+TEMPLATE_TEST_CASE("a region grown in place, between events, gives the run of the wider region from t = 0", "[fast]",
+                   CalendarEventQueue, HeapEventQueue) {
+  // The scene of the case above: its first realization that reaches the guard of box_margin 3.
+  const ResolvedScene scene = lone_impurity_scene();
+  const long long index = first_trip(scene).index;
+  REQUIRE(index >= 0);
+  GrowingBlast<3, TestType> blast(scene, index);
+  REQUIRE(blast.growths() == 0);  // it grows while it runs, not before
+  blast.run_until(scene.config.t_max);
+  const int growths = blast.growths();
+  REQUIRE(growths >= 1);
+  const Engine<3, TestType>& engine = blast.engine();
+  CHECK(engine.size() == particles_within(scene, region_radius_after(scene, growths)));
+  CHECK(engine.config().region_radius == region_radius_after(scene, growths));
+  CHECK(std::abs(engine.kinetic_energy() - scene.config.E) < 1e-12 * scene.config.E);
+  Vec<3> p0 = Vec<3>::Zero();  // the kick's momentum (one impurity: not zero), conserved
+  for (std::size_t i = 0; i < blast.state().size(); ++i)
+    p0 += engine.mass(static_cast<std::int32_t>(i)) * blast.state().velocity[i];
+  CHECK((engine.momentum() - p0).norm() < 1e-12 * p0.norm());
+  // The run in the region of `growths` growths from t = 0: the same collisions, the impurity at the
+  // same place (a prediction is a function of two stored states; only the cell grids differ).
+  const Snapshot wide = run_to(scene, index, growths, scene.config.t_max);
+  CHECK(engine.collision_count() == wide.collisions);
+  std::vector<Vec<3>> impurities;
+  for (std::size_t i = 0; i < engine.size(); ++i)
+    if (engine.species(static_cast<std::int32_t>(i)) == impurity_species)
+      impurities.push_back(engine.position(static_cast<std::int32_t>(i)));
+  REQUIRE(impurities.size() == 1);
+  CHECK((impurities[0] - wide.impurities[0]).norm() < 1e-9 * wide.impurities[0].norm());
+  // The particles added at rest sit where the state's shells put them.
+  const InitialState<3>& state = blast.state();
+  REQUIRE(state.size() == engine.size());
+  for (std::size_t i = state.size() - 10; i < state.size(); ++i)
+    if (!engine.is_moving(static_cast<std::int32_t>(i)))
+      CHECK(engine.position(static_cast<std::int32_t>(i)) == state.position[i]);
+}
+
+TEST_CASE("Engine::grow refuses a closed box or a region that does not grow", "[fast]") {
+  const ResolvedScene scene =
+      resolve_scene(parse_scene(default_scene_toml(), {"d=3", "t_max=2", "A_d=0.3", "realizations=1"}));
+  const InitialState<3> state = blast_initial_state<3>(scene, 0);
+  Engine<3, CalendarEventQueue> engine(blast_engine_config<3>(scene), state);
+  CHECK_THROWS_WITH(engine.grow(blast_engine_config<3>(scene), {}), Catch::Contains("must be open and grow"));
+}
+
 TEST_CASE("region_growths bounds the growth: 0 stops the run at the guard, naming the keys", "[fast]") {
   using Catch::Contains;
   CHECK_THROWS_WITH(resolve_scene(parse_scene(default_scene_toml(), {"region_growths=31", "A_d=0.3"})),
@@ -83,15 +140,9 @@ TEST_CASE("region_growths bounds the growth: 0 stops the run at the guard, namin
   CHECK(parse_scene(scene_text, {}).region_growths == 0);
   CHECK_THAT(coldblast::run::scene_toml(parse_scene(default_scene_toml(), {})), !Contains("region_growths"));
   // The scene of the case above, not allowed to grow: the first realization that reaches its guard.
-  ResolvedScene scene = resolve_scene(parse_scene(
-      default_scene_toml(), {"d=3", "impurities.count=1", "t_max=20", "A_d=0.3", "box_margin=3", "region_growths=0"}));
-  long long index = 0;
-  for (bool trips = false; index < 20 && !trips; ++index) try {
-      run_to(scene, index, 0, scene.config.t_max);
-    } catch (const GuardTripped&) {
-      trips = true;
-    }
-  --index;
+  ResolvedScene scene = lone_impurity_scene("region_growths=0");
+  const long long index = first_trip(scene).index;
+  REQUIRE(index >= 0);
   CHECK(last_growth(scene, 0));
   CHECK_THROWS_AS(run_realization(scene, ObservableLayout(scene), index), GuardTripped);
   CHECK_THROWS_WITH(
