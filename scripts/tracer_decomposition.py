@@ -219,14 +219,15 @@ def draw(result, path, title):
         for name in OBSERVABLES:
             data = os.path.join(folder, f"{name}.dat")
             panels.append(
-                f"set title {quoted(name + ': tracer - MD, per cent of the MD')}\nset ylabel 'per cent'\n"
+                f"set title {quoted(name.replace('_imp', '_{imp}') + ': tracer - MD, per cent of the MD')}\n"
+                "set ylabel 'per cent'\n"
                 f"plot 0 notitle lc 'black', "
                 f"'{data}' u 1:2:3 w yerrorlines pt 7 ps 0.5 lc rgb '#000000' t 'tracer in NS - MD (total)', "
                 f"'{data}' u 1:4:5 w yerrorlines pt 5 ps 0.5 lc rgb '#d62728' t 'tracer in MD fields - MD (Eq. (36))', "
                 f"'{data}' u 1:6:7 w yerrorlines pt 9 ps 0.5 lc rgb '#1f77b4' t 'tracer in NS - in MD fields (background)'\n")
         data = os.path.join(folder, "p_imp.dat")
         panels.append(
-            "set title \"p_imp's <r^4>/<r^2>^2\"\nset ylabel 'ratio'\n"
+            "set title \"p_{imp}'s <r^4>/<r^2>^2\"\nset ylabel 'ratio'\n"
             f"plot '{data}' u 1:2:3 w yerrorlines pt 7 ps 0.5 lc rgb '#000000' t 'MD', "
             f"'{data}' u 1:4:5 w yerrorlines pt 9 ps 0.5 lc rgb '#1f77b4' t 'tracer in NS', "
             f"'{data}' u 1:6:7 w yerrorlines pt 5 ps 0.5 lc rgb '#d62728' t 'tracer in MD fields'\n")

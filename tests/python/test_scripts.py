@@ -260,3 +260,36 @@ def test_profile_variants_keep_mass_momentum_and_energy_and_perturb_by_the_error
         values = np.array(values)
         assert len(values) > 1000
         assert abs(values.mean()) < 4 / len(values) ** 0.5 and abs(values.var() - 1) < 0.15, key
+
+
+def test_start_memory_figure_draws_the_tables_numbers(tmp_path):
+    """scripts/start_memory_figure.py reads scripts/start_memory.py's tables as written (the
+    differences in per cent, the NS column where there is one, p_imp's ratios), refuses a label count
+    that does not match, and draws the PNG."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import start_memory_figure as smf
+    folder = os.path.join(REPO, "data", "start-memory")
+    hot, single = os.path.join(folder, "start_memory.csv"), os.path.join(folder, "start_memory_single.csv")
+    tables = [smf.read_table(hot), smf.read_table(single)]
+    with open(hot) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    first = next(r for r in rows if r["amplitude"] == "n0/n")
+    x, kick, kick_e, other, other_e, delta, delta_e, ns = tables[0]["n0/n"][0]
+    assert (x, delta, delta_e) == (float(first["R_over_lambda"]), float(first["delta"]), float(first["delta_err"]))
+    assert ns == float(first["ns_delta"]) and tables[1]["n0/n"][0][7] is None  # the single start has no NS partner
+    files = smf.write_data(str(tmp_path), tables)
+    with open(files[(0, "n0/n")]) as f:
+        values = [float(v) for v in f.readline().split()]
+    assert values == [x, 100 * delta, 100 * delta_e, 100 * ns]
+    with open(files[(1, "p_imp_ratio")]) as f:
+        values = [float(v) for v in f.readline().split()]
+    ratio = tables[1]["p_imp_ratio"][0]
+    assert values == [ratio[0], ratio[1], ratio[2], ratio[3], ratio[4]]
+    script = os.path.join(REPO, "scripts", "start_memory_figure.py")
+    bad = subprocess.run([sys.executable, script, hot, single, "--labels", "one", "--out", str(tmp_path / "x.png")],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "--labels: 1 given for 2 tables" in bad.stderr and not (tmp_path / "x.png").exists()
+    out = subprocess.run([sys.executable, script, hot, single, "--labels", "hot spot", "single", "--out",
+                          str(tmp_path / "m.png")], capture_output=True, text=True, check=True).stdout
+    assert "2 starts against the kick, R/λ from 10 to 34.7" in out
+    assert (tmp_path / "m.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
