@@ -180,8 +180,9 @@ void add_tracer_command(CLI::App& app) {
   c->add_option("--phi", o->phi, "Equilibrium background: packing fraction (default: the scene's)");
   c->add_option("--start", o->config.start,
                 "Initial state: kick (the MD's), hotspot (the MD's hot spot of radius --r0, in the Navier-Stokes hot "
-                "spot; docs/kinetic.md), thermal (local Maxwellian) or states (the MD's own impurities at a time: "
-                "--start-states)")
+                "spot; docs/kinetic.md), single (the MD's single kicked host: the impurity at rest near the centre, as "
+                "the MD places it), "
+                "thermal (local Maxwellian) or states (the MD's own impurities at a time: --start-states)")
       ->capture_default_str();
   c->add_option("--r0", o->config.r0,
                 "--start hotspot: the hot spot's radius, a length as the scene's start.r0 (not hydro's r0/lambda); "

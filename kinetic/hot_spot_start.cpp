@@ -18,10 +18,14 @@ double hot_spot_neighbourhood(const md::BlastConfig& scene, double r0) {
   return std::max(3.0 * r0, r0 + 8.0 * std::max(scene.a, impurity_radius));
 }
 
+namespace {
+/// One MD start (md::start_blast) in an RSA neighbourhood of radius `region` at the scene's density:
+/// the state, its report and the impurities' indices (ascending).
 template <int D>
-HotSpotImpurity<D> sample_hot_spot_impurity(const md::BlastConfig& scene, double r0, std::uint64_t seed, int which) {
+md::InitialState<D> started_neighbourhood(const md::BlastConfig& scene, const md::StartConfig& start, double region,
+                                          std::uint64_t seed, md::StartReport& report,
+                                          std::vector<std::int32_t>& impurities) {
   std::mt19937_64 rng(seed);
-  const double region = hot_spot_neighbourhood(scene, r0);
   md::InitialState<D> state;
   state.host = {scene.a, 1.0};
   state.impurity = {scene.impurities.radius > 0.0 ? scene.impurities.radius : scene.a, scene.impurities.mass};
@@ -30,18 +34,26 @@ HotSpotImpurity<D> sample_hot_spot_impurity(const md::BlastConfig& scene, double
   state.position = md::random_sequential_addition<D>(rng, count, scene.a, region);
   state.velocity.assign(count, md::Vec<D>::Zero());
   state.species.assign(count, md::host_species);
-  md::StartReport report;
   try {
-    report = md::start_blast<D>(rng, state, md::StartConfig{md::StartKind::hotspot, r0},
-                                static_cast<std::size_t>(scene.impurities.count), scene.E, region);
+    report = md::start_blast<D>(rng, state, start, static_cast<std::size_t>(scene.impurities.count), scene.E, region);
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
     const std::string key = "start.r0";
     throw std::invalid_argument("--r0" + message.substr(message.find(key) == 0 ? key.size() : 0));
   }
-  std::vector<std::int32_t> impurities;
+  impurities.clear();
   for (std::size_t i = 0; i < state.size(); ++i)
     if (state.species[i] == md::impurity_species) impurities.push_back(static_cast<std::int32_t>(i));
+  return state;
+}
+}  // namespace
+
+template <int D>
+HotSpotImpurity<D> sample_hot_spot_impurity(const md::BlastConfig& scene, double r0, std::uint64_t seed, int which) {
+  md::StartReport report;
+  std::vector<std::int32_t> impurities;
+  const md::InitialState<D> state = started_neighbourhood<D>(
+      scene, md::StartConfig{md::StartKind::hotspot, r0}, hot_spot_neighbourhood(scene, r0), seed, report, impurities);
   const std::int32_t id = impurities.at(static_cast<std::size_t>(which));
   HotSpotImpurity<D> out;
   out.r = state.position[id];
@@ -52,6 +64,17 @@ HotSpotImpurity<D> sample_hot_spot_impurity(const md::BlastConfig& scene, double
   return out;
 }
 
+template <int D>
+md::Vec<D> sample_single_start_position(const md::BlastConfig& scene, std::uint64_t seed, int which) {
+  md::StartReport report;
+  std::vector<std::int32_t> impurities;
+  const md::InitialState<D> state = started_neighbourhood<D>(
+      scene, md::StartConfig{md::StartKind::single, 0.0}, hot_spot_neighbourhood(scene, 0.0), seed, report, impurities);
+  return state.position[impurities.at(static_cast<std::size_t>(which))];
+}
+
+template md::Vec<2> sample_single_start_position<2>(const md::BlastConfig&, std::uint64_t, int);
+template md::Vec<3> sample_single_start_position<3>(const md::BlastConfig&, std::uint64_t, int);
 template HotSpotImpurity<2> sample_hot_spot_impurity<2>(const md::BlastConfig&, double, std::uint64_t, int);
 template HotSpotImpurity<3> sample_hot_spot_impurity<3>(const md::BlastConfig&, double, std::uint64_t, int);
 

@@ -1,7 +1,8 @@
 #pragma once
-// The tracer's hot-spot start (docs/kinetic.md, "Starts"): one impurity as the MD's hot-spot start
-// leaves it (md::start_blast with start.kind = hotspot): the impurities are the particles nearest the
-// centre, and every particle within r0 shares E as a Maxwellian with zero total momentum. The
+// The tracer's hot-spot and single-host starts (docs/kinetic.md, "Start"): one impurity as the MD's
+// start leaves it (md::start_blast): the impurities are the particles nearest the centre; in a hot
+// spot every particle within r0 shares E as a Maxwellian with zero total momentum, from a single
+// host the impurities stay at rest. The
 // configuration is random sequential addition at the scene's density in a ball of radius
 // hot_spot_neighbourhood(r0) around the centre, not the MD's whole region.
 #include <cstdint>
@@ -30,5 +31,11 @@ struct HotSpotImpurity {
 /// misses an impurity (as md::start_blast does, naming start.r0).
 template <int D>
 HotSpotImpurity<D> sample_hot_spot_impurity(const md::BlastConfig& scene, double r0, std::uint64_t seed, int which);
+
+/// Impurity `which` of one single-host start (md::start_blast with start.kind = single) for `scene`,
+/// from the generator seeded with `seed`: where the MD puts it (among the impurities.count particles
+/// nearest the centre of an RSA neighbourhood of radius hot_spot_neighbourhood(scene, 0)), at rest.
+template <int D>
+md::Vec<D> sample_single_start_position(const md::BlastConfig& scene, std::uint64_t seed, int which);
 
 }  // namespace coldblast::kinetic

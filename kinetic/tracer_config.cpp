@@ -23,7 +23,8 @@ double max_equilibrium_phi(int d) {
 }
 
 /// The hot-spot start: r0 only with it, in the MD's range; its background the NS's or an MD run's;
-/// and a scene that starts from a hot spot is not run from a kick.
+/// and a scene is not run from another start's impurity (a hot-spot scene from a kick or a single
+/// host, a single-host scene from a kick).
 void validate_hot_spot(const TracerConfig& c) {
   const md::BlastConfig& scene = c.scene;
   if (c.start != "hotspot") {
@@ -32,11 +33,14 @@ void validate_hot_spot(const TracerConfig& c) {
                                   " is the radius of a hot spot: it needs --start "
                                   "hotspot (--start = " +
                                   c.start + ")");
-    if (c.start == "kick" && scene.start.kind == md::StartKind::hotspot)
+    if ((c.start == "kick" || c.start == "single") && scene.start.kind == md::StartKind::hotspot)
       throw std::invalid_argument(
-          "--start = kick, but the scene starts from a hot spot (start.kind = hotspot, "
-          "start.r0 = " +
+          "--start = " + c.start + ", but the scene starts from a hot spot (start.kind = hotspot, start.r0 = " +
           format_number(scene.start.r0) + "): give --start hotspot (its r0 is the scene's), thermal or states");
+    if (c.start == "kick" && scene.start.kind == md::StartKind::single)
+      throw std::invalid_argument(
+          "--start = kick, but the scene starts from a single kicked host (start.kind = single): give --start "
+          "single (the impurity at rest at the centre), thermal or states");
     return;
   }
   if (c.background != "ns" && c.background != "md")
@@ -79,8 +83,8 @@ void TracerConfig::validate() const {
     throw std::invalid_argument(
         "--transport = enskog is not available with --background tvns (the ideal-gas "
         "Euler solution); allowed: dilute");
-  if (start != "kick" && start != "hotspot" && start != "thermal" && start != "states")
-    throw std::invalid_argument("--start = " + start + " is not one of: kick, hotspot, thermal, states");
+  if (start != "kick" && start != "hotspot" && start != "single" && start != "thermal" && start != "states")
+    throw std::invalid_argument("--start = " + start + " is not one of: kick, hotspot, single, thermal, states");
   validate_hot_spot(*this);
   if ((start == "states") != !start_states.empty())
     throw std::invalid_argument(start == "states" ? "--start = states needs --start-states FILE (md states' output)"

@@ -34,7 +34,9 @@ struct TracerConfig {
   std::optional<double> phi;  ///< equilibrium: packing fraction (default: the scene's), (0, 0.7) 2D, (0, 0.5) 3D
   /// "kick" (the MD's kick: E shared by k impurities), "hotspot" (the MD's hot spot of radius r0:
   /// the impurity among the particles nearest the centre, E shared as a Maxwellian by every particle
-  /// within r0, the background the Navier–Stokes hot spot; kinetic/hot_spot_start.hpp), "thermal", or
+  /// within r0, the background the Navier–Stokes hot spot; kinetic/hot_spot_start.hpp), "single"
+  /// (the MD's single kicked host: the impurity at rest where the MD puts it, near the centre, until
+  /// the blast's background picks it up), "thermal", or
   /// "states": trajectory i starts from state i of `states` (the MD's own impurities, `md states`) at
   /// their time.
   std::string start = "kick";

@@ -78,6 +78,11 @@ Trajectory<D> start_trajectory(const TracerContext& ctx, long long index) {
     s.r = hot.r;
     s.v = hot.v;
     x.r0 = hot.r;
+  } else if (ctx.config.start == "single") {
+    // Trajectory i is impurity i mod k of its own single-host start, at rest where the MD puts it.
+    const int which = static_cast<int>(index % ctx.config.scene.impurities.count);
+    s.r = sample_single_start_position<D>(ctx.config.scene, x.rng.next(), which);
+    x.r0 = s.r;
   } else {
     s.v = initial_velocity<D>(ctx.config, ctx.background, s.t, x.rng);
   }

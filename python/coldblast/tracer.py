@@ -51,8 +51,9 @@ def run(scene=None, background="ns", trajectories=None, threads=1, seed=None, ou
     start : str
         "kick" (the MD's kick, E shared by the impurities), "hotspot" (the MD's hot spot of radius
         ``r0``: the impurity among the particles nearest the centre, E a Maxwellian of every particle
-        within r0, in the Navier-Stokes hot spot), "thermal" (local Maxwellian) or "states" (the MD's
-        own impurities: ``start_states``).
+        within r0, in the Navier-Stokes hot spot), "single" (the MD's single kicked host: the impurity
+        at rest near the centre, as the MD places it), "thermal" (local Maxwellian) or "states" (the MD's own impurities:
+        ``start_states``).
     r0 : float or None
         start="hotspot": the hot spot's radius, a length as the scene's start.r0 (not
         ``coldblast.hydro.core``'s r0/lambda); None: the scene's start.r0. Only with start="hotspot".

@@ -1,8 +1,10 @@
 // The tracer's hot-spot start (kinetic/hot_spot_start.*): the impurity's energy share given its hot
-// spot against the exact law of a Maxwellian with zero total momentum scaled to E, and the start's
-// options (kinetic/tracer_config.*).
+// spot against the exact law of a Maxwellian with zero total momentum scaled to E; the single-host
+// start's positions; and the start's options (kinetic/tracer_config.*).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "kinetic/hot_spot_start.hpp"
@@ -92,6 +94,23 @@ TEST_CASE("the hot-spot start: one sample is the MD's start on the same neighbou
   CHECK(kinetic::hot_spot_neighbourhood(scene, r0) == Approx(20.0));
 }
 
+TEST_CASE("the single-host start: the impurity is one of the particles nearest the centre, as in the MD", "[fast]") {
+  // The same generator's RSA neighbourhood, sorted by distance: the impurities are its four nearest
+  // (equal radii: md::place_impurities takes them in order of distance), each trajectory one of them.
+  const md::BlastConfig scene = paper_like(2, 1.0);
+  const double region = kinetic::hot_spot_neighbourhood(scene, 0.0);
+  CHECK(region == Approx(8 * scene.a));
+  std::mt19937_64 rng(11);
+  const auto count = static_cast<std::size_t>(std::llround(scene.n * M_PI * region * region));
+  std::vector<md::Vec<2>> x = md::random_sequential_addition<2>(rng, count, scene.a, region);
+  std::sort(x.begin(), x.end(), [](const auto& p, const auto& q) { return p.norm() < q.norm(); });
+  std::vector<md::Vec<2>> sampled;
+  for (int which = 0; which < 4; ++which) sampled.push_back(kinetic::sample_single_start_position<2>(scene, 11, which));
+  for (const auto& p : sampled) CHECK(std::find(x.begin(), x.begin() + 4, p) != x.begin() + 4);
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) CHECK(sampled[static_cast<std::size_t>(i)] != sampled[static_cast<std::size_t>(j)]);
+}
+
 TEST_CASE(
     "the tracer's start options: --r0 only with hotspot, in the MD's range, and a hot-spot scene not run from a kick",
     "[fast]") {
@@ -120,6 +139,14 @@ TEST_CASE(
   c.background = "ns";
   c.start = "kick";
   CHECK_THROWS_WITH(c.validate(), Catch::Contains("--start = kick, but the scene starts from a hot spot"));
+  c.start = "single";
+  CHECK_THROWS_WITH(c.validate(), Catch::Contains("--start = single, but the scene starts from a hot spot"));
+  c.scene.start = {md::StartKind::single, 0.0};  // a single kicked host: its impurities start at rest
+  c.validate();
+  c.start = "kick";
+  CHECK_THROWS_WITH(c.validate(), Catch::Contains("--start = kick, but the scene starts from a single kicked host") &&
+                                      Catch::Contains("give --start single"));
   c.start = "sedov";
-  CHECK_THROWS_WITH(c.validate(), Catch::Contains("--start = sedov is not one of: kick, hotspot, thermal, states"));
+  CHECK_THROWS_WITH(c.validate(),
+                    Catch::Contains("--start = sedov is not one of: kick, hotspot, single, thermal, states"));
 }

@@ -12,6 +12,7 @@
 #include "kinetic/batch.hpp"
 #include "kinetic/kinetic_theory.hpp"
 #include "kinetic/tracer_config.hpp"
+#include "kinetic/tracer_statistics.hpp"
 #include "run/ensemble.hpp"
 #include "run/impurity_states.hpp"
 #include "run/run_files.hpp"
@@ -58,6 +59,33 @@ TEST_CASE("tracer: equilibrium summary rate equals n chi S ⟨|g|⟩, and T_fina
   CHECK(std::abs(r.collision_rate() - exact) < 4 * r.collision_rate_error());
   CHECK(std::abs(r.temperature_final() - 2.0) < 4 * r.temperature_final_error());
   CHECK(r.trajectories() == 600);
+}
+
+TEST_CASE("tracer: the single-host start leaves the impurity at rest near the centre until the blast moves it") {
+  // At the start time (the first recording time t_min) every trajectory is at rest where it
+  // started: <v^2> and <r^2> (from its start) exactly 0, where the kick's <v^2> is 2E/(k M) on average.
+  TracerConfig c = small_config("tvns");
+  c.start = "single";
+  const TracerResult single = run_tracer(c);
+  REQUIRE(single.start_time == c.scene.t_min);
+  const auto at_rest = moment_rows(single.ensemble.scene.times, single.blocks).front();
+  CHECK(at_rest.t == c.scene.t_min);
+  CHECK(at_rest.v2 == 0.0);
+  CHECK(at_rest.r2 == 0.0);
+  c.start = "kick";
+  const TracerResult kick = run_tracer(c);
+  CHECK(moment_rows(kick.ensemble.scene.times, kick.blocks).front().v2 > 0.0);
+  // The blast picks it up: it collides, and its <v^2> grows from 0.
+  CHECK(single.collisions() > 0);
+  CHECK(moment_rows(single.ensemble.scene.times, single.blocks).back().v2 > 0.0);
+  // In an equilibrium bath it reaches the bath's temperature (equipartition, M <v^2>/d = T).
+  c = small_config("equilibrium");
+  c.start = "single";
+  c.T = 2.0;
+  c.phi = 0.2;
+  c.scene.impurities.mass = 3.0;
+  const TracerResult bath = run_tracer(c);
+  CHECK(std::abs(bath.temperature_final() - 2.0) < 4 * bath.temperature_final_error());
 }
 
 TEST_CASE("tracer: bit-identical for any thread count and sharding, with every kernel") {
