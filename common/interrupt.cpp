@@ -1,6 +1,8 @@
 // Stop requests for long work (common/interrupt.hpp).
 #include "common/interrupt.hpp"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <csignal>
 #include <cstring>
@@ -29,6 +31,12 @@ extern "C" void on_stop_signal(int signal_number) {
     return;
   }
   request_stop(signal_number);
+  // At once, so that a stop that waits for a long realization is not taken for a hang (write(2) is
+  // async-signal-safe; a failed write changes nothing).
+  static const char note[] =
+      "\ncoldblast: stopping after the work in flight (a running MD realization runs to its end and is saved); "
+      "the same signal again stops at once and loses it\n";
+  [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, note, sizeof note - 1);
 }
 }  // namespace
 

@@ -28,8 +28,9 @@ int stop_signal() noexcept;
 void clear_stop() noexcept;
 /// Throws Interrupted when a stop is pending.
 void throw_if_stop_requested();
-/// Routes SIGINT and SIGTERM to request_stop (sigaction, SA_RESTART); a second signal of the same
-/// kind while the first is pending ends the process at once with the default action.
+/// Routes SIGINT and SIGTERM to request_stop (sigaction, SA_RESTART), saying so on stderr at once
+/// (long loops stop at their next unit: an MD realization in flight runs to its end); a second
+/// signal of the same kind while the first is pending ends the process at once with the default action.
 void install_stop_handlers();
 
 }  // namespace coldblast::common

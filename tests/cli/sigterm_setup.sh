@@ -1,5 +1,6 @@
 #!/bin/sh
-# SIGTERM during `md run`'s set-up stops it within seconds with exit 143 and the interrupt message.
+# SIGTERM during `md run`'s set-up stops it within seconds with exit 143, the note printed at the signal
+# and the interrupt message.
 # The scene (3D, n = 0.73, near RSA jamming, impurities of radius 5) spends minutes placing
 # particles (the voxel phase, then re-placing the hosts the impurities displace), where the signal
 # used to be ignored until the first realization ran (docs/stress.md).
@@ -19,4 +20,5 @@ elapsed=$(($(date +%s) - start))
 [ "$code" -eq 143 ] || { echo "exit $code, expected 143"; cat "$WORK/out"; exit 1; }
 [ "$elapsed" -le 5 ] || { echo "took $elapsed s to stop after SIGTERM"; exit 1; }
 grep -q "interrupted by SIGTERM" "$WORK/out" || { echo "no interrupt message"; cat "$WORK/out"; exit 1; }
+grep -q "stopping after the work in flight" "$WORK/out" || { echo "no note at the signal"; cat "$WORK/out"; exit 1; }
 echo "stopped ${elapsed} s after SIGTERM during set-up"
