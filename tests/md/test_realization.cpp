@@ -50,9 +50,11 @@ Trip first_trip(const ResolvedScene& scene) {
 
 /// A lone impurity in 3D runs far ahead of Eq. (1) early on (it needed box_margin 5-6 before
 /// regions grew, docs/stress.md): box_margin 3 × R(t_max) does not hold all its realizations.
-ResolvedScene lone_impurity_scene(const std::string& extra = "region_growths=8") {
-  return resolve_scene(parse_scene(default_scene_toml(), {"d=3", "impurities.count=1", "t_max=20", "A_d=0.3",
-                                                          "box_margin=3", "realizations=1", extra}));
+ResolvedScene lone_impurity_scene(const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> keys = {"d=3",     "impurities.count=1", "t_max=20",
+                                   "A_d=0.3", "box_margin=3",       "realizations=1"};
+  keys.insert(keys.end(), extra.begin(), extra.end());
+  return resolve_scene(parse_scene(default_scene_toml(), keys));
 }
 }  // namespace
 
@@ -88,8 +90,14 @@ TEST_CASE("a realization that reaches its region's guard grows the region and st
 
 TEMPLATE_TEST_CASE("a region grown in place, between events, gives the run of the wider region from t = 0", "[fast]",
                    CalendarEventQueue, HeapEventQueue) {
-  // The scene of the case above: its first realization that reaches the guard of box_margin 3.
-  const ResolvedScene scene = lone_impurity_scene();
+  // The scene of the case above: its first realization that reaches the guard of box_margin 3; also
+  // with a big impurity (radius 3a: wider stencils, md/big_particles.hpp, laid anew with the cells)
+  // and with impurity recollisions off (the ghost bits, extended to the new particles).
+  const std::vector<std::string> variant =
+      GENERATE(std::vector<std::string>{}, std::vector<std::string>{"impurities.radius=1.5"},
+               std::vector<std::string>{"impurities.recollide=false"});
+  CAPTURE(variant);
+  const ResolvedScene scene = lone_impurity_scene(variant);
   const long long index = first_trip(scene).index;
   REQUIRE(index >= 0);
   GrowingBlast<3, TestType> blast(scene, index);
@@ -140,7 +148,7 @@ TEST_CASE("region_growths bounds the growth: 0 stops the run at the guard, namin
   CHECK(parse_scene(scene_text, {}).region_growths == 0);
   CHECK_THAT(coldblast::run::scene_toml(parse_scene(default_scene_toml(), {})), !Contains("region_growths"));
   // The scene of the case above, not allowed to grow: the first realization that reaches its guard.
-  ResolvedScene scene = lone_impurity_scene("region_growths=0");
+  ResolvedScene scene = lone_impurity_scene({"region_growths=0"});
   const long long index = first_trip(scene).index;
   REQUIRE(index >= 0);
   CHECK(last_growth(scene, 0));
