@@ -144,8 +144,8 @@ run::BlastResult run_ensemble(const md::BlastConfig& config, const run::RunOptio
     return run::run_blast(config, options);
 #endif
   } catch (const common::Interrupted&) {
-    std::cerr << "\ncoldblast: every finished realization is saved in " << run::checkpoint_folder(options.out).string()
-              << "; continue with `" << options.resume_hint << "`\n";
+    std::cerr << "\ncoldblast: every finished realization, and where each long one in flight stood, is saved in "
+              << run::checkpoint_folder(options.out).string() << "; continue with `" << options.resume_hint << "`\n";
     throw;
   }
 }
@@ -336,6 +336,11 @@ void add_run_command(CLI::App& md) {
   command->add_flag("--overwrite", run->request.overwrite,
                     "Replace the files of another run (or an unfinished run's checkpoint) in --out: exactly "
                     "those of its manifest.json");
+  command
+      ->add_option("--save-every", run->request.save_every,
+                   "Seconds: a realization running longer saves its state in OUT/checkpoint this often, so a kill "
+                   "loses at most this much of it; a stop (SIGINT, SIGTERM) saves it at once")
+      ->capture_default_str();
   add_format_option(*command, run->format);
   command->callback([run, out_option] {
     run->out_given = out_option->count() > 0;

@@ -34,8 +34,9 @@ extern "C" void on_stop_signal(int signal_number) {
   // At once, so that a stop that waits for a long realization is not taken for a hang (write(2) is
   // async-signal-safe; a failed write changes nothing).
   static const char note[] =
-      "\ncoldblast: stopping after the work in flight (a running MD realization runs to its end and is saved); "
-      "the same signal again stops at once and loses it\n";
+      "\ncoldblast: stopping after the work in flight (an MD run with an output folder saves a long realization "
+      "where it is, within seconds; other work runs to its end and is saved); the same signal again stops at once "
+      "and loses it\n";
   [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, note, sizeof note - 1);
 }
 }  // namespace

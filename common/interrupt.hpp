@@ -29,7 +29,8 @@ void clear_stop() noexcept;
 /// Throws Interrupted when a stop is pending.
 void throw_if_stop_requested();
 /// Routes SIGINT and SIGTERM to request_stop (sigaction, SA_RESTART), saying so on stderr at once
-/// (long loops stop at their next unit: an MD realization in flight runs to its end); a second
+/// (long loops stop at their next unit; an MD realization in flight saves its state when its run has an
+/// output folder, else runs to its end); a second
 /// signal of the same kind while the first is pending ends the process at once with the default action.
 void install_stop_handlers();
 

@@ -5,6 +5,9 @@
 // Two geometries: periodic (equilibrium) and open (blast: a cube of cells around a ball of particles).
 #include <array>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "md/collision.hpp"
@@ -108,6 +111,18 @@ class CellList {
   /// Raw arrays for hot loops: heads()[cell] = first(cell), links()[id] = next(id) (id >= -1).
   const std::int32_t* heads() const { return head_.data(); }
   const std::int32_t* links() const { return next_.data() + 1; }
+  /// The lists as they are (their order decides which of two equal contact times a scan keeps), to
+  /// be saved, and restored on a grid of the same shape (a mid-realization checkpoint: md/engine.hpp).
+  const HugeVector<std::int32_t>& head_array() const { return head_; }
+  const HugeVector<std::int32_t>& link_array() const { return next_; }
+  void restore_lists(HugeVector<std::int32_t> head, HugeVector<std::int32_t> next) {
+    if (head.size() != head_.size() || next.size() != next_.size())
+      throw std::runtime_error("saved cell lists of another grid (" + std::to_string(head.size()) + " cells, " +
+                               std::to_string(next.size()) + " links; this grid: " + std::to_string(head_.size()) +
+                               ", " + std::to_string(next_.size()) + ")");
+    head_ = std::move(head);
+    next_ = std::move(next);
+  }
 
   /// Overlapping cells (DynamO's idea, against rattling between two cells): a particle stays in
   /// its cell until it is `margin` beyond one of its faces, and then moves to the neighbour across

@@ -37,6 +37,50 @@ RecollisionStats RecollisionCounter<D>::stats(std::int32_t id) const {
   return {};
 }
 
+template <int D>
+void RecollisionCounter<D>::save(common::ByteWriter& out) const {
+  out.put<std::uint64_t>(memory_.size());
+  for (const Memory& memory : memory_) {
+    out.put(memory.id);
+    out.put_vector(memory.partners);
+    out.put(memory.stats);
+  }
+}
+
+template <int D>
+void RecollisionCounter<D>::restore(common::ByteReader& saved) {
+  if (saved.get<std::uint64_t>() != memory_.size()) saved.fail("saved recollisions of another number of impurities");
+  for (Memory& memory : memory_) {
+    if (saved.get<std::int32_t>() != memory.id) saved.fail("saved recollisions of other impurities");
+    memory.partners = saved.get_vector<std::int32_t>();
+    memory.stats = saved.get<RecollisionStats>();
+  }
+}
+
+template <int D>
+void ImpurityTrajectories<D>::save(common::ByteWriter& out) const {
+  out.put<std::uint64_t>(points_.size());
+  for (const TrajectoryPoint<D>& p : points_) {
+    out.put(p.t);
+    out.put(p.id);
+    for (int k = 0; k < D; ++k) out.put(p.position[k]);
+  }
+}
+
+template <int D>
+void ImpurityTrajectories<D>::restore(common::ByteReader& saved) {
+  const auto count = saved.get<std::uint64_t>();
+  if (count > saved.remaining() / (12 + 8 * D)) saved.fail("saved trajectories longer than the file");
+  points_.resize(static_cast<std::size_t>(count));
+  for (TrajectoryPoint<D>& p : points_) {
+    p.t = saved.get<double>();
+    p.id = saved.get<std::int32_t>();
+    for (int k = 0; k < D; ++k) p.position[k] = saved.get<double>();
+  }
+}
+
+template class ImpurityTrajectories<2>;
+template class ImpurityTrajectories<3>;
 template class RecollisionCounter<2>;
 template class RecollisionCounter<3>;
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/bytes.hpp"
 #include "md/particles.hpp"
 
 namespace coldblast::md {
@@ -51,6 +52,9 @@ class ImpurityTrajectories final : public CollisionObserver<D> {
   }
   /// In the order of the collisions.
   const std::vector<TrajectoryPoint<D>>& points() const { return points_; }
+  /// The points so far, for a mid-realization checkpoint, and back.
+  void save(common::ByteWriter& out) const;
+  void restore(common::ByteReader& saved);
 
  private:
   std::vector<TrajectoryPoint<D>> points_;
@@ -75,6 +79,10 @@ class RecollisionCounter final : public CollisionObserver<D> {
   void collided(const CollisionRecord<D>& c) override;
   /// The record of impurity `id`; zeros for a particle not watched.
   RecollisionStats stats(std::int32_t id) const;
+  /// Every impurity's partners and record so far, for a mid-realization checkpoint, and back (the
+  /// same impurities must be watched).
+  void save(common::ByteWriter& out) const;
+  void restore(common::ByteReader& saved);
 
  private:
   struct Memory {

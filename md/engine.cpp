@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -43,6 +44,14 @@ CellList<D> make_cells(const EngineConfig<D>& config, const CellPlan& plan, std:
 
 template <int D, class Queue>
 Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& state)
+    : Engine(config, state, nullptr) {}
+
+template <int D, class Queue>
+Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& state, common::ByteReader& saved)
+    : Engine(config, state, &saved) {}
+
+template <int D, class Queue>
+Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& state, common::ByteReader* saved)
     : config_(config),
       particles_(state.size()),
       predictions_(state.size()),
@@ -67,6 +76,10 @@ Engine<D, Queue>::Engine(const EngineConfig<D>& config, const InitialState<D>& s
   if (!config.impurity_recollisions) assign_impurity_bits();
   if (!config.periodic) set_guard_trigger();
   place_particles(state);
+  if (saved) {
+    restore(*saved);
+    return;
+  }
   place_big_particles();
   start_initial_motion(state);
   if (guard_hit_) guard_tripped();
@@ -105,6 +118,8 @@ void Engine<D, Queue>::grow(const EngineConfig<D>& wider, const std::vector<Vec<
     ghost_mask_.resize(count, 0);
     own_bit_.resize(count, 0);
   }
+  shell_first_.push_back(static_cast<std::int32_t>(old));
+  shell_time_.push_back(now_);
   for (std::size_t k = 0; k < resting.size(); ++k) {
     Particle<D>& p = particles_[old + k];
     p.position = resting[k];
@@ -126,6 +141,127 @@ void Engine<D, Queue>::grow(const EngineConfig<D>& wider, const std::vector<Vec<
     full_scan(id);
     schedule(id);
   }
+}
+
+namespace {
+constexpr std::uint64_t engine_save_version = 1;
+
+/// A particle as saved: its fields one by one (Eigen's vectors are not trivially copyable).
+template <int D>
+struct SavedParticle {
+  double position[D], velocity[D], time;
+  std::uint32_t collisions;
+  std::int32_t cell;
+  static SavedParticle of(const Particle<D>& p) {
+    SavedParticle s;
+    for (int k = 0; k < D; ++k) {
+      s.position[k] = p.position[k];
+      s.velocity[k] = p.velocity[k];
+    }
+    s.time = p.time;
+    s.collisions = p.collisions;
+    s.cell = p.cell;
+    return s;
+  }
+  void into(Particle<D>& p) const {
+    for (int k = 0; k < D; ++k) {
+      p.position[k] = position[k];
+      p.velocity[k] = velocity[k];
+    }
+    p.time = time;
+    p.collisions = collisions;
+    p.cell = cell;
+  }
+};
+}  // namespace
+
+template <int D, class Queue>
+void Engine<D, Queue>::save(common::ByteWriter& out) const {
+  out.put(engine_save_version);
+  out.put<std::int32_t>(D);
+  out.put<std::uint64_t>(particles_.size());
+  out.put(now_);
+  for (const std::uint64_t count : {collision_count_, event_count_, crossing_count_, stale_count_}) out.put(count);
+  out.put(virial_sum_);
+  out.put_vector(shell_first_);
+  out.put_vector(shell_time_);
+  out.put_vector(moving_);
+  // The moving particles' own data, in the order of moving_; a resting particle is its initial state.
+  std::vector<SavedParticle<D>> particles;
+  std::vector<Prediction> predictions;
+  std::vector<std::uint8_t> crossing;
+  std::vector<double> event_time;  // NaN: no event
+  std::vector<std::uint64_t> ghost_mask;
+  for (const std::int32_t id : moving_) {
+    particles.push_back(SavedParticle<D>::of(particles_[id]));
+    predictions.push_back(predictions_[id]);
+    crossing.push_back(crossing_[id]);
+    event_time.push_back(queue_.contains(id) ? queue_.time_of(id) : std::numeric_limits<double>::quiet_NaN());
+    if (ghosts_) ghost_mask.push_back(ghost_mask_[id]);
+  }
+  out.put_vector(particles);
+  out.put_vector(predictions);
+  out.put_vector(crossing);
+  out.put_vector(event_time);
+  out.put_vector(ghost_mask);
+  out.put_vector(cells_.head_array());
+  out.put_vector(cells_.link_array());
+}
+
+template <int D, class Queue>
+void Engine<D, Queue>::restore(common::ByteReader& saved) {
+  const auto expect = [&](std::uint64_t found, std::uint64_t wanted, const char* what) {
+    if (found != wanted)
+      saved.fail(std::string("saved engine of another ") + what + " (" + std::to_string(found) + ", here " +
+                 std::to_string(wanted) + ")");
+  };
+  expect(saved.get<std::uint64_t>(), engine_save_version, "format version");
+  expect(static_cast<std::uint64_t>(saved.get<std::int32_t>()), D, "dimension");
+  expect(saved.get<std::uint64_t>(), particles_.size(), "particle count");
+  now_ = saved.get<double>();
+  for (std::uint64_t* count : {&collision_count_, &event_count_, &crossing_count_, &stale_count_})
+    *count = saved.get<std::uint64_t>();
+  virial_sum_ = saved.get<double>();
+  shell_first_ = saved.get_vector<std::int32_t>();
+  shell_time_ = saved.get_vector<double>();
+  moving_ = saved.get_vector<std::int32_t>();
+  const auto particles = saved.get_vector<SavedParticle<D>>();
+  const auto predictions = saved.get_vector<Prediction>();
+  const auto crossing = saved.get_vector<std::uint8_t>();
+  const auto event_time = saved.get_vector<double>();
+  const auto ghost_mask = saved.get_vector<std::uint64_t>();
+  const std::size_t n = moving_.size();
+  if (shell_time_.size() != shell_first_.size() || particles.size() != n || predictions.size() != n ||
+      crossing.size() != n || event_time.size() != n || ghost_mask.size() != (ghosts_ ? n : 0))
+    saved.fail("saved engine with arrays of unequal lengths");
+  // Resting particles keep their initial state, at the time their shell was added (a contact is
+  // predicted at the later of the two particles' stored times).
+  for (std::size_t k = 0; k < shell_first_.size(); ++k) {
+    const std::size_t end =
+        k + 1 < shell_first_.size() ? static_cast<std::size_t>(shell_first_[k + 1]) : particles_.size();
+    for (std::size_t id = static_cast<std::size_t>(shell_first_[k]); id < end && id < particles_.size(); ++id)
+      particles_[id].time = shell_time_[k];
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::int32_t id = moving_[k];
+    if (id < 0 || static_cast<std::size_t>(id) >= particles_.size() || moving_flag_[id])
+      saved.fail("saved engine with a moving particle out of range or listed twice");
+    moving_flag_[id] = 1;
+    particles[k].into(particles_[id]);
+    predictions_[id] = predictions[k];
+    crossing_[id] = crossing[k];
+    if (ghosts_) ghost_mask_[id] = ghost_mask[k];
+  }
+  auto head = saved.get_vector<std::int32_t, HugePageAllocator<std::int32_t>>();
+  auto links = saved.get_vector<std::int32_t, HugePageAllocator<std::int32_t>>();
+  try {
+    cells_.restore_lists(std::move(head), std::move(links));
+  } catch (const std::runtime_error& e) {
+    saved.fail(e.what());
+  }
+  place_big_particles();
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isnan(event_time[k])) queue_.set(moving_[k], event_time[k]);
 }
 
 template <int D, class Queue>
@@ -413,11 +549,13 @@ template <int D, class Queue>
 }
 
 template <int D, class Queue>
-void Engine<D, Queue>::run_until(double t) {
+bool Engine<D, Queue>::run_until(double t, std::uint64_t max_events) {
   if (t < now_) throw std::invalid_argument("run_until: t is earlier than the current time");
+  const std::uint64_t last = max_events > UINT64_MAX - event_count_ ? UINT64_MAX : event_count_ + max_events;
   while (!queue_.empty()) {
     const auto [time, id] = queue_.top();
     if (time > t) break;
+    if (event_count_ == last) return false;
     prefetch_next();
     queue_.pop();
     process(id, time);
@@ -425,6 +563,7 @@ void Engine<D, Queue>::run_until(double t) {
       guard_tripped();
   }
   now_ = t;
+  return true;
 }
 
 template <int D, class Queue>

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bytes.hpp"
 #include "md/big_particles.hpp"
 #include "md/cell_list.hpp"
 #include "md/collision.hpp"
@@ -66,6 +67,12 @@ template <int D, class Queue>
 class Engine {
  public:
   Engine(const EngineConfig<D>& config, const InitialState<D>& state);
+  /// The engine that save() wrote into `saved`, which must come from an engine built from the same
+  /// `config` and `state` (a grown engine: the config and state after its growths). Resting
+  /// particles are taken from `state`, the rest from `saved`; the run goes on bit for bit as the
+  /// saved engine's would have (tested). Throws std::runtime_error naming the mismatch when the
+  /// saved engine had another dimension, particle count or cell grid, or the bytes are cut short.
+  Engine(const EngineConfig<D>& config, const InitialState<D>& state, common::ByteReader& saved);
   Engine(const Engine&) = delete;  // the observers watch this engine
   Engine& operator=(const Engine&) = delete;
 
@@ -73,10 +80,12 @@ class Engine {
   /// engine or the runs it watches.
   void watch(CollisionObserver<D>& observer) { observers_.push_back(&observer); }
 
-  /// Processes every event up to time t (>= now()), then sets now() = t. Open geometry: throws
-  /// GuardTripped after the event in which a moving particle reached the guard; the engine is whole
-  /// then (now() is that event's time), and may grow (grow) and run on.
-  void run_until(double t);
+  /// Processes every event up to time t (>= now()), then sets now() = t and returns true; or stops
+  /// after `max_events` events (now() is the last one's time) and returns false, so that a caller can
+  /// save the engine between two slices of a long run (the slices change nothing: tested). Open
+  /// geometry: throws GuardTripped after the event in which a moving particle reached the guard; the
+  /// engine is whole then (now() is that event's time), and may grow (grow) and run on.
+  bool run_until(double t, std::uint64_t max_events = UINT64_MAX);
   /// Processes events until `count` more collisions happened; now() is the last event's time.
   /// GuardTripped as run_until.
   void run_collisions(std::uint64_t count);
@@ -88,6 +97,10 @@ class Engine {
   /// particles' stored states alone, so the trajectory is the one the wider region would have given
   /// from the start, up to the calendar's order of events at equal times.
   void grow(const EngineConfig<D>& wider, const std::vector<Vec<D>>& resting);
+  /// Appends the engine's state between two events to `out` (a mid-realization checkpoint): the
+  /// moving particles, their predictions and events, the cell lists, the counters. Read back by the
+  /// restoring constructor.
+  void save(common::ByteWriter& out) const;
 
   double now() const { return now_; }
   /// The geometry it runs in (grow widens it).
@@ -174,6 +187,9 @@ class Engine {
   void set_guard_trigger();
   void place_particles(const InitialState<D>& state);
   void start_initial_motion(const InitialState<D>& state);
+  // The one constructor: a fresh engine, or with `saved` the restored one (restore).
+  Engine(const EngineConfig<D>& config, const InitialState<D>& state, common::ByteReader* saved);
+  void restore(common::ByteReader& saved);
   // A moving particle beyond the guard's trigger: the event in hand completes (its scans, its
   // events, the observers), then run_until or run_collisions throws GuardTripped (guard_tripped).
   void check_guard(std::int32_t id) {
@@ -193,6 +209,9 @@ class Engine {
   std::vector<std::uint8_t> species_, moving_flag_;
   std::vector<std::uint8_t> crossing_;  // scheduled cell crossing: 2 axis + (direction > 0)
   std::vector<std::int32_t> moving_;
+  // Per growth (grow): the first particle it added and the time, the resting particles' own time.
+  std::vector<std::int32_t> shell_first_;
+  std::vector<double> shell_time_;
   double radius_[2], mass_[2], sigma_[2][2], sigma2_[2][2];  // sigma2_ = sigma_²
   bool same_radius_ = true;      // host and impurity radii equal: the contact distance needs no species lookup
   bool simd_crossing_ = false;   // the SIMD crossing time (config.simd, D = 3, CPU with AVX2)

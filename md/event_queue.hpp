@@ -21,6 +21,8 @@ class HeapEventQueue {
   /// Removes the event of `id` if it has one.
   void remove(std::int32_t id);
   bool contains(std::int32_t id) const { return position_[id] >= 0; }
+  /// The time of the event of `id`, which must have one (contains).
+  double time_of(std::int32_t id) const { return heap_[static_cast<std::size_t>(position_[id])].time; }
   bool empty() const { return heap_.empty(); }
   std::size_t size() const { return heap_.size(); }
   /// Earliest event (time, id); the queue must not be empty.
@@ -62,6 +64,8 @@ class CalendarEventQueue {
   void set(std::int32_t id, double time);
   void remove(std::int32_t id);
   bool contains(std::int32_t id) const { return where_[id] != absent; }
+  /// The time of the event of `id`, which must have one (contains).
+  double time_of(std::int32_t id) const { return time_[id]; }
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
   /// Earliest event (time, id); the queue must not be empty (not const: it may advance buckets).

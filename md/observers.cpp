@@ -67,14 +67,7 @@ BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const Observa
   for (std::size_t i = 0; i < engine.size(); ++i)
     if (engine.species(static_cast<std::int32_t>(i)) == impurity_species)
       impurities_.push_back(static_cast<std::int32_t>(i));
-  if (scene.wants(Observable::C_re) || scene.wants(Observable::dE_first) || scene.wants(Observable::dE_re)) {
-    recollisions_ = std::make_unique<RecollisionCounter<D>>(impurities_);
-    engine.watch(*recollisions_);
-  }
-  if (record_trajectories) {
-    trajectories_ = std::make_unique<ImpurityTrajectories<D>>();
-    engine.watch(*trajectories_);
-  }
+  watch(engine, record_trajectories);
   for (const std::int32_t id : impurities_) {
     initial_position_.push_back(engine.position(id));
     if (scene.wants(Observable::u_imp) || scene.wants(Observable::u_flow))
@@ -82,6 +75,51 @@ BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const Observa
   }
   if (scene.wants(Observable::n0) || scene.wants(Observable::T0))
     core_radius_ = radius_holding(Vec<D>::Zero(), held_particles, -1);
+}
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::watch(Engine<D, Queue>& engine, bool record_trajectories) {
+  if (scene_.wants(Observable::C_re) || scene_.wants(Observable::dE_first) || scene_.wants(Observable::dE_re)) {
+    recollisions_ = std::make_unique<RecollisionCounter<D>>(impurities_);
+    engine.watch(*recollisions_);
+  }
+  if (record_trajectories) {
+    trajectories_ = std::make_unique<ImpurityTrajectories<D>>();
+    engine.watch(*trajectories_);
+  }
+}
+
+template <int D, class Queue>
+BlastObserver<D, Queue>::BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout,
+                                       Engine<D, Queue>& engine, bool record_trajectories, common::ByteReader& saved)
+    : scene_(scene), layout_(layout), engine_(engine) {
+  impurities_ = saved.get_vector<std::int32_t>();
+  const auto initial = saved.get_vector<double>();
+  local_radius_ = saved.get_vector<double>();
+  core_radius_ = saved.get<double>();
+  if (initial.size() != D * impurities_.size()) saved.fail("saved impurity positions of another count");
+  for (std::size_t m = 0; m < impurities_.size(); ++m)
+    initial_position_.push_back(Eigen::Map<const Vec<D>>(initial.data() + D * m));
+  const bool recollisions = saved.get<std::uint8_t>() != 0, trajectories = saved.get<std::uint8_t>() != 0;
+  watch(engine, record_trajectories);
+  if (recollisions != (recollisions_ != nullptr) || trajectories != (trajectories_ != nullptr))
+    saved.fail("saved observer of another scene (recollisions or trajectories recorded or not)");
+  if (recollisions_) recollisions_->restore(saved);
+  if (trajectories_) trajectories_->restore(saved);
+}
+
+template <int D, class Queue>
+void BlastObserver<D, Queue>::save(common::ByteWriter& out) const {
+  out.put_vector(impurities_);
+  std::vector<double> initial;
+  for (const Vec<D>& x : initial_position_) initial.insert(initial.end(), x.data(), x.data() + D);
+  out.put_vector(initial);
+  out.put_vector(local_radius_);
+  out.put(core_radius_);
+  out.put<std::uint8_t>(recollisions_ != nullptr);
+  out.put<std::uint8_t>(trajectories_ != nullptr);
+  if (recollisions_) recollisions_->save(out);
+  if (trajectories_) trajectories_->save(out);
 }
 
 template <int D, class Queue>

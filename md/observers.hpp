@@ -63,6 +63,12 @@ class BlastObserver {
  public:
   BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout, Engine<D, Queue>& engine,
                 bool record_trajectories = false);
+  /// The observer save() wrote into `saved`, watching `engine` (restored from the same
+  /// mid-realization checkpoint: md/realization.hpp).
+  BlastObserver(const ResolvedScene& scene, const ObservableLayout& layout, Engine<D, Queue>& engine,
+                bool record_trajectories, common::ByteReader& saved);
+  /// Appends what it fixed at t = 0 and what its collision observers recorded since.
+  void save(common::ByteWriter& out) const;
   void measure(int k, std::vector<double>& record) const;
   /// Shock radius from the moving mass: R = (N_moving / (n∞ Ω_d))^(1/d).
   double shock_radius() const;
@@ -79,6 +85,8 @@ class BlastObserver {
            flow_squared = 0.0;
   };
   double radius_holding(const Vec<D>& centre, int others, std::int32_t exclude) const;
+  /// The collision observers the scene needs (C_re, dE_first, dE_re; trajectories), watching the engine.
+  void watch(Engine<D, Queue>& engine, bool record_trajectories);
   /// `value` into the record's entry of `observable` at time index k, if the scene records it.
   void put(std::vector<double>& record, theory::Observable observable, int k, double value) const;
   ImpuritySums impurity_sums() const;

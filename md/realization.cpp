@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
+#include "common/bytes.hpp"
+#include "common/interrupt.hpp"
 #include "common/validate.hpp"
 #include "md/event_queue.hpp"
 
@@ -61,43 +66,179 @@ std::vector<PathPoint> impurity_paths(const Engine<D, Queue>& engine, const std:
   return points;
 }
 
-/// Realization `index` in a region that grows where the blast reaches (GrowingBlast), to t_max.
+constexpr char in_flight_magic[] = "coldblast in-flight realization";
+constexpr std::uint64_t in_flight_version = 1;
+
+void save_frame(common::ByteWriter& out, const SnapshotFrame& f) {
+  out.put(f.t);
+  out.put(f.region_radius);
+  out.put_vector(f.id);
+  out.put_vector(f.position);
+  out.put_vector(f.velocity);
+  out.put_vector(f.impurity);
+  out.put_vector(f.moving);
+  out.put_vector(f.collisions);
+}
+
+SnapshotFrame read_frame(common::ByteReader& in) {
+  SnapshotFrame f;
+  f.t = in.get<double>();
+  f.region_radius = in.get<double>();
+  f.id = in.get_vector<std::int32_t>();
+  f.position = in.get_vector<double>();
+  f.velocity = in.get_vector<double>();
+  f.impurity = in.get_vector<std::uint8_t>();
+  f.moving = in.get_vector<std::uint8_t>();
+  f.collisions = in.get_vector<std::uint32_t>();
+  return f;
+}
+
+/// One realization in a region that grows where the blast reaches (GrowingBlast), from t = 0 or
+/// from a mid-run checkpoint (InFlight), through its stops (recording and snapshot times) to t_max.
+template <int D, class Queue>
+class RealizationRun {
+ public:
+  RealizationRun(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
+                 const RealizationExtras& extras, const InFlight* in_flight)
+      : scene_(scene), layout_(layout), index_(index), extras_(extras), in_flight_(in_flight) {
+    for (std::size_t k = 0; k < scene.times.size(); ++k) stops_.push_back({scene.times[k], static_cast<int>(k)});
+    for (const double t : extras.snapshot_times) stops_.push_back({t, -1});
+    std::stable_sort(stops_.begin(), stops_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    if (in_flight && !in_flight->resume.empty()) {
+      resume(in_flight->resume);
+      return;
+    }
+    blast_ = std::make_unique<GrowingBlast<D, Queue>>(scene, index);
+    observer_ = std::make_unique<BlastObserver<D, Queue>>(scene, layout, blast_->engine(), extras.paths);
+    out_.record.assign(layout.size(), 0.0);
+    for (const std::int32_t id : observer_->impurities()) start_.push_back(blast_->engine().position(id));
+  }
+
+  RealizationOutput finish(const std::function<void(long long, double)>& realization_time) {
+    Engine<D, Queue>& engine = blast_->engine();
+    for (; next_stop_ < stops_.size(); ++next_stop_) {
+      const auto [t, k] = stops_[next_stop_];
+      run_to(t);
+      if (realization_time) realization_time(index_, t);
+      if (k >= 0) {
+        observer_->measure(k, out_.record);
+      } else {
+        out_.snapshots.push_back(capture(engine, extras_.selection));
+        out_.snapshots.back().region_radius = engine.config().region_radius;
+      }
+    }
+    run_to(scene_.config.t_max);
+    out_.growths = blast_->growths();
+    out_.region_radius = engine.config().region_radius;
+    out_.particles = engine.size();
+    out_.collisions = engine.collision_count();
+    out_.energy_error = std::abs(engine.kinetic_energy() - scene_.config.E) / scene_.config.E;
+    if (observer_->trajectories())
+      out_.paths = impurity_paths(engine, observer_->impurities(), start_, observer_->trajectories()->points());
+    return std::move(out_);
+  }
+
+ private:
+  // Runs to t; with in_flight_, in slices, saving when due and before a requested stop.
+  void run_to(double t) {
+    if (!in_flight_) {
+      blast_->run_until(t);
+      return;
+    }
+    while (!blast_->run_until(t, std::max<std::uint64_t>(in_flight_->slice_events, 1))) {
+      if (common::stop_requested()) {
+        in_flight_->save(save());
+        common::throw_if_stop_requested();
+      }
+      if (in_flight_->due && in_flight_->due()) in_flight_->save(save());
+    }
+  }
+
+  void put_header(common::ByteWriter& out) const {
+    out.put_string(in_flight_magic);
+    out.put(in_flight_version);
+    out.put<std::int32_t>(D);
+    out.put<std::uint8_t>(std::is_same_v<Queue, HeapEventQueue>);
+    out.put<std::int64_t>(index_);
+    out.put<std::uint64_t>(scene_.config.seed);
+    out.put<std::uint64_t>(stops_.size());
+  }
+
+  std::string save() const {
+    common::ByteWriter out;
+    put_header(out);
+    out.put<std::uint64_t>(next_stop_);
+    out.put<std::int32_t>(blast_->growths());
+    out.put_vector(out_.record);
+    out.put<std::uint64_t>(out_.snapshots.size());
+    for (const SnapshotFrame& f : out_.snapshots) save_frame(out, f);
+    std::vector<double> start;
+    for (const Vec<D>& x : start_) start.insert(start.end(), x.data(), x.data() + D);
+    out.put_vector(start);
+    blast_->engine().save(out);
+    observer_->save(out);
+    std::string bytes = out.take();
+    const std::uint64_t check = common::fnv1a64(bytes.data(), bytes.size());
+    bytes.append(reinterpret_cast<const char*>(&check), sizeof check);
+    return bytes;
+  }
+
+  void resume(const std::string& bytes) {
+    try {
+      read(bytes);
+    } catch (const std::runtime_error& e) {  // the reader's and the restoring constructors' refusals
+      throw SavedStateRefused(e.what());
+    }
+  }
+
+  void read(const std::string& bytes) {
+    const std::string source = "the saved state of realization " + std::to_string(index_);
+    std::uint64_t check = 0;
+    if (bytes.size() < sizeof check) throw std::runtime_error(source + ": truncated");
+    std::memcpy(&check, bytes.data() + bytes.size() - sizeof check, sizeof check);
+    if (check != common::fnv1a64(bytes.data(), bytes.size() - sizeof check))
+      throw std::runtime_error(source + ": its checksum does not match (truncated or altered)");
+    const std::string body = bytes.substr(0, bytes.size() - sizeof check);
+    common::ByteReader in(body, source);
+    common::ByteWriter expected;
+    put_header(expected);
+    for (const char c : expected.bytes())
+      if (in.get<char>() != c) in.fail("of another realization, scene, dimension, calendar or format");
+    next_stop_ = static_cast<std::size_t>(in.get<std::uint64_t>());
+    const int growths = in.get<std::int32_t>();
+    out_.record = in.get_vector<double>();
+    if (next_stop_ > stops_.size() || growths < 0 || out_.record.size() != layout_.size())
+      in.fail("a stop, growth count or record size this scene does not have");
+    const auto frames = in.get<std::uint64_t>();
+    if (frames > stops_.size()) in.fail("more snapshots than the scene has stops");
+    for (std::uint64_t k = 0; k < frames; ++k) out_.snapshots.push_back(read_frame(in));
+    const auto start = in.get_vector<double>();
+    for (std::size_t m = 0; m + D <= start.size(); m += D) start_.push_back(Eigen::Map<const Vec<D>>(start.data() + m));
+    blast_ = std::make_unique<GrowingBlast<D, Queue>>(scene_, index_, growths, in);
+    observer_ = std::make_unique<BlastObserver<D, Queue>>(scene_, layout_, blast_->engine(), extras_.paths, in);
+    if (in.remaining() != 0) in.fail("bytes left over");
+  }
+
+  const ResolvedScene& scene_;
+  const ObservableLayout& layout_;
+  long long index_;
+  const RealizationExtras& extras_;
+  const InFlight* in_flight_;
+  std::vector<std::pair<double, int>> stops_;  // (time, k) with k = -1 for a snapshot
+  std::size_t next_stop_ = 0;
+  std::unique_ptr<GrowingBlast<D, Queue>> blast_;
+  std::unique_ptr<BlastObserver<D, Queue>> observer_;
+  RealizationOutput out_;
+  std::vector<Vec<D>> start_;  // the impurities at t = 0
+};
+
 template <int D, class Queue>
 RealizationOutput run_realization_in(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
                                      const RealizationExtras& extras,
-                                     const std::function<void(long long, double)>& realization_time) {
-  const BlastConfig& c = scene.config;
+                                     const std::function<void(long long, double)>& realization_time,
+                                     const InFlight* in_flight) {
   if (realization_time) realization_time(index, 0.0);
-  GrowingBlast<D, Queue> blast(scene, index);
-  Engine<D, Queue>& engine = blast.engine();
-  BlastObserver<D, Queue> observer(scene, layout, engine, extras.paths);
-
-  RealizationOutput out;
-  out.record.assign(layout.size(), 0.0);
-  std::vector<std::pair<double, int>> stops;  // (time, k) with k = -1 for a snapshot
-  for (std::size_t k = 0; k < scene.times.size(); ++k) stops.push_back({scene.times[k], static_cast<int>(k)});
-  for (const double t : extras.snapshot_times) stops.push_back({t, -1});
-  std::stable_sort(stops.begin(), stops.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::vector<Vec<D>> start;
-  for (const std::int32_t id : observer.impurities()) start.push_back(engine.position(id));
-  for (const auto& [t, k] : stops) {
-    blast.run_until(t);
-    if (realization_time) realization_time(index, t);
-    if (k >= 0)
-      observer.measure(k, out.record);
-    else {
-      out.snapshots.push_back(capture(engine, extras.selection));
-      out.snapshots.back().region_radius = engine.config().region_radius;
-    }
-  }
-  blast.run_until(c.t_max);
-  out.growths = blast.growths();
-  out.region_radius = engine.config().region_radius;
-  out.particles = engine.size();
-  out.collisions = engine.collision_count();
-  out.energy_error = std::abs(engine.kinetic_energy() - c.E) / c.E;
-  if (observer.trajectories())
-    out.paths = impurity_paths(engine, observer.impurities(), start, observer.trajectories()->points());
+  RealizationOutput out = RealizationRun<D, Queue>(scene, layout, index, extras, in_flight).finish(realization_time);
   for (const double v : out.record)
     if (!std::isfinite(v)) throw std::runtime_error("non-finite observable in realization " + std::to_string(index));
   return out;
@@ -193,14 +334,15 @@ template EngineConfig<2> blast_engine_config<2>(const ResolvedScene&, int);
 template EngineConfig<3> blast_engine_config<3>(const ResolvedScene&, int);
 
 RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
-                                  const RealizationExtras& extras, const std::function<void(long long, double)>& time) {
+                                  const RealizationExtras& extras, const std::function<void(long long, double)>& time,
+                                  const InFlight* in_flight) {
   common::require_integer_in_range("snapshot stride", extras.selection.stride, 1, 1000000000);
   const bool heap = scene.config.queue == "heap";
   if (scene.config.d == 2)
-    return heap ? run_realization_in<2, HeapEventQueue>(scene, layout, index, extras, time)
-                : run_realization_in<2, CalendarEventQueue>(scene, layout, index, extras, time);
-  return heap ? run_realization_in<3, HeapEventQueue>(scene, layout, index, extras, time)
-              : run_realization_in<3, CalendarEventQueue>(scene, layout, index, extras, time);
+    return heap ? run_realization_in<2, HeapEventQueue>(scene, layout, index, extras, time, in_flight)
+                : run_realization_in<2, CalendarEventQueue>(scene, layout, index, extras, time, in_flight);
+  return heap ? run_realization_in<3, HeapEventQueue>(scene, layout, index, extras, time, in_flight)
+              : run_realization_in<3, CalendarEventQueue>(scene, layout, index, extras, time, in_flight);
 }
 
 }  // namespace coldblast::md

@@ -7,8 +7,11 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "common/bytes.hpp"
 #include "md/blast_config.hpp"
 #include "md/engine.hpp"
 #include "md/initial_state.hpp"
@@ -50,6 +53,12 @@ EngineConfig<D> blast_engine_config(const ResolvedScene& scene, int growths = 0)
 template <int D, class Queue>
 class GrowingBlast {
  public:
+  /// The blast saved by a mid-realization checkpoint after `growths` growths: its initial state
+  /// rebuilt (blast_initial_state), its engine restored from `saved` (Engine's restoring constructor).
+  GrowingBlast(const ResolvedScene& scene, long long index, int growths, common::ByteReader& saved)
+      : scene_(scene), index_(index), state_(blast_initial_state<D>(scene, index, growths)), growths_(growths) {
+    engine_ = std::make_unique<Engine<D, Queue>>(blast_engine_config<D>(scene_, growths_), state_, saved);
+  }
   GrowingBlast(const ResolvedScene& scene, long long index)
       : scene_(scene), index_(index), state_(blast_initial_state<D>(scene, index)) {
     for (;;) try {
@@ -60,11 +69,11 @@ class GrowingBlast {
         grow_initial_state<D>(scene_, index_, state_, ++growths_);
       }
   }
-  /// engine().run_until(t), growing the region whenever the guard trips.
-  void run_until(double t) {
+  /// engine().run_until(t, max_events), growing the region whenever the guard trips (a growth
+  /// starts a new count of max_events).
+  bool run_until(double t, std::uint64_t max_events = UINT64_MAX) {
     for (;;) try {
-        engine_->run_until(t);
-        return;
+        return engine_->run_until(t, max_events);
       } catch (const GuardTripped&) {
         if (last_growth(scene_, growths_)) throw;
         const std::size_t old = state_.size();
@@ -133,6 +142,26 @@ struct RealizationOutput {
   std::vector<PathPoint> paths;  ///< by impurity id, then time (empty unless extras.paths)
 };
 
+/// A realization's mid-run checkpoint (run/ keeps it in OUT/checkpoint: docs/md-output.md,
+/// "Checkpoints"). The realization runs in slices of `slice_events` events; between two slices it
+/// asks `due()` whether to hand its state to `save`, and when a stop was requested
+/// (common::stop_requested: SIGINT, SIGTERM) it saves and throws common::Interrupted instead of running to
+/// its end. The state holds the engine, the observers and what was recorded so far; given back as
+/// `resume`, the realization goes on from there, and its output is bit for bit that of a run never
+/// stopped (tested).
+struct InFlight {
+  std::string resume;         ///< bytes an earlier `save` gave for the same scene, index and extras; empty: t = 0
+  std::function<bool()> due;  ///< may be empty (then saves happen only at a stop)
+  std::function<void(std::string&&)> save;  ///< required
+  std::uint64_t slice_events = 1ULL << 20;  ///< events between two polls (~0.3 s of a deep 2D blast), >= 1
+};
+
+/// A saved state (InFlight::resume) that is not the realization's, refused before it ran.
+class SavedStateRefused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Runs realization `index` to t_max: the observers' record at each recording time, the extras
 /// asked for. The gas is filled where the blast reaches (GrowingBlast): the realization starts in
 /// the scene's region, which grows region_growth times wider, in place, whenever a moving particle
@@ -140,8 +169,12 @@ struct RealizationOutput {
 /// (t = 0, before the initial state is built) and as the realization passes each recorded time. Throws
 /// std::invalid_argument for a scene whose region does not hold its particles, std::runtime_error (md::GuardTripped)
 /// when a particle reaches the guard of the widest region, or an observable is not finite.
+/// With `in_flight`, it can be saved mid-run and resumed (InFlight); a `resume` that is not this
+/// realization's state (another scene, index, dimension or build, a truncated or altered file)
+/// throws SavedStateRefused saying why.
 RealizationOutput run_realization(const ResolvedScene& scene, const ObservableLayout& layout, long long index,
                                   const RealizationExtras& extras = {},
-                                  const std::function<void(long long, double)>& time = {});
+                                  const std::function<void(long long, double)>& time = {},
+                                  const InFlight* in_flight = nullptr);
 
 }  // namespace coldblast::md

@@ -208,6 +208,7 @@ std::string scene_difference(const std::string& there, const std::string& now) {
 Checkpoint load_checkpoint(const fs::path& directory, const md::ResolvedScene& scene) {
   common::remove_stale_temporaries(directory);  // writes of a killed run
   common::remove_stale_temporaries(directory / "files");
+  common::remove_stale_temporaries(directory / "in_flight");
   const std::string saved = checkpoint_scene_text(directory), current = scene_toml(scene.config);
   if (saved != current)
     throw std::invalid_argument("--resume: the checkpoint in " + directory.string() +
@@ -244,6 +245,26 @@ Checkpoint read_checkpoint(const fs::path& directory, const md::ResolvedScene& s
       }
   std::sort(checkpoint.files.begin(), checkpoint.files.end());
   return checkpoint;
+}
+
+fs::path in_flight_path(const fs::path& directory, long long realization) {
+  return directory / "in_flight" / ("realization_" + std::to_string(realization) + ".bin");
+}
+
+std::string read_in_flight(const fs::path& directory, long long realization) {
+  const fs::path path = in_flight_path(directory, realization);
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return "";
+  return common::read_text(path, "--resume", std::size_t{1} << 40);
+}
+
+void save_in_flight(const fs::path& directory, long long realization, const std::string& bytes) {
+  common::write_file_atomic(in_flight_path(directory, realization), bytes);
+}
+
+void drop_in_flight(const fs::path& directory, long long realization) {
+  std::error_code ignored;
+  fs::remove(in_flight_path(directory, realization), ignored);
 }
 
 void remove_checkpoint(const fs::path& out) {

@@ -76,6 +76,17 @@ Checkpoint load_checkpoint(const std::filesystem::path& directory, const md::Res
 /// skipped, not removed) and does not compare scenes. Errors name `option`.
 Checkpoint read_checkpoint(const std::filesystem::path& directory, const md::ResolvedScene& scene,
                            const std::string& option);
+/// The mid-run state of realization `realization` (md::InFlight), kept while it runs:
+/// CHECKPOINT/in_flight/realization_<r>.bin. A binary file for this machine type (common/bytes.hpp),
+/// dropped once the realization's block file counts it.
+std::filesystem::path in_flight_path(const std::filesystem::path& directory, long long realization);
+/// Its bytes, empty when there is none.
+std::string read_in_flight(const std::filesystem::path& directory, long long realization);
+/// Writes it atomically (a kill while writing keeps the previous save).
+void save_in_flight(const std::filesystem::path& directory, long long realization, const std::string& bytes);
+/// Removes it, if present.
+void drop_in_flight(const std::filesystem::path& directory, long long realization);
+
 /// Removes OUT/checkpoint once the run's outputs and manifest are written: renamed to
 /// OUT/checkpoint.removed, then deleted, so that a kill meanwhile never leaves part of it.
 void remove_checkpoint(const std::filesystem::path& out);

@@ -54,6 +54,41 @@ std::string growth_note(long long r, const md::RealizationOutput& out) {
          std::to_string(out.particles) + " particles): a moving particle reached the guard of the smaller one";
 }
 
+namespace {
+/// Realization r, from its saved mid-run state if there is a usable one (else from t = 0, with a
+/// note), its state saved every callbacks.in_flight_seconds after `save_block` brought the block
+/// file up to date, so that a saved state is always that of the realization after the block's last
+/// counted one.
+md::RealizationOutput run_one(const md::ResolvedScene& scene, const md::ObservableLayout& layout, long long r,
+                              const BlockCallbacks& callbacks, const std::function<void()>& save_block) {
+  const md::RealizationExtras extras = realization_extras(scene, r);
+  if (!callbacks.save_in_flight) return md::run_realization(scene, layout, r, extras, callbacks.realization_time);
+  md::InFlight in_flight;
+  in_flight.slice_events = callbacks.in_flight_slice_events;
+  auto last = std::chrono::steady_clock::now();
+  in_flight.due = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - last).count() >=
+           callbacks.in_flight_seconds;
+  };
+  in_flight.save = [&](std::string&& bytes) {
+    save_block();
+    callbacks.save_in_flight(r, bytes);
+    last = std::chrono::steady_clock::now();
+  };
+  in_flight.resume = callbacks.load_in_flight(r);
+  if (!in_flight.resume.empty()) try {
+      return md::run_realization(scene, layout, r, extras, callbacks.realization_time, &in_flight);
+    } catch (const md::SavedStateRefused& e) {
+      // Refused before it ran (another build's format, a damaged file): run it from t = 0.
+      if (callbacks.note)
+        callbacks.note("the saved mid-run state is not usable (" + std::string(e.what()) + "): realization " +
+                       std::to_string(r) + " runs again from t = 0");
+      in_flight.resume.clear();
+    }
+  return md::run_realization(scene, layout, r, extras, callbacks.realization_time, &in_flight);
+}
+}  // namespace
+
 BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_id, long long block, BlockProgress start,
                         const std::atomic<bool>* stop, const BlockCallbacks& callbacks) {
   const md::ObservableLayout layout(scene);
@@ -69,6 +104,8 @@ BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_i
   const auto save = [&] {
     if (!callbacks.save || s.count == saved) return;
     callbacks.save(progress);
+    if (callbacks.drop_in_flight)
+      for (long long r = first + saved; r < first + s.count; ++r) callbacks.drop_in_flight(r);
     saved = s.count;
     last_save = std::chrono::steady_clock::now();
   };
@@ -76,8 +113,7 @@ BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_i
     for (long long r = first + s.count; r < first + count; ++r) {
       if (stop && *stop) break;
       common::throw_if_stop_requested();  // SIGINT/SIGTERM or a host's Ctrl-C: what is done is saved
-      const md::RealizationOutput out =
-          md::run_realization(scene, layout, r, realization_extras(scene, r), callbacks.realization_time);
+      const md::RealizationOutput out = run_one(scene, layout, r, callbacks, save);
       md::add_realization(s, out.record, out.collisions, out.energy_error);
       if (out.growths > 0 && callbacks.note) {
         static std::mutex one_at_a_time;
@@ -95,13 +131,19 @@ BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_i
     save();  // the realizations finished before the stop or the failure are kept
     throw;
   }
-  if (s.count < count) save();  // stopped early by another thread's failure
+  // Stopped early by another thread's failure; or, with mid-run states, finished: saved here so
+  // that the last realization's state is dropped only once the block file counts it.
+  if (s.count < count || callbacks.drop_in_flight) save();
   return progress;
 }
 
 EnsemblePlan plan_ensemble(const md::BlastConfig& config, const RunOptions& options) {
   common::require_in_range("checkpoint_seconds", options.checkpoint_seconds, 0.0, 1e9, common::Bound::closed,
                            common::Bound::closed);
+  common::require_in_range("in_flight_seconds", options.in_flight_seconds, 0.0, 1e9, common::Bound::open,
+                           common::Bound::closed);
+  if (options.in_flight_slice_events < 1)
+    throw std::invalid_argument("in_flight_slice_events = 0: allowed 1 to 2^64 - 1");
   EnsemblePlan plan;
   BlastResult& result = plan.result;
   result.scene = resolve_blast_scene(config);
@@ -152,13 +194,19 @@ BlockCallbacks checkpoint_callbacks(const RunOptions& options, long long block) 
   callbacks.realization_time = options.realization_time;
   callbacks.note = options.warning;
   callbacks.save_seconds = options.checkpoint_seconds;
-  if (!options.out.empty())
-    callbacks.save = [folder = checkpoint_folder(options.out), block](BlockProgress& progress) {
-      const NamedFiles unsaved(progress.files.begin() + static_cast<std::ptrdiff_t>(progress.files_saved),
-                               progress.files.end());
-      save_checkpoint_block(folder, block, progress.sums, unsaved);
-      progress.files_saved = progress.files.size();
-    };
+  if (options.out.empty()) return callbacks;
+  const std::filesystem::path folder = checkpoint_folder(options.out);
+  callbacks.save = [folder, block](BlockProgress& progress) {
+    const NamedFiles unsaved(progress.files.begin() + static_cast<std::ptrdiff_t>(progress.files_saved),
+                             progress.files.end());
+    save_checkpoint_block(folder, block, progress.sums, unsaved);
+    progress.files_saved = progress.files.size();
+  };
+  callbacks.load_in_flight = [folder](long long r) { return read_in_flight(folder, r); };
+  callbacks.save_in_flight = [folder](long long r, const std::string& bytes) { save_in_flight(folder, r, bytes); };
+  callbacks.drop_in_flight = [folder](long long r) { drop_in_flight(folder, r); };
+  callbacks.in_flight_seconds = options.in_flight_seconds;
+  callbacks.in_flight_slice_events = options.in_flight_slice_events;
   return callbacks;
 }
 

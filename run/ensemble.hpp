@@ -48,6 +48,13 @@ struct RunOptions {
   /// Seconds between saves of a block in progress, besides the saves when it ends and at a stop;
   /// 0 saves after every realization. >= 0.
   double checkpoint_seconds = 60.0;
+  /// A realization that runs longer than this (seconds, > 0) saves its state in OUT/checkpoint every
+  /// `in_flight_seconds` (md::InFlight, run/checkpoint.hpp's in_flight_path), and at a stop (SIGINT,
+  /// SIGTERM) saves it and ends at once instead of running to its end; `--resume` goes on from
+  /// there, bit for bit. Without `out`, realizations in flight run to their end at a stop.
+  double in_flight_seconds = 600.0;
+  /// Events between two checks of the clock and the stop request (md::InFlight::slice_events), >= 1.
+  std::uint64_t in_flight_slice_events = std::uint64_t{1} << 20;
   /// The run id (run/run_directory.hpp); empty = a new one, or the checkpoint's when resuming.
   std::string run_id;
   /// Called before any work with a warning for stderr (snapshots above ~100 MB:
@@ -92,6 +99,13 @@ struct BlockCallbacks {
   /// early (a stop request, another thread's failure, its own failure) with realizations done.
   std::function<void(BlockProgress&)> save;
   double save_seconds = 60.0;
+  /// Mid-realization checkpoints (RunOptions::in_flight_seconds; all empty: none): the saved state
+  /// of a realization (empty bytes: none), its save, and its removal once the block file counts it.
+  std::function<std::string(long long)> load_in_flight;
+  std::function<void(long long, const std::string&)> save_in_flight;
+  std::function<void(long long)> drop_in_flight;
+  double in_flight_seconds = 600.0;
+  std::uint64_t in_flight_slice_events = std::uint64_t{1} << 20;
 };
 /// Runs the realizations of block `block` from `start` (its first start.sums.count realizations
 /// done: a block in progress from a checkpoint; empty: from its first) in index order on the

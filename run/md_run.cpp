@@ -65,7 +65,9 @@ void restore_from_checkpoint(const MdRunRequest& request, MdRunPlan& plan) {
 
 MdRunPlan plan_md_run(const MdRunRequest& request) {
   common::require_integer_in_range("--threads", request.threads, 1, 1024);
+  common::require_in_range("--save-every", request.save_every, 0.0, 1e9, common::Bound::open, common::Bound::closed);
   MdRunPlan plan;
+  plan.options.in_flight_seconds = request.save_every;
   plan.options.threads = request.threads;
   plan.options.out = request.out;
   plan.options.resume = request.resume;

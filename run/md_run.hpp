@@ -26,6 +26,9 @@ struct MdRunRequest {
   std::filesystem::path out;              ///< output folder; empty = no files and no checkpoint
   bool resume = false;                    ///< continue OUT's checkpoint (--resume OUT)
   bool overwrite = false;                 ///< replace another run's files in OUT (--overwrite)
+  /// A realization running longer saves its state every this many seconds (--save-every;
+  /// RunOptions::in_flight_seconds), in (0, 1e9].
+  double save_every = 600.0;
   /// How to continue a stopped run, in messages (the CLI's "coldblast md run --resume OUT").
   std::string resume_hint;
 };

@@ -172,3 +172,86 @@ TEST_CASE(
   }
   fs::remove_all(out);
 }
+
+TEST_CASE("a stop mid-realization saves its state, and the run resumed from it equals the uninterrupted run",
+          "[slow]") {
+  const BlastConfig config =
+      parse_scene(default_scene_toml(), {"t_max=120", "realizations=3", "block_size=2", "A_d=0.351935906848599",
+                                         R"(observables=["R_imp","C_imp","n0","R","p_imp"])"});
+  const BlastResult full = run_blast(config, {});
+  const fs::path out = fresh_directory("in_flight"), dir = checkpoint_folder(out);
+  RunOptions options;
+  options.out = out;
+  options.in_flight_seconds = 1e9;  // no periodic saves: only the stop's
+  options.in_flight_slice_events = 500;
+  // The stop arrives while realization 1 runs, past half its time.
+  options.realization_time = [&](long long r, double t) {
+    if (r == 1 && t > 0.5 * config.t_max) coldblast::common::request_stop(SIGTERM);
+  };
+  CHECK_THROWS_AS(run_blast(config, options), coldblast::common::Interrupted);
+  coldblast::common::clear_stop();
+  // Realization 0 is in block 0's file (written before the state), realization 1's state beside it.
+  REQUIRE(fs::exists(in_flight_path(dir, 1)));
+  const Checkpoint saved = load_checkpoint(dir, resolve_blast_scene(config));
+  REQUIRE(saved.partial.count(0) == 1);
+  CHECK(saved.partial.at(0).count == 1);
+
+  bool damaged = false;
+  SECTION("resumed from the state") {}
+  SECTION("a damaged state is refused, with a note, and the realization runs again from t = 0") {
+    damaged = true;
+    std::string bytes = read_in_flight(dir, 1);
+    bytes[bytes.size() / 3] ^= 0x10;
+    save_in_flight(dir, 1, bytes);
+  }
+  options.resume = true;
+  std::size_t reported = 0;  // times realization 1 reports: the stops after its saved state only
+  options.realization_time = [&](long long r, double) { reported += r == 1; };
+  std::vector<std::string> notes;
+  options.warning = [&](const std::string& note) { notes.push_back(note); };
+  long long ran = 0;
+  options.progress = [&](long long done, long long) { ran = done; };
+  const BlastResult resumed = run_blast(config, options);
+  CHECK(ran == 2);  // realization 1 (from its state, or again) and 2
+  for (const auto& [b, s] : full.blocks) {
+    CHECK(resumed.blocks.at(b).sum == s.sum);
+    CHECK(resumed.blocks.at(b).sum_squares == s.sum_squares);
+    CHECK(resumed.blocks.at(b).collisions == s.collisions);
+  }
+  bool refused = false;
+  for (const std::string& note : notes) refused |= note.find("runs again from t = 0") != std::string::npos;
+  CHECK(refused == damaged);
+  const std::size_t stops = resolve_blast_scene(config).times.size();
+  if (damaged)
+    CHECK(reported >= stops + 1);
+  else
+    CHECK(reported < stops);
+  CHECK(notes.size() == (damaged ? 1 : 0));
+  CHECK(!fs::exists(in_flight_path(dir, 1)));  // dropped once block 0's file counts realization 1
+  fs::remove_all(out);
+}
+
+TEST_CASE("a long realization saves its state periodically, and the state is dropped once its block counts it",
+          "[slow]") {
+  const BlastConfig config = parse_scene(default_scene_toml(), {"t_max=120", "realizations=2", "block_size=2",
+                                                                "A_d=0.351935906848599", R"(observables=["R_imp"])"});
+  const fs::path out = fresh_directory("in_flight_periodic"), dir = checkpoint_folder(out);
+  RunOptions options;
+  options.out = out;
+  options.in_flight_seconds = 1e-9;  // a save after every slice
+  options.in_flight_slice_events = 500;
+  bool seen_during = false;
+  options.realization_time = [&](long long r, double t) {
+    if (r == 1 && t > 0.5 * config.t_max) seen_during = seen_during || fs::exists(in_flight_path(dir, 1));
+  };
+  const BlastResult result = run_blast(config, options);
+  CHECK(seen_during);
+  CHECK(!fs::exists(in_flight_path(dir, 0)));
+  CHECK(!fs::exists(in_flight_path(dir, 1)));
+  const BlastResult plain = run_blast(config, {});
+  CHECK(result.blocks.at(0).sum == plain.blocks.at(0).sum);
+  RunOptions bad;
+  bad.in_flight_seconds = 0.0;
+  CHECK_THROWS_WITH(run_blast(config, bad), Catch::Contains("in_flight_seconds"));
+  fs::remove_all(out);
+}
