@@ -309,9 +309,11 @@ run::MdRunRequest md_request(const std::string& scene_file, const std::string& s
 
 py::list md_run(const std::string& scene_file, const std::string& scene_text, const std::vector<std::string>& overrides,
                 std::optional<long long> realizations, std::optional<long long> seed, int threads,
-                const std::string& out, bool resume, bool overwrite, const py::object& progress_callback) {
+                const std::string& out, bool resume, bool overwrite, double save_every,
+                const py::object& progress_callback) {
   if (!out.empty()) common::require_output_folder(out, resume ? "--resume" : "--out");
   run::MdRunRequest request = md_request(scene_file, scene_text, overrides, realizations, seed, threads);
+  request.save_every = save_every;
   // As `md run --out DIR`: every finished realization is checkpointed in DIR/checkpoint until the
   // outputs are written (an interrupted run keeps them; resume=DIR or `coldblast md run --resume
   // DIR` continues).
@@ -553,7 +555,7 @@ void bind_hydro(py::module_& m) {
 void bind_md(py::module_& m) {
   m.def("md_run", &md_run, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"), py::arg("realizations"),
         py::arg("seed"), py::arg("threads"), py::arg("out"), py::arg("resume"), py::arg("overwrite"),
-        py::arg("progress"));
+        py::arg("save_every"), py::arg("progress"));
   m.def("md_states", &md_states, py::arg("scene_file"), py::arg("scene_text"), py::arg("overrides"),
         py::arg("realizations"), py::arg("seed"), py::arg("threads"), py::arg("time"), py::arg("out"),
         py::arg("overwrite"), py::arg("progress"));

@@ -73,7 +73,7 @@ def default_scene():
 
 
 def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=True, resume=None, overwrite=False,
-        **overrides):
+        save_every=600.0, **overrides):
     """Run an MD ensemble of blast realizations (the same call as ``coldblast md run``).
 
     Parameters
@@ -102,6 +102,10 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
         and run id come from its checkpoint; an argument given again must agree with them.
     overwrite : bool
         Replace the files of another run in ``out`` (exactly those of its manifest.json).
+    save_every : float
+        Seconds, in (0, 1e9] (``md run --save-every``): with ``out``, a realization running longer saves
+        where it stands in out/checkpoint this often, and at Ctrl-C or SIGTERM at once, so a long
+        realization is not lost; ``run(resume=out)`` goes on from there, bit for bit.
     **overrides
         Scene keys to override, as ``--set key=value``: ``E=20``, ``t_max=500``,
         ``observables=["R_imp", "T0"]``, ``impurities={"count": 2}``.
@@ -119,8 +123,9 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
 
     Raises ValueError with the CLI's exit-2 message for a bad scene or argument (e.g.
     ``E = -1 is outside (0, inf)``), RuntimeError for a failed run, KeyboardInterrupt on Ctrl-C
-    (at the current realization's end; with ``out`` every finished realization stays in
-    out/checkpoint, and ``run(resume=out)`` continues it).
+    (with ``out`` every finished realization stays in out/checkpoint and a long one in flight saves
+    where it stands, within about a second; without ``out`` at the current realization's end;
+    ``run(resume=out)`` continues it).
     """
     if resume is not None:
         if out is not None and os.path.normpath(os.fspath(out)) != os.path.normpath(os.fspath(resume)):
@@ -132,7 +137,7 @@ def run(scene=None, realizations=None, threads=1, seed=None, out=None, progress=
                                 None if realizations is None else _integer(realizations, "--realizations"),
                                 None if seed is None else _integer(seed, "--seed"), _integer(threads, "--threads"),
                                 "" if out is None else os.fspath(out), resume is not None, bool(overwrite),
-                                _progress.callback(progress, "md run", "realizations"))
+                                float(save_every), _progress.callback(progress, "md run", "realizations"))
     return Run(raw, out, "md run")
 
 

@@ -7,6 +7,8 @@ import sys
 import textwrap
 import time
 
+import pytest
+
 CHILD = textwrap.dedent(r"""
     import sys, coldblast
     def progress(done, total):  # one write: SIGINT cannot land between its words
@@ -234,3 +236,37 @@ def test_sigterm_stops_md_run_with_exit_143_and_keeps_every_realization(tmp_path
               for block in (stopped / "checkpoint").glob("block_*.txt")]
     assert 0 < seen <= sum(counts) < 200, (seen, counts)
     assert (stopped / "checkpoint" / "run.json").exists() and not (stopped / "manifest.json").exists()
+
+
+IN_FLIGHT_CHILD = textwrap.dedent(r"""
+    import sys, coldblast
+    def progress(done, total):
+        sys.stdout.write(f"progress {done} {total}\n")
+        sys.stdout.flush()
+    try:
+        coldblast.md.run(realizations=2, t_max=8000, threads=1, out=sys.argv[1], progress=progress)
+    except KeyboardInterrupt:
+        print("\nKeyboardInterrupt", flush=True)
+        raise SystemExit(7)
+    print("finished", flush=True)
+""")
+
+
+def test_ctrl_c_mid_realization_saves_where_it_stands_and_resume_goes_on_from_there(tmp_path):
+    """Ctrl-C 0.3 s into the second of two long realizations: it saves its state (out/checkpoint/in_flight)
+    and md.run(resume=out) ends with the files of an uninterrupted run."""
+    import coldblast
+    stopped = tmp_path / "stopped"
+    lines, code, latency = interrupt_child(IN_FLIGHT_CHILD, stopped)
+    assert "KeyboardInterrupt" in lines and code == 7, lines
+    assert latency is not None and latency < LATENCY_BOUND_SECONDS
+    assert (stopped / "checkpoint" / "in_flight" / "realization_1.bin").stat().st_size > 0
+    with pytest.raises(ValueError, match="--save-every"):
+        coldblast.md.run(resume=stopped, save_every=0, progress=False)
+    coldblast.md.run(resume=stopped, progress=False)
+    reference = tmp_path / "reference"
+    coldblast.md.run(realizations=2, t_max=8000, out=reference, progress=False)
+    names = sorted(p.name for p in reference.iterdir())
+    assert names == sorted(p.name for p in stopped.iterdir())
+    for name in names:
+        assert comparable(stopped / name) == comparable(reference / name), name
