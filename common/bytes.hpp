@@ -39,6 +39,8 @@ class ByteWriter {
     put<std::uint64_t>(text.size());
     append(text.data(), text.size());
   }
+  /// Room for `more` bytes beyond those written (a large state grows without doubling its memory).
+  void reserve(std::size_t more) { bytes_.reserve(bytes_.size() + more); }
   const std::string& bytes() const { return bytes_; }
   std::string take() { return std::move(bytes_); }
 

@@ -186,6 +186,8 @@ void Engine<D, Queue>::save(common::ByteWriter& out) const {
   out.put_vector(shell_first_);
   out.put_vector(shell_time_);
   out.put_vector(moving_);
+  out.reserve(moving_.size() * (sizeof(SavedParticle<D>) + sizeof(Prediction) + 1 + 8 + (ghosts_ ? 8 : 0)) +
+              (cells_.head_array().size() + cells_.link_array().size()) * 4 + (1 << 20));  // + the observers' (slack)
   // The moving particles' own data, in the order of moving_; a resting particle is its initial state.
   std::vector<SavedParticle<D>> particles;
   std::vector<Prediction> predictions;
