@@ -9,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -50,9 +51,11 @@ class ByteWriter {
 };
 
 /// Reads what ByteWriter wrote; throws std::runtime_error naming `source` when the bytes run out.
+/// It views the bytes, which must outlive it (a temporary string is refused at compile time).
 class ByteReader {
  public:
-  ByteReader(const std::string& bytes, std::string source) : bytes_(bytes), source_(std::move(source)) {}
+  ByteReader(std::string_view bytes, std::string source) : bytes_(bytes), source_(std::move(source)) {}
+  ByteReader(std::string&&, std::string) = delete;
   template <class T>
   T get() {
     static_assert(std::is_trivially_copyable_v<T>);
@@ -86,7 +89,7 @@ class ByteReader {
     offset_ += size;
     return at;
   }
-  const std::string& bytes_;
+  std::string_view bytes_;
   std::string source_;
   std::size_t offset_ = 0;
 };

@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -198,8 +199,7 @@ class RealizationRun {
     std::memcpy(&check, bytes.data() + bytes.size() - sizeof check, sizeof check);
     if (check != common::fnv1a64(bytes.data(), bytes.size() - sizeof check))
       throw std::runtime_error(source + ": its checksum does not match (truncated or altered)");
-    const std::string body = bytes.substr(0, bytes.size() - sizeof check);
-    common::ByteReader in(body, source);
+    common::ByteReader in(std::string_view(bytes).substr(0, bytes.size() - sizeof check), source);
     common::ByteWriter expected;
     put_header(expected);
     for (const char c : expected.bytes())
