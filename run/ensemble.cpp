@@ -131,9 +131,10 @@ BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_i
     save();  // the realizations finished before the stop or the failure are kept
     throw;
   }
-  // Stopped early by another thread's failure; or, with mid-run states, finished: saved here so
-  // that the last realization's state is dropped only once the block file counts it.
-  if (s.count < count || callbacks.drop_in_flight) save();
+  // Finished, or stopped early by another thread's stop or failure: saved here, so that a block
+  // that ends after another thread's stop is kept, and the last realization's mid-run state is
+  // dropped only once the block file counts it.
+  save();
   return progress;
 }
 
@@ -239,13 +240,7 @@ BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options) 
       ++done;
       if (options.progress) options.progress(done, total);
     });
-    if (stop || blocks[slot].sums.count < md::block_realizations(config, b)) return;
-    if (!options.out.empty()) {
-      BlockProgress& finished = blocks[slot];
-      save_checkpoint_block(
-          checkpoint_folder(options.out), b, finished.sums,
-          NamedFiles(finished.files.begin() + static_cast<std::ptrdiff_t>(finished.files_saved), finished.files.end()));
-    }
+    // run_block saved it (checkpoint_callbacks), finished or not.
   });
   for (std::size_t slot = 0; slot < owned.size(); ++slot) {
     result.blocks[owned[slot]] = std::move(blocks[slot].sums);

@@ -95,8 +95,9 @@ struct BlockCallbacks {
   std::function<void()> realization_done;                   ///< after each realization
   std::function<void(long long, double)> realization_time;  ///< RunOptions::realization_time
   std::function<void(const std::string&)> note;             ///< RunOptions::warning
-  /// Saves the block's progress (the checkpoint): every `save_seconds`, and when the block stops
-  /// early (a stop request, another thread's failure, its own failure) with realizations done.
+  /// Saves the block's progress (the checkpoint): every `save_seconds`, before a realization's
+  /// mid-run state, and when the block ends (finished, or stopped early by a stop request, another
+  /// thread's stop or failure, its own failure) with realizations not yet saved.
   std::function<void(BlockProgress&)> save;
   double save_seconds = 60.0;
   /// Mid-realization checkpoints (RunOptions::in_flight_seconds; all empty: none): the saved state
