@@ -1,5 +1,6 @@
 #pragma once
-// Binary state files (a realization's mid-run checkpoint, run/inflight.hpp): a writer that appends
+// Binary state files and messages (a realization's mid-run checkpoint, run/checkpoint.hpp's
+// in_flight_path; the MPI ranks' block results, run/mpi_ensemble.hpp): a writer that appends
 // trivially copyable values and arrays of them in this machine's byte order, and a reader that
 // checks every length against what is left, so a truncated or foreign file is refused with a
 // message instead of being read past its end. A file is resumed only on the machine type that wrote
@@ -40,6 +41,8 @@ class ByteWriter {
     put<std::uint64_t>(text.size());
     append(text.data(), text.size());
   }
+  /// Bytes as they are, without their length (another writer's output, read on by the same reader).
+  void put_raw(std::string_view bytes) { append(bytes.data(), bytes.size()); }
   /// Room for `more` bytes beyond those written (a large state grows without doubling its memory).
   void reserve(std::size_t more) { bytes_.reserve(bytes_.size() + more); }
   const std::string& bytes() const { return bytes_; }

@@ -96,7 +96,7 @@ class Coordinator {
   void run_local_thread() {
     try {
       for (long long b = take_block(); b != stop_block; b = take_block()) {
-        std::vector<char> result = work_.run(b, failed_);
+        std::string result = work_.run(b, failed_);
         if (failed_) return;
         work_.finish(b, std::move(result), false);
       }
@@ -108,7 +108,7 @@ class Coordinator {
   /// Serves the other ranks' threads until each has been told to stop. Polling with a short sleep
   /// keeps this thread off the CPU (a blocking MPI_Recv spins in Open MPI).
   void serve_remote_threads(int remote_threads) {
-    std::vector<char> buffer;
+    std::string buffer;
     while (remote_threads > 0) {
       int arrived = 0;
       MPI_Status status;
@@ -126,14 +126,14 @@ class Coordinator {
   }
 
   /// The message `status` announces: a failure is rethrown here, a finished block goes to work.finish.
-  void receive(const MPI_Status& status, std::vector<char>& buffer) {
+  void receive(const MPI_Status& status, std::string& buffer) {
     int bytes = 0;
     MPI_Get_count(&status, MPI_BYTE, &bytes);
     buffer.resize(static_cast<std::size_t>(bytes));
     check(
         MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
         "MPI_Recv");
-    ByteReader reader(buffer);
+    ByteReader reader(buffer, "MPI message");
     const auto kind = reader.get<std::int64_t>();
     if (kind == kind_failure) {
       const int code = static_cast<int>(reader.get<std::int64_t>());
@@ -144,7 +144,7 @@ class Coordinator {
     if (kind == kind_result) {
       const long long b = reader.get<std::int64_t>();
       const std::size_t header = 2 * sizeof(std::int64_t);
-      work_.finish(b, std::vector<char>(buffer.begin() + static_cast<std::ptrdiff_t>(header), buffer.end()), true);
+      work_.finish(b, buffer.substr(header), true);
     }
   }
 
@@ -185,14 +185,14 @@ class WorkerRank {
  private:
   struct Outgoing {
     int thread;
-    std::vector<char> bytes;
+    std::string bytes;
   };
 
   /// Thread `thread`'s message to rank 0, and rank 0's answer to it.
   long long ask(int thread, ByteWriter&& message) {
     std::unique_lock<std::mutex> lock(mutex_);
     answered_[thread] = false;
-    outbox_.push_back({thread, std::move(message.bytes)});
+    outbox_.push_back({thread, message.take()});
     cv_.notify_all();
     cv_.wait(lock, [&] { return answered_[thread]; });
     return answer_[thread];
@@ -204,11 +204,11 @@ class WorkerRank {
     long long b = ask(thread, std::move(first));
     try {
       while (b != stop_block) {
-        const std::vector<char> result = work_.run(b, never_stop_);
+        const std::string result = work_.run(b, never_stop_);
         ByteWriter message;
         message.put<std::int64_t>(kind_result);
         message.put<std::int64_t>(b);
-        message.bytes.insert(message.bytes.end(), result.begin(), result.end());
+        message.put_raw(result);
         b = ask(thread, std::move(message));
       }
     } catch (...) {
@@ -218,7 +218,7 @@ class WorkerRank {
       message.put<std::int64_t>(error_code(e));
       message.put_string(error_text(e));
       std::lock_guard<std::mutex> lock(mutex_);
-      outbox_.push_back({thread, std::move(message.bytes)});
+      outbox_.push_back({thread, message.take()});
     }
     std::lock_guard<std::mutex> lock(mutex_);
     --running_;
@@ -231,7 +231,7 @@ class WorkerRank {
     check(MPI_Send(message.bytes.data(), static_cast<int>(message.bytes.size()), MPI_BYTE, 0, message.thread,
                    MPI_COMM_WORLD),
           "MPI_Send");
-    if (ByteReader(message.bytes).get<std::int64_t>() == kind_failure) {
+    if (ByteReader(message.bytes, "MPI message").get<std::int64_t>() == kind_failure) {
       // Rank 0 reports the error and ends every rank; wait for that without spinning.
       for (auto& t : pool) t.detach();
       for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
@@ -288,8 +288,8 @@ void put_block_sums(ByteWriter& w, const BlockSums& s, const NamedFiles& files) 
   w.put<std::int64_t>(s.count);
   w.put<std::uint64_t>(s.collisions);
   w.put<double>(s.energy_error_max);
-  w.put_doubles(s.sum);
-  w.put_doubles(s.sum_squares);
+  w.put_vector(s.sum);
+  w.put_vector(s.sum_squares);
   w.put<std::uint64_t>(files.size());
   for (const auto& [name, content] : files) {
     w.put_string(name);
@@ -302,8 +302,8 @@ BlockSums get_block_sums(ByteReader& r, NamedFiles* files) {
   s.count = r.get<std::int64_t>();
   s.collisions = r.get<std::uint64_t>();
   s.energy_error_max = r.get<double>();
-  s.sum = r.get_doubles();
-  s.sum_squares = r.get_doubles();
+  s.sum = r.get_vector<double>();
+  s.sum_squares = r.get_vector<double>();
   const auto n = r.get<std::uint64_t>();
   for (std::uint64_t i = 0; i < n; ++i) {
     std::string name = r.get_string();
@@ -343,7 +343,7 @@ BlastResult run_remote_blocks(const md::BlastConfig& config, int threads, int ra
     const BlockProgress block = run_block(scene, run_id, b, {}, &stop);
     ByteWriter w;
     put_block_sums(w, block.sums, block.files);
-    return std::move(w.bytes);
+    return w.take();
   };
   run_blocks_mpi(work);
   BlastResult empty;
@@ -380,10 +380,10 @@ BlastResult run_blast_mpi(const md::BlastConfig& config, const RunOptions& optio
     });
     ByteWriter w;
     put_block_sums(w, block.sums, block.files);
-    return std::move(w.bytes);
+    return w.take();
   };
-  work.finish = [&](long long b, std::vector<char>&& bytes, bool remote) {
-    ByteReader reader(bytes);
+  work.finish = [&](long long b, std::string&& bytes, bool remote) {
+    ByteReader reader(bytes, "MPI message");
     NamedFiles files;
     BlockSums s = get_block_sums(reader, &files);
     if (!options.out.empty()) save_checkpoint_block(checkpoint_folder(options.out), b, s, files);

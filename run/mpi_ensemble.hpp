@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bytes.hpp"
 #include "md/block_sums.hpp"
 #include "run/ensemble.hpp"
 
@@ -36,55 +37,8 @@ class MpiSession {
 };
 
 /// Raw bytes of a block's result (MPI messages; ranks share the floating-point format).
-class ByteWriter {
- public:
-  template <class T>
-  void put(const T& value) {
-    const auto* p = reinterpret_cast<const char*>(&value);
-    bytes.insert(bytes.end(), p, p + sizeof(T));
-  }
-  void put_doubles(const std::vector<double>& v) {
-    put<std::uint64_t>(v.size());
-    const auto* p = reinterpret_cast<const char*>(v.data());
-    bytes.insert(bytes.end(), p, p + v.size() * sizeof(double));
-  }
-  void put_string(const std::string& s) {
-    put<std::uint64_t>(s.size());
-    bytes.insert(bytes.end(), s.begin(), s.end());
-  }
-  std::vector<char> bytes;
-};
-
-/// Reads what a ByteWriter wrote, in the same order; std::logic_error past the end.
-class ByteReader {
- public:
-  explicit ByteReader(const std::vector<char>& bytes) : bytes_(bytes) {}
-  template <class T>
-  T get() {
-    T value;
-    take(&value, sizeof(T));
-    return value;
-  }
-  std::vector<double> get_doubles() {
-    std::vector<double> v(get<std::uint64_t>());
-    take(v.data(), v.size() * sizeof(double));
-    return v;
-  }
-  std::string get_string() {
-    std::string s(get<std::uint64_t>(), '\0');
-    take(s.data(), s.size());
-    return s;
-  }
-
- private:
-  void take(void* out, std::size_t n) {
-    if (offset_ + n > bytes_.size()) throw std::logic_error("MPI: truncated message");
-    std::memcpy(out, bytes_.data() + offset_, n);
-    offset_ += n;
-  }
-  const std::vector<char>& bytes_;
-  std::size_t offset_ = 0;
-};
+using common::ByteReader;
+using common::ByteWriter;
 
 /// md's block sums (and realization 0's files) in bytes, exactly.
 void put_block_sums(ByteWriter& w, const md::BlockSums& s, const NamedFiles& files = {});
@@ -97,10 +51,10 @@ struct MpiBlockWork {
   int threads = 1;                 ///< compute threads per rank, [1, 1024]
   /// Any rank, any thread: runs one block and returns its result as bytes. Should poll `stop` in
   /// long work and return early (the result is then discarded).
-  std::function<std::vector<char>(long long block, const std::atomic<bool>& stop)> run;
+  std::function<std::string(long long block, const std::atomic<bool>& stop)> run;
   /// Rank 0: keeps a finished block (`remote`: computed by another rank). Called from several
   /// threads at once: it must lock what it shares.
-  std::function<void(long long block, std::vector<char>&& result, bool remote)> finish;
+  std::function<void(long long block, std::string&& result, bool remote)> finish;
 };
 
 /// Rank 0's `text` on every rank (collective; other ranks pass anything): e.g. the run id.

@@ -9,26 +9,26 @@ namespace coldblast::run {
 
 namespace {
 
-std::vector<char> to_bytes(const kinetic::TracerBlockSums& block) {
+std::string to_bytes(const kinetic::TracerBlockSums& block) {
   ByteWriter w;
   put_block_sums(w, block.sums);
   const kinetic::TracerBlock& t = block.tracer;
-  w.put_doubles(t.moments);
+  w.put_vector(t.moments);
   w.put<double>(t.collisions_squares);
   w.put<double>(t.v2_final);
   w.put<double>(t.v2_final_squares);
   w.put<std::uint64_t>(t.candidates);
   w.put<std::uint64_t>(t.collisions);
   w.put<std::int64_t>(t.count);
-  return std::move(w.bytes);
+  return w.take();
 }
 
-kinetic::TracerBlockSums from_bytes(const std::vector<char>& bytes) {
-  ByteReader r(bytes);
+kinetic::TracerBlockSums from_bytes(const std::string& bytes) {
+  ByteReader r(bytes, "MPI message");
   kinetic::TracerBlockSums block;
   block.sums = get_block_sums(r);
   kinetic::TracerBlock& t = block.tracer;
-  t.moments = r.get_doubles();
+  t.moments = r.get_vector<double>();
   t.collisions_squares = r.get<double>();
   t.v2_final = r.get<double>();
   t.v2_final_squares = r.get<double>();
@@ -57,7 +57,7 @@ TracerResult run_tracer_mpi(const kinetic::TracerConfig& config, const TracerPro
   work.threads = config.threads;
   work.pending = plan.pending;
   work.run = [&](long long b, const std::atomic<bool>& stop) { return to_bytes(run.run_block(b, stop)); };
-  work.finish = [&](long long b, std::vector<char>&& bytes, bool) {
+  work.finish = [&](long long b, std::string&& bytes, bool) {
     kinetic::TracerBlockSums block = from_bytes(bytes);
     save_tracer_block(files, b, block);
     std::lock_guard<std::mutex> lock(mutex);
