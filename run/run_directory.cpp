@@ -42,15 +42,32 @@ std::string listed(const std::vector<std::string>& names, std::size_t most = 4) 
   return text;
 }
 
-std::string checkpoint_description(const fs::path& folder) {
-  long long blocks = 0;
+/// What a checkpoint holds that a resume would continue: block files and mid-run states.
+struct SavedWork {
+  long long blocks = 0, states = 0;
+  bool any() const { return blocks > 0 || states > 0; }
+};
+
+SavedWork saved_work(const fs::path& folder) {
+  SavedWork work;
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(folder / "checkpoint", error)) {
     const std::string name = entry.path().filename().string();
-    if (starts_with(name, "block_") && ends_with(name, ".txt")) ++blocks;
+    if (starts_with(name, "block_") && ends_with(name, ".txt")) ++work.blocks;
   }
-  return std::to_string(blocks) + (blocks == 1 ? " block" : " blocks") + " saved in " +
-         (folder / "checkpoint").string();
+  for (const auto& entry : fs::directory_iterator(folder / "checkpoint" / "in_flight", error)) {
+    const std::string name = entry.path().filename().string();
+    if (starts_with(name, "realization_") && ends_with(name, ".bin")) ++work.states;
+  }
+  return work;
+}
+
+std::string checkpoint_description(const fs::path& folder) {
+  const SavedWork work = saved_work(folder);
+  std::string text = std::to_string(work.blocks) + (work.blocks == 1 ? " block" : " blocks");
+  if (work.states > 0)
+    text += " and " + std::to_string(work.states) + " mid-run realization state" + (work.states == 1 ? "" : "s");
+  return text + " saved in " + (folder / "checkpoint").string();
 }
 
 }  // namespace
@@ -188,9 +205,10 @@ void require_one_run(const fs::path& folder, const std::string& option) {
 void claim_output_folder(const fs::path& folder, const std::string& option, bool overwrite,
                          const std::string& resume_hint) {
   FolderRuns runs = inspect_folder(folder);
-  if (!runs.checkpoint || checkpoint_description(folder).rfind("0 blocks", 0) == 0) {
-    // Nothing to resume: a run that failed before its first block, or the remains of one killed
-    // while starting or deleting its checkpoint (no scene.toml), whose blocks must not be resumed.
+  if (!runs.checkpoint || !saved_work(folder).any()) {
+    // Nothing to resume: a run that failed before its first block (and saved no realization's
+    // state), or the remains of one killed while starting or deleting its checkpoint (no
+    // scene.toml), whose blocks must not be resumed.
     std::error_code ignored;
     fs::remove_all(folder / "checkpoint", ignored);
     fs::remove_all(folder / "checkpoint.removed", ignored);

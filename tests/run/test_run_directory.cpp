@@ -150,6 +150,26 @@ TEST_CASE("a new run refuses another run's folder; --overwrite removes exactly t
   for (const fs::path& folder : {out, other, legacy}) fs::remove_all(folder);
 }
 
+TEST_CASE("a checkpoint holding only a realization's mid-run state is a run to resume, not cleared", "[fast]") {
+  // Stopped in its first realization: no block file yet, but maybe hours of work in its state.
+  const fs::path out = fresh("claim_in_flight");
+  MdRunRequest request;
+  request.overrides = small;
+  request.out = out;
+  const MdRunPlan plan = plan_md_run(request);
+  start_checkpoint(checkpoint_folder(out), resolve_blast_scene(plan.config), {"r1", "md run", 0, 1, ""});
+  save_in_flight(checkpoint_folder(out), 0, "state");
+  CHECK_THROWS_WITH(claim_output_folder(out, "--out", false, "coldblast md run --resume X"),
+                    Catch::Contains("unfinished run (0 blocks and 1 mid-run realization state saved in") &&
+                        Catch::Contains("--resume X"));
+  CHECK(fs::exists(in_flight_path(checkpoint_folder(out), 0)));
+  // Without the state, the same checkpoint is nothing to resume and is cleared.
+  drop_in_flight(checkpoint_folder(out), 0);
+  CHECK_NOTHROW(claim_output_folder(out, "--out", false, ""));
+  CHECK(!fs::exists(checkpoint_folder(out)));
+  fs::remove_all(out);
+}
+
 TEST_CASE("md run resumed from OUT alone restores the scene and shard; an option given again must agree", "[fast]") {
   const fs::path out = fresh("resume_alone");
   MdRunRequest request;
