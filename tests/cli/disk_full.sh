@@ -21,15 +21,9 @@ fi
 trap 'umount "$work/mnt" 2>/dev/null' EXIT
 mnt=$work/mnt
 
-"$binary" "${scene[@]}" --out "$work/reference" >/dev/null 2>&1 || fail "reference run failed"
-normalise() {
-  grep -v -E '^# (command|run_id): |"(run_id|wall_seconds|collisions_per_second|seconds_per_realization|resumed_realizations|resumed_collisions)":' "$1"
-}
-same_as_reference() {
-  for f in $(cd "$work/reference" && ls); do
-    diff <(normalise "$work/reference/$f") <(normalise "$1/$f") >/dev/null || fail "$f differs from the uninterrupted run's"
-  done
-}
+. "$(dirname "$0")/resume_lib.sh"
+reference_run "$binary" "$work" "${scene[@]}"
+same_as_reference() { same_files "$work/reference" "$1"; }
 fill_leaving() {  # fills the tmpfs until only $1 KiB are free
   rm -f "$mnt/filler"
   local free_kib=$(($(stat -f -c '%a * %S / 1024' "$mnt")))

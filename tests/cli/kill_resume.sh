@@ -15,10 +15,9 @@ echo "kill_resume: seed $seed (rerun with this third argument to repeat the kill
 scene=(md run --set t_max=60 --realizations 48 --set block_size=1 --threads 2)
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "kill_resume: FAIL: $*" >&2; exit 1; }
+. "$(dirname "$0")/resume_lib.sh"
 
-start=$(date +%s%N)
-"$binary" "${scene[@]}" --out "$work/reference" >/dev/null 2>"$work/reference.err" || fail "reference run: $(cat "$work/reference.err")"
-duration_ms=$((($(date +%s%N) - start) / 1000000))
+reference_run "$binary" "$work" "${scene[@]}"
 echo "kill_resume: uninterrupted run ${duration_ms} ms"
 
 out=$work/killed
@@ -64,14 +63,7 @@ args=("${scene[@]}" --out "$out")
 "$binary" "${args[@]}" >/dev/null 2>>"$work/killed.err" || fail "final resume: $(tail -3 "$work/killed.err")"
 [ -e "$out/checkpoint" ] && fail "the finished run left its checkpoint"
 
-normalise() {  # drops the provenance command line, the run id and the per-process cost fields
-  grep -v -E '^# (command|run_id): |"(run_id|wall_seconds|collisions_per_second|seconds_per_realization|resumed_realizations|resumed_collisions)":' "$1"
-}
-files=$(cd "$work/reference" && ls)
-[ "$files" = "$(cd "$out" && ls)" ] || fail "different files: $(cd "$out" && ls | tr '\n' ' ')"
-for f in $files; do
-  diff <(normalise "$work/reference/$f") <(normalise "$out/$f") >/dev/null || fail "$f differs from the uninterrupted run's"
-done
+same_files --names "$work/reference" "$out"
 leftovers=$(find "$out" -name '*.tmp.*' | wc -l)
 [ "$leftovers" -eq 0 ] || echo "kill_resume: note: $leftovers temporary files of killed writes remain"
-echo "kill_resume: PASS: $(echo $files | wc -w) files identical after 10 SIGKILLs, a SIGTERM and a SIGINT"
+echo "kill_resume: PASS: $file_count files identical after 10 SIGKILLs, a SIGTERM and a SIGINT"

@@ -9,10 +9,9 @@ binary=$1 work=$2
 scene=(md run --set t_max=12000 --realizations 1)
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "sigterm_in_flight: FAIL: $*" >&2; exit 1; }
+. "$(dirname "$0")/resume_lib.sh"
 
-start=$(date +%s%N)
-"$binary" "${scene[@]}" --out "$work/reference" >/dev/null 2>"$work/reference.err" || fail "reference: $(cat "$work/reference.err")"
-duration_ms=$((($(date +%s%N) - start) / 1000000))
+reference_run "$binary" "$work" "${scene[@]}"
 echo "sigterm_in_flight: uninterrupted run ${duration_ms} ms"
 
 out=$work/stopped
@@ -33,16 +32,9 @@ echo "sigterm_in_flight: stopped ${stop_ms} ms after SIGTERM, state $(stat -c %s
 
 "$binary" md run --resume "$out" >/dev/null 2>"$work/resumed.err" || fail "resume: $(tail -3 "$work/resumed.err")"
 [ -e "$out/checkpoint" ] && fail "the finished run left its checkpoint"
-normalise() {
-  grep -v -E '^# (command|run_id): |"(run_id|wall_seconds|collisions_per_second|seconds_per_realization|resumed_realizations|resumed_collisions)":' "$1"
-}
-files=$(cd "$work/reference" && ls)
-[ "$files" = "$(cd "$out" && ls)" ] || fail "different files: $(cd "$out" && ls | tr '\n' ' ')"
-for f in $files; do
-  diff <(normalise "$work/reference/$f") <(normalise "$out/$f") >/dev/null || fail "$f differs from the uninterrupted run's"
-done
+same_files --names "$work/reference" "$out"
 
 "$binary" md run --save-every 0 --out "$work/bad" >/dev/null 2>"$work/bad.err"
 status=$?
 [ "$status" -eq 2 ] && grep -q -- "--save-every" "$work/bad.err" || fail "--save-every 0: exit $status, $(cat "$work/bad.err")"
-echo "sigterm_in_flight: PASS: resumed from the saved state to the uninterrupted run's $(echo $files | wc -w) files"
+echo "sigterm_in_flight: PASS: resumed from the saved state to the uninterrupted run's $file_count files"
