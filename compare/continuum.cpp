@@ -316,11 +316,12 @@ constexpr double ContinuumAmplitudes::*scalar_fields[] = {&ContinuumAmplitudes::
 ContinuumAmplitudes interpolated_amplitudes(const hydro::NavierStokesResult& ns, int d, double x, double ball,
                                             const std::vector<double>& edges, double scale = 1.0,
                                             ContinuumAmplitudes* reading = nullptr) {
-  std::vector<ContinuumAmplitudes> list;
-  for (const auto* p : requested_profiles(ns)) list.push_back(profile_amplitudes(*p, d, ball, edges, scale));
+  // Only the profiles the reading uses are measured (a history reads hundreds of profiles).
+  const std::vector<const hydro::NavierStokesProfile*> profiles = requested_profiles(ns);
+  const auto at = [&](std::size_t k) { return profile_amplitudes(*profiles[k], d, ball, edges, scale); };
   std::size_t i = 1;
-  while (i + 1 < list.size() && list[i].R_over_lambda < x) ++i;
-  const ContinuumAmplitudes &lo = list[i - 1], &hi = list[i];
+  while (i + 1 < profiles.size() && profiles[i]->R < x) ++i;
+  const ContinuumAmplitudes lo = at(i - 1), hi = at(i);
   const double w = std::log(x / lo.R_over_lambda) / std::log(hi.R_over_lambda / lo.R_over_lambda);
   const auto mix = [w](double a, double b) { return (1 - w) * a + w * b; };
   ContinuumAmplitudes a;
@@ -329,15 +330,16 @@ ContinuumAmplitudes interpolated_amplitudes(const hydro::NavierStokesResult& ns,
   a.bin_centres = lo.bin_centres;
   for (std::size_t b = 0; b < lo.binned_density.size(); ++b)
     a.binned_density.push_back(mix(lo.binned_density[b], hi.binned_density[b]));
-  if (reading && list.size() >= 3) {
+  if (reading && profiles.size() >= 3) {
     // the third point: the neighbour on the side of x's nearer end, inside the list
-    const std::size_t k = (i + 1 < list.size() && (w > 0.5 || i < 2)) ? i + 1 : i - 2;
-    const double u0 = std::log(lo.R_over_lambda), u1 = std::log(hi.R_over_lambda), u2 = std::log(list[k].R_over_lambda),
+    const std::size_t k = (i + 1 < profiles.size() && (w > 0.5 || i < 2)) ? i + 1 : i - 2;
+    const ContinuumAmplitudes third = at(k);
+    const double u0 = std::log(lo.R_over_lambda), u1 = std::log(hi.R_over_lambda), u2 = std::log(third.R_over_lambda),
                  u = std::log(x);
     const double l0 = (u - u1) * (u - u2) / ((u0 - u1) * (u0 - u2)), l1 = (u - u0) * (u - u2) / ((u1 - u0) * (u1 - u2)),
                  l2 = (u - u0) * (u - u1) / ((u2 - u0) * (u2 - u1));
     for (auto field : scalar_fields)
-      reading->*field = std::abs(l0 * lo.*field + l1 * hi.*field + l2 * list[k].*field - a.*field);
+      reading->*field = std::abs(l0 * lo.*field + l1 * hi.*field + l2 * third.*field - a.*field);
   }
   return a;
 }

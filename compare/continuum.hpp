@@ -4,6 +4,7 @@
 // solver themselves: the Navier–Stokes blast of the chosen model at the MD's own R/λ (exponents,
 // core amplitudes, profile at the MD's last time), the dilute NS profile, and the exact TvNS
 // profiles for the ideal gas and for the hard-particle EOS at the run's packing fraction.
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -93,6 +94,18 @@ struct ContinuumAmplitudes {
   std::vector<double> bin_centres, binned_density;
 };
 
+/// The continuum's amplitudes at one of the MD's recorded times, in the MD's units as at the last
+/// time (ContinuumAmplitudes), and its core's Knudsen number λ n∞/(n0 H) there.
+struct ContinuumAtTime {
+  double t = 0;
+  ContinuumAmplitudes amplitudes;
+  double knudsen = NAN;
+};
+
+/// The amplitudes' history starts at this R/λ of the MD (below it the NS, started at R/λ = 2, has
+/// not forgotten its start; docs/hydro.md, "Starts").
+inline constexpr double amplitude_history_min_R_over_lambda = 10.0;
+
 /// Everything continuum the comparison of one MD run needs.
 struct ContinuumReference {
   HydroModel model;
@@ -105,6 +118,11 @@ struct ContinuumReference {
   /// interpolation in ln(R/λ) between the profiles); 0 where not computed
   ContinuumAmplitudes errors;
   std::vector<ProfileCurve> profiles;  ///< TvNS ideal, TvNS(φ), NS dilute, NS model (absent ones left out)
+  /// The model's amplitudes at each of the MD's recorded times with R/λ ≥
+  /// amplitude_history_min_R_over_lambda, the last one included, from a solve of its own with
+  /// profiles around each of them (self-similar start only; empty for a hot spot, whose NS profiles
+  /// are timed from the deposition, and with fewer than two such times)
+  std::vector<ContinuumAtTime> history;
 };
 
 /// Solves the continuum for `run`: the model's NS from R/λ = 2 to max(20, 1.5 R/λ_last, until),
