@@ -12,18 +12,37 @@
 
 namespace coldblast::compare {
 
-JackknifedValue jackknife_last(const std::vector<const BlockSeries*>& series,
-                               const std::function<double(const std::vector<double>&)>& f) {
+namespace {
+
+// The index of recorded time t in s (relative tolerance 1e-9).
+std::size_t time_index(const BlockSeries& s, double t) {
+  for (std::size_t k = 0; k < s.t.size(); ++k)
+    if (std::abs(s.t[k] - t) <= 1e-9 * std::abs(t)) return k;
+  throw std::invalid_argument("blocks.csv: " + s.observable + " has no recorded time " + std::to_string(t));
+}
+
+}  // namespace
+
+JackknifedValue jackknife_at(const std::vector<const BlockSeries*>& series, double t,
+                             const std::function<double(const std::vector<double>&)>& f) {
   const std::size_t blocks = series.front()->block_count();
-  for (const auto* s : series)
+  std::vector<std::size_t> index;
+  for (const auto* s : series) {
     if (s->block_count() != blocks) throw std::invalid_argument("blocks.csv: observables have different block counts");
+    index.push_back(time_index(*s, t));
+  }
   if (blocks < 2) throw std::invalid_argument("blocks.csv: fewer than 2 blocks, no jackknife error");
   const common::Jackknife j = common::block_jackknife(static_cast<long>(blocks), [&](long left_out) {
     std::vector<double> args;
-    for (const auto* s : series) args.push_back(s->ensemble_values(left_out).back());
+    for (std::size_t i = 0; i < series.size(); ++i) args.push_back(series[i]->ensemble_values(left_out)[index[i]]);
     return std::vector<double>{f(args)};
   });
   return {j.value[0], j.error(0)};
+}
+
+JackknifedValue jackknife_last(const std::vector<const BlockSeries*>& series,
+                               const std::function<double(const std::vector<double>&)>& f) {
+  return jackknife_at(series, series.front()->t.back(), f);
 }
 
 namespace {
@@ -137,7 +156,7 @@ struct AmplitudeInputs {
 /// mid-height front in the MD's absolute shells, both in units of the MD's R), else the moving mass
 /// against the NS's conservative front, which differ by a fraction of the front's width (docs/compare.md).
 void measure_shock_radius(const AmplitudeInputs& in, AmplitudeVerdict& v) {
-  const JackknifedValue j = jackknife_last({&in.R}, [](const std::vector<double>& a) { return a[0]; });
+  const JackknifedValue j = jackknife_at({&in.R}, in.t, [](const std::vector<double>& a) { return a[0]; });
   const CoreSize front = md_front_radius(in.run, in.t);
   if (std::isfinite(front.H_over_R) && std::isfinite(in.ns.front_over_R)) {
     v.measured = front.H_over_R * j.value;
@@ -168,7 +187,7 @@ bool measure_centre(theory::Amplitude id, const AmplitudeInputs& in, AmplitudeVe
   }
   if (!std::isfinite(c.T_error) || !(c.T > 0)) return false;
   // Ṙ from the ensemble R at t (Eq. (1) form, as for T0); its jackknife error joins T's.
-  const JackknifedValue R = jackknife_last({&in.R}, [](const std::vector<double>& a) { return a[0]; });
+  const JackknifedValue R = jackknife_at({&in.R}, in.t, [](const std::vector<double>& a) { return a[0]; });
   const double Rdot = theory::shock_speed_at(in.run.d, R.value, in.t);
   v.measured = c.T / (Rdot * Rdot);
   v.error = v.measured * std::hypot(c.T_error / c.T, 2.0 * R.error / R.value);
@@ -189,7 +208,7 @@ bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, Amplitud
     case theory::Amplitude::n0_over_n: {
       if (!s.count("n0")) return false;
       const double n = in.n;
-      const JackknifedValue j = jackknife_last({&s.at("n0")}, [n](const std::vector<double>& a) { return a[0] / n; });
+      const JackknifedValue j = jackknife_at({&s.at("n0")}, in.t, [n](const std::vector<double>& a) { return a[0] / n; });
       v.measured = j.value;
       v.error = j.error;
       v.reference = in.ns.n0_over_n;
@@ -198,7 +217,7 @@ bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, Amplitud
     }
     case theory::Amplitude::T0_over_Rdot2: {
       if (!s.count("T0")) return false;
-      const JackknifedValue j = jackknife_last({&s.at("T0"), &in.R}, [&](const std::vector<double>& a) {
+      const JackknifedValue j = jackknife_at({&s.at("T0"), &in.R}, in.t, [&](const std::vector<double>& a) {
         const double Rdot = theory::shock_speed_at(in.run.d, a[1], in.t);
         return a[0] / (Rdot * Rdot);
       });
@@ -229,31 +248,48 @@ bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, Amplitud
 
 }  // namespace
 
-std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const ContinuumReference& continuum,
-                                                 double sigma) {
+namespace {
+
+// Every amplitude the run records at its recorded time t (R/λ = x there), against the continuum's
+// values `ns` ± `ns_error` with its core's Knudsen number Kn, in the catalogue's order.
+std::vector<AmplitudeVerdict> verdicts_at(const RunData& run, double t, double x, const ContinuumAmplitudes& ns,
+                                          const ContinuumAmplitudes& ns_error, double Kn, double sigma) {
   std::vector<AmplitudeVerdict> verdicts;
-  if (!run.series.count("R")) return verdicts;
-  const BlockSeries& R = run.series.at("R");
-  const AmplitudeInputs in{run,
-                           R,
-                           R.t.back(),
-                           run.summary["n"].get<double>(),
-                           run.summary["E"].get<double>(),
-                           continuum.amplitudes,
-                           continuum.errors};
+  const AmplitudeInputs in{run, run.series.at("R"), t, run.summary["n"].get<double>(), run.summary["E"].get<double>(),
+                           ns,  ns_error};
   // The first order NS drops: Burnett, O(Kn²), in the core with Kn of the NS core (the model's own
   // estimate of its validity, free of MD noise); λ/R at the shock, which is a few λ thick.
-  const double Kn = core_knudsen(continuum);
   for (const theory::AmplitudeInfo& info : theory::amplitude_catalogue()) {
     AmplitudeVerdict v;
-    v.t = in.t;
-    v.R_over_lambda = continuum.R_over_lambda_last;
-    v.continuum_bound = info.id == theory::Amplitude::R ? 1.0 / continuum.R_over_lambda_last
-                        : std::isfinite(Kn) && Kn > 0   ? Kn * Kn
-                                                        : 0.0;
+    v.t = t;
+    v.R_over_lambda = x;
+    v.continuum_bound = info.id == theory::Amplitude::R ? 1.0 / x : std::isfinite(Kn) && Kn > 0 ? Kn * Kn : 0.0;
     if (measure_amplitude(info.id, in, v)) verdicts.push_back(judge_amplitude(v, sigma));
   }
   return verdicts;
+}
+
+}  // namespace
+
+std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const ContinuumReference& continuum,
+                                                 double sigma) {
+  if (!run.series.count("R")) return {};
+  return verdicts_at(run, run.series.at("R").t.back(), continuum.R_over_lambda_last, continuum.amplitudes,
+                     continuum.errors, core_knudsen(continuum), sigma);
+}
+
+std::vector<AmplitudeVerdict> amplitude_history(const RunData& run, const ContinuumReference& continuum,
+                                                double sigma) {
+  std::vector<AmplitudeVerdict> history;
+  if (!run.series.count("R")) return history;
+  // The NS values' numerical errors are known at the last time only (continuum.errors); each time
+  // is judged against its NS value alone, so the MD's error is the sigma (the NS's is ~1e-4 or less).
+  const ContinuumAmplitudes no_error;
+  for (const ContinuumAtTime& c : continuum.history) {
+    const auto at = verdicts_at(run, c.t, md_R_over_lambda(run, c.t), c.amplitudes, no_error, c.knudsen, sigma);
+    history.insert(history.end(), at.begin(), at.end());
+  }
+  return history;
 }
 
 }  // namespace coldblast::compare

@@ -50,6 +50,12 @@ AmplitudeVerdict judge_amplitude(AmplitudeVerdict v, double sigma);
 /// the run's last recorded time; k = sigma.
 std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const ContinuumReference& continuum, double sigma);
 
+/// The amplitude verdicts at every time of continuum.history (ContinuumReference::history: the MD's
+/// recorded times from R/λ = 10 on), time by time, each in the catalogue's order, judged against the NS
+/// value at that time with the MD's error alone (the NS's numerical error is known at the last time
+/// only: continuum.errors, about 1e-4 relative) and that time's Kn² bound; empty without a history.
+std::vector<AmplitudeVerdict> amplitude_history(const RunData& run, const ContinuumReference& continuum, double sigma);
+
 /// Kn = λ n∞/(n0 H) of the continuum's core at the MD's last time (n0 in the MD's ball, H by the
 /// binned density rule in the MD's shells): the model's own estimate of its validity, free of MD
 /// noise. NaN when the continuum's amplitudes give none.
@@ -68,5 +74,8 @@ struct JackknifedValue {
 };
 JackknifedValue jackknife_last(const std::vector<const BlockSeries*>& series,
                                const std::function<double(const std::vector<double>&)>& f);
+/// The same at the recorded time t (relative tolerance 1e-9; std::invalid_argument if a series lacks it).
+JackknifedValue jackknife_at(const std::vector<const BlockSeries*>& series, double t,
+                             const std::function<double(const std::vector<double>&)>& f);
 
 }  // namespace coldblast::compare

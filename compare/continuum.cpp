@@ -456,10 +456,41 @@ void add_profile_curves(ContinuumReference& reference, const RunData& run, doubl
                             model_label + at));
 }
 
+/// The model's amplitudes at each of the MD's recorded times with R/λ ≥ the history's start
+/// (ContinuumReference::history): one solve of its own with profiles at R/λ × e^(±0.03 k), k ≤ 2,
+/// around each, each time read as the last one is (the MD's time, R_MD/R_NS(t), the MD's units).
+std::vector<ContinuumAtTime> continuum_history(const RunData& run, const HydroModel& model, int cells, double ball,
+                                               const std::vector<double>& edges, const ContinuumProgress& progress) {
+  std::vector<ContinuumAtTime> history;
+  if (model.start == hydro::Start::hotspot || !run.series.count("R")) return history;
+  std::vector<double> times, x, targets;
+  for (const double t : run.series.at("R").t) {
+    const double x_t = md_R_over_lambda(run, t);
+    if (!(x_t >= amplitude_history_min_R_over_lambda)) continue;
+    times.push_back(t);
+    x.push_back(x_t);
+    for (int k = -2; k <= 2; ++k) targets.push_back(x_t * std::exp(profile_step * k));
+  }
+  if (times.size() < 2) return history;
+  std::sort(targets.begin(), targets.end());
+  const hydro::NavierStokesResult ns =
+      solve_hydro_model(run.d, model, std::max(20.0, 1.2 * x.back()), cells, targets, progress);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double scale = md_over_ns_radius(run, interpolated_amplitudes(ns, run.d, x[i], ball, edges).A, times[i]);
+    ContinuumAtTime c;
+    c.t = times[i];
+    c.amplitudes = interpolated_amplitudes(ns, run.d, x[i] / scale, ball, edges, scale);
+    c.knudsen = 1.0 / (c.amplitudes.n0_over_n * c.amplitudes.H_over_R * x[i]);  // as core_knudsen
+    history.push_back(c);
+  }
+  return history;
+}
+
 }  // namespace
 
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
-                                                          double until, const ContinuumProgress& progress) {
+                                                          double until, const ContinuumProgress& progress,
+                                                          bool history) {
   auto reference = std::make_shared<ContinuumReference>();
   reference->model = model;
   const double t_last = run.series.begin()->second.t.back();
@@ -503,6 +534,7 @@ std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, co
     reference->errors.*field = std::hypot(grid.*field - reference->amplitudes.*field, reading.*field);
 
   add_profile_curves(*reference, run, x, {targets, times, std::max(20.0, reach), cells}, progress);
+  if (history) reference->history = continuum_history(run, model, cells, ball, edges, progress);
   return reference;
 }
 

@@ -133,8 +133,10 @@ struct ContinuumReference {
 /// at each of its diagnostics' samples (20 per decade).
 using ContinuumProgress = std::function<void(const std::string& solve, double R_over_lambda)>;
 
+/// With `history`, also ContinuumReference::history (one more solve, to 1.2 R/λ_last).
 std::shared_ptr<const ContinuumReference> solve_continuum(const RunData& run, const HydroModel& model, int cells,
-                                                          double until = 0.0, const ContinuumProgress& progress = {});
+                                                          double until = 0.0, const ContinuumProgress& progress = {},
+                                                          bool history = false);
 
 /// The NS blast of `model` in scaled units (E = n∞ = λ = 1, so t in units √(n∞ λ^(d+2)/E)) from its
 /// start to `until`, with extra profiles at `profile_R_over_lambda` and at `profile_times`; progress

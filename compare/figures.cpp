@@ -297,4 +297,76 @@ ExtraFigures write_extra_figures(const RunData& run, const std::optional<Distrib
   return figures;
 }
 
+namespace {
+
+// One amplitude's panel of the history figure: its rows in `history` (by name), in time order.
+std::vector<const AmplitudeVerdict*> rows_of(const std::vector<AmplitudeVerdict>& history, const std::string& name) {
+  std::vector<const AmplitudeVerdict*> rows;
+  for (const auto& v : history)
+    if (v.name == name) rows.push_back(&v);
+  return rows;
+}
+
+// Tics at 1, 2, 3, 5 × 10^k within [lo, hi]: a log axis over less than a decade gets labels.
+std::string log_tics(double lo, double hi) {
+  std::string tics;
+  for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10)
+    for (const double m : {1.0, 2.0, 3.0, 5.0})
+      if (m * decade >= lo && m * decade <= hi)
+        tics += (tics.empty() ? "" : ", ") + common::format_number(m * decade);
+  return "set xtics (" + tics + ")\n";
+}
+
+}  // namespace
+
+std::string amplitude_history_figure(const std::vector<AmplitudeVerdict>& history, const std::string& caption,
+                                     const std::string& model, const fs::path& folder) {
+  std::vector<std::string> names;  // in the catalogue's order, as the rows come
+  for (const auto& v : history)
+    if (std::find(names.begin(), names.end(), v.name) == names.end()) names.push_back(v.name);
+  if (names.empty() || rows_of(history, names.front()).size() < 2) return "";
+  const int columns = std::min<int>(3, static_cast<int>(names.size()));
+  const int rows = (static_cast<int>(names.size()) + columns - 1) / columns;
+  std::ostringstream data, script;
+  data.precision(10);
+  script << figure_terminal("amplitudes", {600 * columns, 520 * rows + 90, 12}) << "set multiplot title "
+         << gnuplot_quoted(caption) << " . \"\\n\" . " << gnuplot_quoted("MD against " + model + " at the same R/λ")
+         << " . \"\\n\" . 'points: MD/NS - 1 with 1{/Symbol s} (jackknife); band: the continuum bound, Kn^2 of "
+            "the NS core (R: {/Symbol l}/R)'\n";
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto panel = rows_of(history, names[i]);
+    data << "# " << names[i] << ": R/lambda, 100 (MD/NS - 1), its 1 sigma, 100 bound, t\n";
+    double lo = 0, hi = 0;  // the y range: the points and their errors, and zero (the band may be wider)
+    for (const auto* v : panel) {
+      const double rel = 100 * v->relative_difference, err = 100 * v->error / std::abs(v->reference);
+      data << v->R_over_lambda << ' ' << rel << ' ' << err << ' ' << 100 * v->continuum_bound << ' ' << v->t << '\n';
+      lo = std::min(lo, rel - err);
+      hi = std::max(hi, rel + err);
+    }
+    data << "\n\n";
+    const double pad = 0.12 * (hi - lo > 0 ? hi - lo : 1.0);
+    const AmplitudeVerdict& last = *panel.back();
+    const int column = static_cast<int>(i) % columns, row = static_cast<int>(i) / columns;
+    const double height = (1.0 - 0.1) / rows;
+    script << "reset\nset origin " << static_cast<double>(column) / columns << ',' << 0.9 - (row + 1) * height
+           << "\nset size " << 1.0 / columns << ',' << height << "\nset logscale x\nset grid lt 1 lw 0.6 lc rgb "
+           << "'#d0d0d0' dt 3\nset xlabel 'R/{/Symbol l}'\nset ylabel 'MD/NS - 1  [%]'\nunset key\n"
+           << "set xrange [" << common::format_number(panel.front()->R_over_lambda / 1.1) << ':'
+           << common::format_number(last.R_over_lambda * 1.1) << "]\n"
+           << log_tics(panel.front()->R_over_lambda / 1.1, last.R_over_lambda * 1.1) << "set yrange [" << common::format_number(lo - pad) << ':'
+           << common::format_number(hi + pad) << "]\nset title '" << last.name << ": "
+           << common::format_measurement(100 * last.relative_difference, 100 * last.error / std::abs(last.reference), 2)
+           << " % at R/{/Symbol l} = " << common::format_significant(last.R_over_lambda, 3) << " ("
+           << to_string(last.outcome) << ")'\n"
+           << "plot 'amplitudes.dat' index " << i << " u 1:(-$4):4 w filledcurves lc rgb '#dbe7f3' fs solid 1.0, "
+           << "0 w l lw 1 lc rgb 'black', 'amplitudes.dat' index " << i
+           << " u 1:2:3 w yerrorbars pt 7 ps 1.0 lc rgb '#d62728'\n";
+  }
+  script << "unset multiplot\n";
+  common::write_file_atomic(folder / "amplitudes.dat", data.str());
+  common::write_file_atomic(folder / "amplitudes.gp", script.str());
+  run_gnuplot(folder, "amplitudes.gp");
+  return "amplitudes.png";
+}
+
 }  // namespace coldblast::compare

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "compare/amplitudes.hpp"
 #include "compare/continuum.hpp"
 #include "compare/run_data.hpp"
 
@@ -38,6 +39,7 @@ std::optional<DistributionFit> fit_impurity_distribution(const RunData& run, dou
 /// The figure files written into `folder` (empty names for figures whose data is absent).
 struct ExtraFigures {
   std::string distribution, profiles, blast;  ///< blast: the paper's Fig. 1 (compare/figure_blast.hpp)
+  std::string amplitudes;                     ///< amplitude_history_figure's (written by the report)
 };
 
 /// Draws every figure whose data the run holds; returns the file names written. The profile figure
@@ -46,5 +48,13 @@ struct ExtraFigures {
 ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
                                  const std::vector<ProfileCurve>& continuum, const std::filesystem::path& folder,
                                  double t_profile = 0.0);
+
+/// The MD's amplitudes against the continuum's at every recorded time from R/λ = 10 on
+/// (CompareResult::amplitude_history): one panel per amplitude, MD/NS − 1 in per cent with its
+/// 1σ error against R/λ, the continuum bound (Kn², λ/R for R) as a band and the last time's
+/// verdict in the title; `model` names the NS model. Writes amplitudes.dat, .gp, .png and .pdf into
+/// `folder` and returns "amplitudes.png", or "" (nothing written) when fewer than two times.
+std::string amplitude_history_figure(const std::vector<AmplitudeVerdict>& history, const std::string& caption,
+                                     const std::string& model, const std::filesystem::path& folder);
 
 }  // namespace coldblast::compare

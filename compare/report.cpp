@@ -158,6 +158,23 @@ std::string running_exponents_csv(const CompareResult& result) {
   return out.str();
 }
 
+std::string amplitude_history_csv(const CompareResult& result) {
+  std::ostringstream out;
+  out << common::provenance_header({{"run_dir", result.run.directory.string()}, {"against", to_string(result.against)}},
+                                   "t in the MD's time unit; md, ns in the amplitude's own units (docs/compare.md, "
+                                   "\"Amplitudes\"); ns's numerical error is not in the row (about 1e-4 relative: "
+                                   "verdict.json at the last time); continuum_bound relative")
+      << "t,R_over_lambda,amplitude,md,md_stderr,ns,md_over_ns_minus_1,md_over_ns_minus_1_stderr,deviation_sigma,"
+         "continuum_bound,verdict\n";
+  for (const auto& a : result.amplitude_history)
+    out << format_number(a.t) << ',' << format_number(a.R_over_lambda) << ',' << a.name << ','
+        << format_number(a.measured) << ',' << format_number(a.error) << ',' << format_number(a.reference) << ','
+        << format_number(a.relative_difference) << ',' << format_number(a.error / std::abs(a.reference)) << ','
+        << format_number(a.deviation_sigma) << ',' << format_number(a.continuum_bound) << ',' << to_string(a.outcome)
+        << '\n';
+  return out.str();
+}
+
 namespace {
 
 /// A verdict word in a Markdown table: what does not pass is bold.
@@ -448,10 +465,19 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
           "the hard-particle EOS at the run's φ, and the Navier–Stokes blast(s) at the MD's own R/λ.\n\n"
           "![profiles](figures/"
        << extra.profiles << ")\n";
+  if (!extra.amplitudes.empty())
+    md << "\n## Amplitudes against R/λ\n\nThe amplitudes above at every recorded time from R/λ = "
+       << format_number(amplitude_history_min_R_over_lambda)
+       << " on, each against the same NS model at that time and read as at the last time (amplitudes.csv): how "
+          "the MD's miss changes as the blast grows, beside the continuum's bound.\n\n![amplitudes](figures/"
+       << extra.amplitudes << ")\n";
   if (result.tracer_md) md << tracer_md_markdown(*result.tracer_md, figures);
   md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
         "with errors at every recorded pair of times)"
-     << (result.tracer_md ? ", `tracer_vs_md.csv` (the tracer against the MD at every common time)" : "") << ".\n";
+     << (result.tracer_md ? ", `tracer_vs_md.csv` (the tracer against the MD at every common time)" : "")
+     << (result.amplitude_history.empty() ? "" : ", `amplitudes.csv` (the amplitudes at every recorded time from "
+                                                 "R/λ = 10 on)")
+     << ".\n";
   return md.str();
 }
 
@@ -461,7 +487,8 @@ fs::path report_folder(const fs::path& out) {
   common::require_output_folder(out, "--out");
   if (!fs::exists(out)) return out;
   static const std::set<std::string> entries{"report.md",        "verdict.json",          "exponents.csv",
-                                             "tracer_vs_md.csv", "distribution_fit.json", "figures"};
+                                             "tracer_vs_md.csv", "distribution_fit.json", "figures",
+                                             "amplitudes.csv"};
   const fs::path folder = fs::canonical(out);
   for (const auto& entry : fs::directory_iterator(folder))
     if (entries.count(entry.path().filename().string()) == 0)
@@ -488,7 +515,12 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
           result.continuum ? result.continuum->profiles : std::vector<ProfileCurve>{};
       extra = write_extra_figures(result.run, fit, curves, staging / "figures", result.until);
       if (result.tracer_md) write_tracer_md_figures(*result.tracer_md, scene_caption(result.run), staging / "figures");
+      if (result.continuum)
+        extra.amplitudes = amplitude_history_figure(result.amplitude_history, scene_caption(result.run),
+                                                    result.continuum->model.describe(), staging / "figures");
     }
+    if (!result.amplitude_history.empty())
+      common::write_file_atomic(staging / "amplitudes.csv", amplitude_history_csv(result));
     if (result.tracer_md) common::write_file_atomic(staging / "tracer_vs_md.csv", tracer_md_csv(*result.tracer_md));
     if (fit)
       common::write_file_atomic(staging / "distribution_fit.json",

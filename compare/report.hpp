@@ -16,6 +16,9 @@ common::Json verdict_json(const CompareResult& result);
 
 /// exponents.csv: t, t_next, observable, alpha, error, alpha_theory for every running exponent.
 std::string running_exponents_csv(const CompareResult& result);
+/// amplitudes.csv: CompareResult::amplitude_history, one row per time and amplitude (t, R/λ, the
+/// amplitude's name, MD ± error, NS, MD/NS − 1 ± error, deviation in σ, continuum bound, verdict word).
+std::string amplitude_history_csv(const CompareResult& result);
 
 struct ReportConfig {
   std::filesystem::path out;  ///< report directory (replaced whole; see report_folder)

@@ -234,7 +234,7 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
       solve_continuum(run, model, hydro::default_core_cells, until, [&](const std::string& solve, double) {
         if (solve != solving) say(progress, "  Navier–Stokes " + solve);
         solving = solve;
-      });
+      }, /*history=*/true);
   r.hydro = hydro_json(continuum->ns);
   r.hydro["model"] = model.describe();
   common::write_file_atomic(config.out / "hydro" / "core.json", r.hydro.dump(2) + "\n");

@@ -111,7 +111,7 @@ CompareResult run_compare(const CompareConfig& config, const CompareProgress& pr
   const HydroModel model =
       with_run_start(resolve_hydro_model(config.hydro_model, run.d, run_packing_fraction(run)), run);
   if (config.against == Reference::hydro)
-    return run_compare(config, solve_continuum(run, model, config.hydro_cells, 0.0, progress.continuum));
+    return run_compare(config, solve_continuum(run, model, config.hydro_cells, 0.0, progress.continuum, true));
   std::shared_ptr<const ContinuumReference> continuum;
   try {
     continuum = solve_continuum(run, model, config.hydro_cells, 0.0, progress.continuum);
@@ -428,6 +428,7 @@ CompareResult run_compare(const CompareConfig& config, std::shared_ptr<const Con
   }
   if (config.against == Reference::hydro) {
     result.amplitudes = amplitude_verdicts(result.run, *result.continuum, config.sigma);
+    result.amplitude_history = amplitude_history(result.run, *result.continuum, config.sigma);
     bool any_fail = false;
     for (const auto& v : result.observables) any_fail = any_fail || v.outcome == Outcome::fail;
     for (const auto& a : result.amplitudes) {

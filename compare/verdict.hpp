@@ -102,6 +102,9 @@ struct CompareResult {
   std::vector<ObservableVerdict> observables;
   /// Reference::hydro: the MD's core amplitudes against the NS model at the same R/λ.
   std::vector<AmplitudeVerdict> amplitudes;
+  /// Reference::hydro: the same at every recorded time from R/λ = 10 on (amplitude_history), when the
+  /// continuum was solved with its history; for the report's amplitudes.csv and figure, not the verdict.
+  std::vector<AmplitudeVerdict> amplitude_history;
   /// Observables recorded but deliberately not judged, with the reason (u_imp against theory/hydro).
   std::vector<std::string> notes;
   /// What makes the verdicts less than they look: fewer than 8 jackknife blocks, R/λ below 10 at
