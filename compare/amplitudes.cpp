@@ -208,7 +208,8 @@ bool measure_amplitude(theory::Amplitude id, const AmplitudeInputs& in, Amplitud
     case theory::Amplitude::n0_over_n: {
       if (!s.count("n0")) return false;
       const double n = in.n;
-      const JackknifedValue j = jackknife_at({&s.at("n0")}, in.t, [n](const std::vector<double>& a) { return a[0] / n; });
+      const JackknifedValue j =
+          jackknife_at({&s.at("n0")}, in.t, [n](const std::vector<double>& a) { return a[0] / n; });
       v.measured = j.value;
       v.error = j.error;
       v.reference = in.ns.n0_over_n;
@@ -255,8 +256,8 @@ namespace {
 std::vector<AmplitudeVerdict> verdicts_at(const RunData& run, double t, double x, const ContinuumAmplitudes& ns,
                                           const ContinuumAmplitudes& ns_error, double Kn, double sigma) {
   std::vector<AmplitudeVerdict> verdicts;
-  const AmplitudeInputs in{run, run.series.at("R"), t, run.summary["n"].get<double>(), run.summary["E"].get<double>(),
-                           ns,  ns_error};
+  const AmplitudeInputs in{
+      run, run.series.at("R"), t, run.summary["n"].get<double>(), run.summary["E"].get<double>(), ns, ns_error};
   // The first order NS drops: Burnett, O(Kn²), in the core with Kn of the NS core (the model's own
   // estimate of its validity, free of MD noise); λ/R at the shock, which is a few λ thick.
   for (const theory::AmplitudeInfo& info : theory::amplitude_catalogue()) {
@@ -278,8 +279,7 @@ std::vector<AmplitudeVerdict> amplitude_verdicts(const RunData& run, const Conti
                      continuum.errors, core_knudsen(continuum), sigma);
 }
 
-std::vector<AmplitudeVerdict> amplitude_history(const RunData& run, const ContinuumReference& continuum,
-                                                double sigma) {
+std::vector<AmplitudeVerdict> amplitude_history(const RunData& run, const ContinuumReference& continuum, double sigma) {
   std::vector<AmplitudeVerdict> history;
   if (!run.series.count("R")) return history;
   // The NS values' numerical errors are known at the last time only (continuum.errors); each time

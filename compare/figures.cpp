@@ -312,8 +312,7 @@ std::string log_tics(double lo, double hi) {
   std::string tics;
   for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10)
     for (const double m : {1.0, 2.0, 3.0, 5.0})
-      if (m * decade >= lo && m * decade <= hi)
-        tics += (tics.empty() ? "" : ", ") + common::format_number(m * decade);
+      if (m * decade >= lo && m * decade <= hi) tics += (tics.empty() ? "" : ", ") + common::format_number(m * decade);
   return "set xtics (" + tics + ")\n";
 }
 
@@ -353,8 +352,9 @@ std::string amplitude_history_figure(const std::vector<AmplitudeVerdict>& histor
            << "'#d0d0d0' dt 3\nset xlabel 'R/{/Symbol l}'\nset ylabel 'MD/NS - 1  [%]'\nunset key\n"
            << "set xrange [" << common::format_number(panel.front()->R_over_lambda / 1.1) << ':'
            << common::format_number(last.R_over_lambda * 1.1) << "]\n"
-           << log_tics(panel.front()->R_over_lambda / 1.1, last.R_over_lambda * 1.1) << "set yrange [" << common::format_number(lo - pad) << ':'
-           << common::format_number(hi + pad) << "]\nset title '" << last.name << ": "
+           << log_tics(panel.front()->R_over_lambda / 1.1, last.R_over_lambda * 1.1) << "set yrange ["
+           << common::format_number(lo - pad) << ':' << common::format_number(hi + pad) << "]\nset title '" << last.name
+           << ": "
            << common::format_measurement(100 * last.relative_difference, 100 * last.error / std::abs(last.reference), 2)
            << " % at R/{/Symbol l} = " << common::format_significant(last.R_over_lambda, 3) << " ("
            << to_string(last.outcome) << ")'\n"

@@ -475,8 +475,9 @@ std::string markdown(const CompareResult& result, bool figures, const std::optio
   md << "\nFiles: `verdict.json` (the table above, machine-readable), `exponents.csv` (running exponents "
         "with errors at every recorded pair of times)"
      << (result.tracer_md ? ", `tracer_vs_md.csv` (the tracer against the MD at every common time)" : "")
-     << (result.amplitude_history.empty() ? "" : ", `amplitudes.csv` (the amplitudes at every recorded time from "
-                                                 "R/λ = 10 on)")
+     << (result.amplitude_history.empty() ? ""
+                                          : ", `amplitudes.csv` (the amplitudes at every recorded time from "
+                                            "R/λ = 10 on)")
      << ".\n";
   return md.str();
 }

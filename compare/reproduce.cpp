@@ -230,11 +230,13 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
   say(progress, "step 3/6: Navier–Stokes blast, " + model.describe() +
                     ", at the MD's R/lambda and up to R/lambda = " + common::format_number(until));
   std::string solving;
-  const auto continuum =
-      solve_continuum(run, model, hydro::default_core_cells, until, [&](const std::string& solve, double) {
+  const auto continuum = solve_continuum(
+      run, model, hydro::default_core_cells, until,
+      [&](const std::string& solve, double) {
         if (solve != solving) say(progress, "  Navier–Stokes " + solve);
         solving = solve;
-      }, /*history=*/true);
+      },
+      /*history=*/true);
   r.hydro = hydro_json(continuum->ns);
   r.hydro["model"] = model.describe();
   common::write_file_atomic(config.out / "hydro" / "core.json", r.hydro.dump(2) + "\n");
