@@ -293,3 +293,30 @@ def test_start_memory_figure_draws_the_tables_numbers(tmp_path):
                           str(tmp_path / "m.png")], capture_output=True, text=True, check=True).stdout
     assert "2 starts against the kick, R/λ from 10 to 34.7" in out
     assert (tmp_path / "m.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_amplitude_history_figure_draws_the_files_numbers(tmp_path):
+    """scripts/amplitude_history_figure.py reads compare's amplitudes.csv as written (MD/NS - 1 and its
+    error in per cent, the bound, only from --from on), refuses a label count that does not match,
+    and draws the PNG and the PDF."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import amplitude_history_figure as ahf
+    path = os.path.join(REPO, "data", "amplitude-history", "campaign2-2d-long.csv")
+    with open(path) as f:
+        rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#")) if r["amplitude"] == "H/R"]
+    table = ahf.read_history(path, 0.0)
+    assert len(table["H/R"]) == len(rows)
+    first = min(rows, key=lambda r: float(r["R_over_lambda"]))
+    assert table["H/R"][0] == (float(first["R_over_lambda"]), 100 * float(first["md_over_ns_minus_1"]),
+                               100 * float(first["md_over_ns_minus_1_stderr"]), 100 * float(first["continuum_bound"]))
+    late = ahf.read_history(path, 25.0)
+    assert min(x for x, *_ in late["H/R"]) >= 25.0 and len(late["H/R"]) < len(rows)
+    script = os.path.join(REPO, "scripts", "amplitude_history_figure.py")
+    bad = subprocess.run([sys.executable, script, path, path, "--labels", "one", "--out", str(tmp_path / "x.png")],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "--labels: give one label per CSV" in bad.stderr
+    assert not (tmp_path / "x.png").exists()
+    subprocess.run([sys.executable, script, path, "--labels", "campaign 2", "--out", str(tmp_path / "h.png"),
+                    "--from", "25"], capture_output=True, text=True, check=True)
+    assert (tmp_path / "h.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert (tmp_path / "h.pdf").read_bytes()[:5] == b"%PDF-"
