@@ -1,6 +1,10 @@
 #!/bin/bash
 # The issue-6 campaigns exactly as recorded in docs/verification.md ("Campaign 1" … "Campaign 4"),
 # one per argument: bash scripts/campaigns.sh 2 3 4   (outputs in ./campaigns/, reports beside them).
+# Issue 32's deep campaigns: 5 (2D, R/λ = 307, 128 realizations in 8 shards, about 80 core-hours) and
+# 6 (3D, R/λ = 37, 32 realizations, about 12 hours of both cores); each resumes its runs from their
+# checkpoints when started again. `finish5 DIR...` and `finish6 DIR` do only the analysis, of shards
+# or a run made elsewhere (e.g. the background runs of /work/campaigns), into campaigns/c5 or c6.
 # Wall times on the 2-core development machine: 1: ~1.5 h, 2: 42 min, 3: 61 min, 4: 5 + 12 + 15 min.
 # data/campaign* were made by commit 8ad2c6a's engine; since 8fda9ee trajectories differ by round-off
 # (bookkeeping events no longer re-round positions), so a rerun agrees statistically, not bit for bit.
@@ -11,6 +15,36 @@ cb=./build/bin/coldblast
 [ -x "$cb" ] || { echo "campaigns.sh: $cb missing: run scripts/bootstrap.sh first" >&2; exit 2; }
 mkdir -p campaigns
 obs='observables=["R_imp","V_imp","C_imp","u_imp","u_flow","n0","T0","R","profiles","p_imp"]'
+# A long run: started with --out, or resumed from its checkpoint when one is there.
+run_or_resume() {
+  local out=$1; shift
+  if [ -d "$out/checkpoint" ]; then $cb md run --resume "$out" --threads 2; else $cb "$@" --out "$out"; fi
+}
+# The merged run, the comparisons and the kinetic tracer (NS background and the MD's own fields)
+# against it: $1 = output folder, $2 = scene, $3 = tracer seed, $4 = t_min, $5 = t_max, the rest: run folders.
+analyse_deep() {
+  local out=$1 scene=$2 seed=$3 tmin=$4 tmax=$5; shift 5
+  mkdir -p "$out"
+  $cb md merge "$@" --out "$out/md" 2> "$out/merge.stderr.txt"
+  for ref in hydro theory paper; do
+    [ $ref = paper ] && [[ $scene == *3d* ]] && continue  # the paper's Table 1 is 2D
+    $cb compare "$out/md" --against $ref --out "$out/vs-$ref" > "$out/vs-$ref.txt" || true
+  done
+  local tobs='observables=["R_imp","V_imp","C_imp","p_imp"]'
+  $cb tracer "$scene" --transport enskog --trajectories 131072 --threads 2 --seed "$seed" --set t_min="$tmin" \
+    --set t_max="$tmax" --set "$tobs" --out "$out/tracer"
+  $cb tracer --background md --md-run "$out/md" --transport enskog --trajectories 131072 --threads 2 --seed "$seed" \
+    --set "$tobs" --out "$out/tracer-mdfields"
+  $cb compare "$out/tracer" --md-run "$out/md" --out "$out/tracer-vs-md" > "$out/tracer-vs-md.txt" || true
+  $cb compare "$out/tracer-mdfields" --md-run "$out/md" --out "$out/tracer-mdfields-vs-md" \
+    > "$out/tracer-mdfields-vs-md.txt" || true
+}
+finish5() { analyse_deep campaigns/c5 scenes/paper-2d.toml 5 0.6103515625 320000 "$@"; }
+finish6() { analyse_deep campaigns/c6 scenes/paper-3d.toml 6 0.7505950927734375 58498.28719409885 "$1"; }
+case "${1:-}" in
+  finish5) shift; [ $# -ge 1 ] || { echo "campaigns.sh: finish5 needs the shards' folders" >&2; exit 2; }; finish5 "$@"; exit ;;
+  finish6) [ $# -eq 2 ] || { echo "campaigns.sh: finish6 needs the run's folder" >&2; exit 2; }; finish6 "$2"; exit ;;
+esac
 for c in "$@"; do
   case "$c" in
     1) # = reproduce --scale paper, in two steps so that a killed run can --resume (same seed 1,
@@ -38,6 +72,14 @@ for c in "$@"; do
        for r in c4-heavy c4-large c4-heavy-long; do
          $cb compare campaigns/$r --against theory --allowance 0 --out campaigns/$r-theory || true
        done ;;
-    *) echo "campaigns.sh: campaign '$c' is not one of 1, 2, 3, 4" >&2; exit 2 ;;
+    5) for s in 0 1 2 3 4 5 6 7; do
+         run_or_resume campaigns/c5-2d-deep-shard$s md run scenes/paper-2d.toml --realizations 128 --set block_size=1 \
+           --threads 2 --seed 51 --set t_min=0.6103515625 --set t_max=320000 --set "$obs" --shard $s/8
+       done
+       finish5 campaigns/c5-2d-deep-shard{0,1,2,3,4,5,6,7} ;;
+    6) run_or_resume campaigns/c6-3d-deep md run scenes/paper-3d.toml --realizations 32 --set block_size=1 --threads 2 \
+         --seed 61 --set t_min=0.7505950927734375 --set t_max=58498.28719409885 --set "$obs"
+       finish6 campaigns/c6-3d-deep ;;
+    *) echo "campaigns.sh: campaign '$c' is not one of 1, 2, 3, 4, 5, 6 (or, first and alone: finish5 DIR..., finish6 DIR)" >&2; exit 2 ;;
   esac
 done
