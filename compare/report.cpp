@@ -122,6 +122,8 @@ common::Json verdict_json(const CompareResult& result) {
   for (const auto& v : result.observables) observables.push_back(observable_json(v));
   common::Json amplitudes = common::Json::array();
   for (const auto& a : result.amplitudes) amplitudes.push_back(amplitude_json(a));
+  common::Json history = common::Json::array();
+  for (const auto& a : result.amplitude_history) history.push_back(amplitude_json(a));
   const common::Json hydro_model = hydro_model_json(result);
   const common::Json tracer_md = tracer_md_json(result);
   return {{"d", result.d},
@@ -129,6 +131,7 @@ common::Json verdict_json(const CompareResult& result) {
           {"hydro_model", hydro_model},
           {"tracer_vs_md", tracer_md},
           {"amplitudes", amplitudes},
+          {"amplitude_history", history},
           {"notes", result.notes},
           {"sigma", result.sigma},
           {"allowance", result.allowance ? common::Json(*result.allowance) : common::Json(nullptr)},

@@ -472,6 +472,11 @@ TEST_CASE("the amplitudes' history: each time read as the last time of the run c
   config.against = Reference::hydro;
   const CompareResult result = run_compare(config, continuum);
   REQUIRE(result.amplitude_history.size() == history.size());
+  const auto json = verdict_json(result);
+  REQUIRE(json["amplitude_history"].size() == history.size());
+  CHECK(json["amplitude_history"].back()["name"] == history.back().name);
+  CHECK(json["amplitude_history"].back()["measured"].get<double>() == history.back().measured);
+  CHECK(json["amplitudes"].size() == per_time);
   const fs::path out = coldblast::test::unique_temp_path("coldblast_amplitude_history");
   write_report(result, {out, true});
   std::ifstream csv(out / "amplitudes.csv");
