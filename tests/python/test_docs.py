@@ -31,3 +31,7 @@ def test_python_md_runs(tmp_path, monkeypatch):
     assert {"R_imp", "V_imp", "C_imp"} <= tracer_names
     assert namespace["tracer"].summary["trajectories"] == 4000
     assert sorted(names) == sorted(["R_imp", "V_imp", "C_imp", "u_imp", "n0", "T0"])
+    # The hydro verdict's amplitude history: every recorded time from R/λ = 10 to the last one.
+    history = namespace["history"]
+    assert history.R_over_lambda.min() >= 10 and history.t.max() == namespace["hydro"]["until"]
+    assert set(history.name) == {"n0/n", "T0/Rdot^2", "R"}  # the tour records no profiles: no H, no centre
