@@ -457,24 +457,39 @@ void add_profile_curves(ContinuumReference& reference, const RunData& run, doubl
 }
 
 /// The model's amplitudes at each of the MD's recorded times with R/λ ≥ the history's start
-/// (ContinuumReference::history): one solve of its own with profiles at R/λ × e^(±0.03 k), k ≤ 2,
-/// around each, each time read as the last one is (the MD's time, R_MD/R_NS(t), the MD's units).
+/// (ContinuumReference::history): one solve of its own with profiles around each time (R/λ ×
+/// e^(±0.03 k), k ≤ 2; a hot spot's at the MD's own times, scaled as solve_continuum does), each time
+/// read as the last one is (the MD's time, R_MD/R_NS(t), the MD's units).
 std::vector<ContinuumAtTime> continuum_history(const RunData& run, const HydroModel& model, int cells, double ball,
                                                const std::vector<double>& edges, const ContinuumProgress& progress) {
   std::vector<ContinuumAtTime> history;
-  if (model.start == hydro::Start::hotspot || !run.series.count("R")) return history;
-  std::vector<double> times, x, targets;
+  if (!run.series.count("R")) return history;
+  const bool hotspot = model.start == hydro::Start::hotspot;
+  const auto number = [&](const char* key) { return run.summary.at(key).get<double>(); };
+  // a hot spot's NS time unit √(n∞ λ^(d+2)/E), as in solve_continuum
+  const double time_scale =
+      hotspot ? std::sqrt(number("E") / (number("n") * std::pow(number("lambda"), run.d + 2))) : 0.0;
+  std::vector<double> times, x, targets, profile_times;
   for (const double t : run.series.at("R").t) {
     const double x_t = md_R_over_lambda(run, t);
     if (!(x_t >= amplitude_history_min_R_over_lambda)) continue;
     times.push_back(t);
     x.push_back(x_t);
-    for (int k = -2; k <= 2; ++k) targets.push_back(x_t * std::exp(profile_step * k));
+    for (int k = -2; k <= 2; ++k) {
+      const double R = std::exp(profile_step * k);
+      if (hotspot)
+        profile_times.push_back(t * time_scale * std::pow(R, 0.5 * (run.d + 2)));
+      else
+        targets.push_back(x_t * R);
+    }
   }
   if (times.size() < 2) return history;
   std::sort(targets.begin(), targets.end());
+  std::sort(profile_times.begin(), profile_times.end());
+  const double reach =
+      1.2 * x.back() + (hotspot ? hydro_model_config(run.d, model, 1e12, cells).resolved_start_R_over_lambda() : 0.0);
   const hydro::NavierStokesResult ns =
-      solve_hydro_model(run.d, model, std::max(20.0, 1.2 * x.back()), cells, targets, progress);
+      solve_hydro_model(run.d, model, std::max(20.0, reach), cells, targets, progress, profile_times);
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double scale = md_over_ns_radius(run, interpolated_amplitudes(ns, run.d, x[i], ball, edges).A, times[i]);
     ContinuumAtTime c;

@@ -120,8 +120,8 @@ struct ContinuumReference {
   std::vector<ProfileCurve> profiles;  ///< TvNS ideal, TvNS(φ), NS dilute, NS model (absent ones left out)
   /// The model's amplitudes at each of the MD's recorded times with R/λ ≥
   /// amplitude_history_min_R_over_lambda, the last one included, from a solve of its own with
-  /// profiles around each of them (self-similar start only; empty for a hot spot, whose NS profiles
-  /// are timed from the deposition, and with fewer than two such times)
+  /// profiles around each of them (a hot spot's timed from the deposition, as at the last time);
+  /// empty with fewer than two such times
   std::vector<ContinuumAtTime> history;
 };
 

@@ -493,10 +493,37 @@ TEST_CASE("the amplitudes' history: each time read as the last time of the run c
   const std::string md((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
   CHECK(md.find("![amplitudes](figures/amplitudes.png)") != std::string::npos);
   fs::remove_all(out);
-  // A hot spot's NS is timed from the deposition: no history (and none unless asked for).
-  HydroModel hot = model;
-  hot.start = coldblast::hydro::Start::hotspot;
-  hot.r0_over_lambda = 1.0;
-  CHECK(solve_continuum(run, hot, 256, 0.0, {}, true)->history.empty());
-  CHECK(solve_continuum(run, model, 256)->history.empty());
+  CHECK(solve_continuum(run, model, 256)->history.empty());  // none unless asked for
+}
+
+TEST_CASE("a hot spot's amplitude history: its NS timed from the deposition at every time, as at the last one",
+          "[slow]") {
+  // data/start-memory/hotspot (r0 = λ, 2048 realizations to t = 4000) against the NS hot spot of the
+  // same E and r0: at a middle time the history equals the run cut there and solved apart (the MD
+  // side exactly, the NS side within 3 δ_NS + 2e-4).
+  const fs::path dir = fs::path(COLDBLAST_SOURCE_DIR) / "data" / "start-memory" / "hotspot";
+  const RunData run = read_run(dir);
+  const HydroModel model = with_run_start(default_hydro_model(2, run_packing_fraction(run)), run);
+  REQUIRE(model.start == coldblast::hydro::Start::hotspot);
+  const auto continuum = solve_continuum(run, model, 256, 0.0, {}, true);
+  REQUIRE(continuum->history.size() >= 10);
+  const std::vector<AmplitudeVerdict> history = amplitude_history(run, *continuum, 2.0);
+  const std::size_t per_time = history.size() / continuum->history.size();
+  REQUIRE(per_time >= 4);
+  const std::size_t k = continuum->history.size() / 2;
+  const ContinuumAtTime& c = continuum->history[k];
+  INFO("t = " << c.t);
+  RunData cut = read_run(dir);
+  truncate_run(cut, c.t);
+  const auto alone = solve_continuum(cut, model, 256);
+  const std::vector<AmplitudeVerdict> verdicts = amplitude_verdicts(cut, *alone, 2.0);
+  REQUIRE(verdicts.size() == per_time);
+  for (std::size_t i = 0; i < per_time; ++i) {
+    const AmplitudeVerdict &h = history[k * per_time + i], &v = verdicts[i];
+    INFO(v.name);
+    CHECK(h.measured == v.measured);
+    CHECK(h.error == v.error);
+    CHECK(std::abs(h.reference - v.reference) <= 3 * v.reference_error + 2e-4 * std::abs(v.reference));
+  }
+  CHECK(c.knudsen == Approx(core_knudsen(*alone)).epsilon(3e-3));
 }
