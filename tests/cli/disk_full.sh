@@ -11,7 +11,6 @@
 # Usage: disk_full.sh BINARY WORK
 set -uo pipefail
 binary=$1 work=$2
-fail() { echo "disk_full: FAIL: $*" >&2; exit 1; }
 scene=(md run --set t_max=40 --realizations 24 --set block_size=1)
 rm -rf "$work" && mkdir -p "$work/mnt"
 if [ "$(id -u)" -ne 0 ] || ! mount -t tmpfs -o size=1m coldblast-test "$work/mnt" 2>/dev/null; then
@@ -21,6 +20,7 @@ fi
 trap 'umount "$work/mnt" 2>/dev/null' EXIT
 mnt=$work/mnt
 
+test_name=disk_full
 . "$(dirname "$0")/resume_lib.sh"
 reference_run "$binary" "$work" "${scene[@]}"
 same_as_reference() { same_files "$work/reference" "$1"; }

@@ -13,12 +13,9 @@ binary=$1 work=$2 seed=${3:-$RANDOM}
 RANDOM=$seed
 echo "kill_resume: seed $seed (rerun with this third argument to repeat the kill moments)"
 scene=(md run --set t_max=60 --realizations 48 --set block_size=1 --threads 2)
-rm -rf "$work" && mkdir -p "$work"
-fail() { echo "kill_resume: FAIL: $*" >&2; exit 1; }
+test_name=kill_resume
 . "$(dirname "$0")/resume_lib.sh"
-
-reference_run "$binary" "$work" "${scene[@]}"
-echo "kill_resume: uninterrupted run ${duration_ms} ms"
+begin_resume_test "$binary" "$work" "${scene[@]}"
 
 out=$work/killed
 attempt() {  # one start (resuming when a checkpoint exists), killed by $1 after $2 ms; sets status

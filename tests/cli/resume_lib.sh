@@ -1,7 +1,20 @@
 # Shared by the stop-and-resume tests (kill_resume.sh, sigterm_in_flight.sh, disk_full.sh), sourced
-# after each defines fail(): the uninterrupted reference run, and the check that a stopped and
-# resumed run wrote the same files. Two runs of one ensemble differ only in the provenance command
-# line, the run id and the cost fields that count one process's work (docs/md-output.md).
+# after each sets test_name: fail(), the uninterrupted reference run, and the check that a stopped
+# and resumed run wrote the same files. Two runs of one ensemble differ only in the provenance
+# command line, the run id and the cost fields that count one process's work (docs/md-output.md).
+
+fail() {
+  echo "${test_name:?set test_name before sourcing resume_lib.sh}: FAIL: $*" >&2
+  exit 1
+}
+
+# The usual start: WORK made afresh, then reference_run of ARGS, reported with its duration.
+begin_resume_test() {
+  local binary=$1 work=$2
+  rm -rf "$work" && mkdir -p "$work"
+  reference_run "$@"
+  echo "$test_name: uninterrupted run ${duration_ms} ms"
+}
 
 # Runs BINARY ARGS... --out WORK/reference (stderr in WORK/reference.err); sets duration_ms.
 reference_run() {

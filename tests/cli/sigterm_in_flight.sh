@@ -7,12 +7,9 @@
 set -uo pipefail
 binary=$1 work=$2
 scene=(md run --set t_max=12000 --realizations 1)
-rm -rf "$work" && mkdir -p "$work"
-fail() { echo "sigterm_in_flight: FAIL: $*" >&2; exit 1; }
+test_name=sigterm_in_flight
 . "$(dirname "$0")/resume_lib.sh"
-
-reference_run "$binary" "$work" "${scene[@]}"
-echo "sigterm_in_flight: uninterrupted run ${duration_ms} ms"
+begin_resume_test "$binary" "$work" "${scene[@]}"
 
 out=$work/stopped
 "$binary" "${scene[@]}" --out "$out" >/dev/null 2>"$work/stopped.err" &
