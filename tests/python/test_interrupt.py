@@ -31,16 +31,20 @@ CHILD = textwrap.dedent(r"""
 LATENCY_BOUND_SECONDS = 8.0
 
 
-def interrupt_child(script, *args, signum=signal.SIGINT, delay=0.3):
-    """Runs `script` in a child Python, sends `signum` `delay` s after its first progress line, and returns
-    (the child's stdout lines, the first progress line included, its exit code, seconds from the signal to
-    its "KeyboardInterrupt" line)."""
+def interrupt_child(script, *args, signum=signal.SIGINT, delay=0.3, delay_fraction=None):
+    """Runs `script` in a child Python, sends `signum` `delay` s after its first progress line (or, with
+    `delay_fraction`, that fraction of the time the child took to print it), and returns (the child's
+    stdout lines, the first progress line included, its exit code, seconds from the signal to its
+    "KeyboardInterrupt" line)."""
+    started = time.monotonic()
     child = subprocess.Popen([sys.executable, "-c", script, *map(str, args)], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=dict(os.environ))
     try:
         line = child.stdout.readline()
         assert line.startswith("progress"), line + child.stderr.read()
         latency, lines = None, [line.strip()]
+        if delay_fraction is not None:
+            delay = delay_fraction * (time.monotonic() - started)
         time.sleep(delay)
         sent = time.monotonic()
         child.send_signal(signum)
@@ -258,12 +262,14 @@ IN_FLIGHT_CHILD = textwrap.dedent(r"""
 
 
 def test_ctrl_c_mid_realization_saves_where_it_stands_and_resume_goes_on_from_there(tmp_path):
-    """Ctrl-C 1.5 s into the second of two long realizations (4 s each on the idle development VM, its set-up
-    0.3 s): it saves its state (out/checkpoint/in_flight) and md.run(resume=out) ends with the files of an
-    uninterrupted run."""
+    """Ctrl-C in the second of two long realizations (4 s each on the idle development VM, its set-up 0.3 s):
+    it saves its state (out/checkpoint/in_flight) and md.run(resume=out) ends with the files of an
+    uninterrupted run. The first progress line comes when the first realization ends; the signal follows
+    after 40 % of the time that took (Python's start, the set-up and one realization), so it lands in
+    the middle of the second on a machine of any speed (a fixed 1.5 s would miss it on one 3x faster)."""
     import coldblast
     stopped = tmp_path / "stopped"
-    lines, code, latency = interrupt_child(IN_FLIGHT_CHILD, stopped, delay=1.5)
+    lines, code, latency = interrupt_child(IN_FLIGHT_CHILD, stopped, delay_fraction=0.4)
     assert "KeyboardInterrupt" in lines and code == 7, lines
     assert latency is not None and latency < LATENCY_BOUND_SECONDS
     states = list((stopped / "checkpoint" / "in_flight").glob("realization_*.bin"))
