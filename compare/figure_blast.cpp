@@ -1,11 +1,13 @@
 #include "compare/figure_blast.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "common/input.hpp"
 #include "common/output.hpp"
 #include "common/validate.hpp"
 #include "compare/gnuplot.hpp"
@@ -116,15 +118,42 @@ std::string lines_file(const BlastPanel& panel) {
   return out.str();
 }
 
+// pdfcairo draws point type 7 at pointsize ps, line width 0.01, as a disc 0.0834 ps + 0.003 inches
+// across, whatever the canvas and font (at lw 1 the stroke adds 0.007 in). Measured with gnuplot 5.4
+// on pages rendered at 1000 dpi: docs/figures.md, "Fig. 1's PDF".
+constexpr double pdf_point_inches_per_size = 0.0834, pdf_point_inches_at_zero = 0.003;
+
+// The PDF's particles as points of the discs' size: the PDF of 80000 gnuplot circles is 38 MB and
+// takes 13 s to draw, of points 2.6 MB and 2 s. The pointsize of a disc of radius r is
+// r slope - offset (returned as {slope, offset}): a panel's square frame spans 2 half_width over the
+// side of its plot box in inches (the layout's margins and spacing, `set size ratio -1`).
+std::array<double, 2> pdf_pointsize(const FigureSize& size, int columns, int rows, double half_width,
+                                    const double margins[4], double spacing_x, double spacing_y) {
+  const double width = (margins[1] - margins[0] - spacing_x * (columns - 1)) / columns * size.width_px / 144.0;
+  const double height = (margins[3] - margins[2] - spacing_y * (rows - 1)) / rows * size.height_px / 144.0;
+  const double inches_per_unit = std::min(width, height) / (2.0 * half_width);
+  return {2.0 * inches_per_unit / pdf_point_inches_per_size, pdf_point_inches_at_zero / pdf_point_inches_per_size};
+}
+
 std::string gnuplot_script(const BlastFigure& figure, const RunData& run) {
   const std::size_t n = figure.panels.size();
   const int columns = n > 1 ? 2 : 1, rows = n > 2 ? 2 : 1;
   const std::string what =
       run.d == 2 ? "" : " (slab |z| < " + common::format_significant(figure.slab, 4) + ", paths projected)";
+  const FigureSize size{720 * columns, 740 * rows + 80, 12};
+  // left, right, bottom, top; the legend sits in a strip below the panels, never on the particles
+  const double margins[4] = {0.06, 0.98, 0.14 / rows, 1 - 0.1 / rows}, spacing_x = 0.08, spacing_y = 0.1;
+  const auto [slope, offset] = pdf_pointsize(size, columns, rows, figure.half_width, margins, spacing_x, spacing_y);
+  const std::string colour = "($4 > 0 ? 0xd62728 : 0x8fb0e8)";
   std::ostringstream s;
-  // the legend sits in a strip below the panels, never on the particles
-  s << figure_terminal("fig1", {720 * columns, 740 * rows + 80, 12}) << "set multiplot layout " << rows << ","
-    << columns << " margins 0.06,0.98," << 0.14 / rows << "," << 1 - 0.1 / rows << " spacing 0.08,0.1 title "
+  s << figure_terminal("fig1", size) << "if (format eq 'pdf') {\n  disc_ps(r) = (r * "
+    << common::format_significant(slope, 6) << " > " << common::format_significant(offset, 4) << ") ? r * "
+    << common::format_significant(slope, 6) << " - " << common::format_significant(offset, 4)
+    << " : 0\n  particles = 'u 1:2:(disc_ps($3)):" << colour
+    << " w p pt 7 ps variable lw 0.01 lc rgb variable'\n} else {\n"
+    << "  particles = 'u 1:2:3:" << colour << " w circles lc rgb variable'\n}\n"
+    << "set multiplot layout " << rows << "," << columns << " margins " << margins[0] << "," << margins[1] << ","
+    << margins[2] << "," << margins[3] << " spacing " << spacing_x << "," << spacing_y << " title "
     << gnuplot_quoted(scene_caption(run)) << " . \"\\nBlast of realization 0" << what
     << ": moving (red) and resting (blue) particles, impurity paths (black)\" font 'Sans,14'\n"
     << "set size ratio -1\nset xrange [" << -figure.half_width << ":" << figure.half_width << "]\nset yrange ["
@@ -134,9 +163,8 @@ std::string gnuplot_script(const BlastFigure& figure, const RunData& run) {
   for (std::size_t i = 0; i < n; ++i) {
     const std::string tag = std::to_string(i), lines = "'fig1_lines_" + tag + ".dat'";
     s << "set title '(" << static_cast<char>('A' + i) << ") t = " << common::format_significant(figure.panels[i].t, 4)
-      << "'\n"
-      << (i == 0 ? "" : "unset key\n") << "plot 'fig1_particles_" << tag
-      << ".dat' u 1:2:3:($4 > 0 ? 0xd62728 : 0x8fb0e8) w circles lc rgb variable notitle, "
+      << "' offset 0,-0.5\n"  // half a line down, clear of the figure's two-line title
+      << (i == 0 ? "" : "unset key\n") << "plot 'fig1_particles_" << tag << ".dat' @particles notitle, "
       << "1/0 w p pt 7 ps 1.2 lc rgb '#d62728' t 'moving', 1/0 w p pt 7 ps 1.2 lc rgb '#8fb0e8' t 'resting', " << lines
       << " i 0:" << std::max<std::size_t>(figure.panels[i].paths.size(), 1) - 1
       << " w l lw 2 lc rgb 'black' t 'impurity paths', " << lines << " i "
@@ -147,6 +175,32 @@ std::string gnuplot_script(const BlastFigure& figure, const RunData& run) {
   }
   s << "unset multiplot\n";
   return s.str();
+}
+
+// The names of fig1's data files in `folder` (fig1_particles_<k>.dat, fig1_lines_<k>.dat).
+std::vector<std::string> data_files(const fs::path& folder) {
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("fig1_", 0) == 0 && entry.path().extension() == ".dat") names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Copies fig1.png (and fig1.pdf, if there) from `drawn` into `folder` when `drawn` holds the same
+// fig1.gp and the same data files: then the drawing would be the same bytes.
+bool copy_drawn(const fs::path& drawn, const std::string& script, const fs::path& folder) {
+  if (drawn.empty() || !fs::is_regular_file(drawn / "fig1.gp") || !fs::is_regular_file(drawn / "fig1.png") ||
+      common::read_text(drawn / "fig1.gp") != script)
+    return false;
+  const std::vector<std::string> names = data_files(folder);
+  if (data_files(drawn) != names) return false;
+  for (const std::string& name : names)
+    if (common::read_text(drawn / name) != common::read_text(folder / name)) return false;
+  for (const char* name : {"fig1.png", "fig1.pdf"})
+    if (fs::is_regular_file(drawn / name)) common::write_file_atomic(folder / name, common::read_text(drawn / name));
+  return true;
 }
 
 }  // namespace
@@ -164,7 +218,7 @@ std::vector<double> blast_panel_times(std::vector<double> times) {
   return chosen;
 }
 
-BlastFigure blast_figure(const RunData& run, const fs::path& folder, bool draw) {
+BlastFigure blast_figure(const RunData& run, const fs::path& folder, bool draw, const fs::path& drawn) {
   BlastFigure figure;
   const std::map<double, fs::path> files = snapshot_files(run);
   if (files.empty()) return figure;
@@ -192,8 +246,9 @@ BlastFigure blast_figure(const RunData& run, const fs::path& folder, bool draw) 
     common::write_file_atomic(folder / ("fig1_lines_" + tag + ".dat"), lines_file(data.panel));
     figure.panels.push_back(std::move(data.panel));
   }
-  common::write_file_atomic(folder / "fig1.gp", gnuplot_script(figure, run));
-  if (draw) run_gnuplot(folder, "fig1.gp");
+  const std::string script = gnuplot_script(figure, run);
+  common::write_file_atomic(folder / "fig1.gp", script);
+  if (draw && !copy_drawn(drawn, script, folder)) run_gnuplot(folder, "fig1.gp");
   figure.file = "fig1.png";  // and fig1.pdf
   return figure;
 }

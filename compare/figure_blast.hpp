@@ -38,9 +38,12 @@ double blast_slab_half_width(double a);
 std::vector<double> blast_panel_times(std::vector<double> snapshot_times);
 
 /// Reads realization 0's snapshot_<t>.csv and trajectories.csv of `run` and writes the panels'
-/// data files, fig1.gp and (when `draw`) fig1.png into `folder`. Returns an empty `file` (and
-/// writes nothing) when the run has no snapshot; throws std::invalid_argument naming the file
-/// when a snapshot or the trajectories are malformed.
-BlastFigure blast_figure(const RunData& run, const std::filesystem::path& folder, bool draw = true);
+/// data files, fig1.gp and (when `draw`) fig1.png and fig1.pdf into `folder`. When `drawn` holds a
+/// fig1.gp and data files equal to these and its fig1.png, the figure files are copied from there
+/// instead of drawn (the same run's figure in another report). Returns an empty `file` (and writes nothing)
+/// when the run has no snapshot; throws std::invalid_argument naming the file when a snapshot or
+/// the trajectories are malformed.
+BlastFigure blast_figure(const RunData& run, const std::filesystem::path& folder, bool draw = true,
+                         const std::filesystem::path& drawn = {});
 
 }  // namespace coldblast::compare

@@ -288,12 +288,13 @@ std::string profile_figure(const RunData& run, const std::vector<ProfileCurve>& 
 }  // namespace
 
 ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
-                                 const std::vector<ProfileCurve>& continuum, const fs::path& folder, double t_profile) {
+                                 const std::vector<ProfileCurve>& continuum, const fs::path& folder, double t_profile,
+                                 const fs::path& drawn_blast_figure) {
   ExtraFigures figures;
   if (fit) figures.distribution = distribution_figure(run, *fit, folder);
   if (fs::exists(run.directory / "profiles.csv") && run.summary.contains("lambda"))
     figures.profiles = profile_figure(run, continuum, t_profile, folder);
-  figures.blast = blast_figure(run, folder).file;
+  figures.blast = blast_figure(run, folder, true, drawn_blast_figure).file;
   return figures;
 }
 

@@ -47,7 +47,7 @@ struct ExtraFigures {
 /// given continuum curves (n/n∞, u/Ṙ, T/Ṙ² against r/R), drawn as they are.
 ExtraFigures write_extra_figures(const RunData& run, const std::optional<DistributionFit>& fit,
                                  const std::vector<ProfileCurve>& continuum, const std::filesystem::path& folder,
-                                 double t_profile = 0.0);
+                                 double t_profile = 0.0, const std::filesystem::path& drawn_blast_figure = {});
 
 /// The MD's amplitudes against the continuum's at every recorded time from R/λ = 10 on
 /// (CompareResult::amplitude_history): one panel per amplitude, MD/NS − 1 in per cent with its

@@ -502,7 +502,8 @@ fs::path report_folder(const fs::path& out) {
   return folder;
 }
 
-std::vector<fs::path> write_report(const CompareResult& result, const ReportConfig& config) {
+std::vector<fs::path> write_report(const CompareResult& result, const ReportConfig& config,
+                                   const fs::path& drawn_blast_figure) {
   const fs::path out = report_folder(config.out);
   const fs::path staging = out.string() + ".tmp." + std::to_string(::getpid());
   fs::remove_all(staging);
@@ -517,7 +518,7 @@ std::vector<fs::path> write_report(const CompareResult& result, const ReportConf
       // the continuum curves the analysis solved (compare/verdict.hpp: continuum_for_figures), if any
       const std::vector<ProfileCurve> curves =
           result.continuum ? result.continuum->profiles : std::vector<ProfileCurve>{};
-      extra = write_extra_figures(result.run, fit, curves, staging / "figures", result.until);
+      extra = write_extra_figures(result.run, fit, curves, staging / "figures", result.until, drawn_blast_figure);
       if (result.tracer_md) write_tracer_md_figures(*result.tracer_md, scene_caption(result.run), staging / "figures");
       if (result.continuum)
         extra.amplitudes = amplitude_history_figure(result.amplitude_history, scene_caption(result.run),

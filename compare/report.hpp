@@ -38,6 +38,10 @@ std::filesystem::path report_folder(const std::filesystem::path& out);
 
 /// Writes report.md, verdict.json, exponents.csv and (optionally) figures/*.png; returns the
 /// paths written. Throws std::runtime_error if gnuplot is needed but missing or fails.
-std::vector<std::filesystem::path> write_report(const CompareResult& result, const ReportConfig& config);
+/// `drawn_blast_figure`: a figures folder where the same run's Fig. 1 is already drawn
+/// (reproduce's first report); its fig1.png and fig1.pdf are copied when its fig1.gp is this
+/// report's, not drawn again (the PDF of 80000 discs takes gnuplot 15 s). Empty: always drawn.
+std::vector<std::filesystem::path> write_report(const CompareResult& result, const ReportConfig& config,
+                                                const std::filesystem::path& drawn_blast_figure = {});
 
 }  // namespace coldblast::compare

@@ -262,8 +262,10 @@ ReproduceResult run_reproduce(const ReproduceConfig& config, const ReproduceProg
 
   say(progress, "step 6/6: reports");
   write_report(r.against_theory, {config.out / "report-theory", config.figures});
-  write_report(r.against_paper, {config.out / "report-paper", config.figures});
-  write_report(r.against_hydro, {config.out / "report-hydro", config.figures});
+  // The same MD run's Fig. 1 in each report: drawn once (its PDF alone takes gnuplot 15 s).
+  const fs::path drawn = config.out / "report-theory" / "figures";
+  write_report(r.against_paper, {config.out / "report-paper", config.figures}, drawn);
+  write_report(r.against_hydro, {config.out / "report-hydro", config.figures}, drawn);
   write_report(r.tracer_vs_md, {config.out / "report-tracer", config.figures});
   common::write_file_atomic(config.out / "REPORT.md", reproduce_markdown(r, config.figures));
   common::write_file_atomic(config.out / "table1.md", table1_markdown(r));

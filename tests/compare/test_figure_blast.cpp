@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include "common/input.hpp"
+#include "common/output.hpp"
 #include "compare/figure_blast.hpp"
 #include "tests/temp_path.hpp"
 #include "theory/prefactors.hpp"
@@ -119,5 +121,66 @@ TEST_CASE("blast figure is drawn as a PNG and a PDF of two panels side by side",
   std::string magic(5, '\0');
   REQUIRE(pdf.read(magic.data(), 5));
   CHECK(magic == "%PDF-");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("blast figure already drawn for the same run is copied, not drawn again; another script is drawn", "[fast]") {
+  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
+    WARN("gnuplot is not installed: the copy is not checked");
+    return;
+  }
+  const fs::path root = fresh_folder("coldblast_test_figure_blast_drawn");
+  const fs::path first = root / "first", second = root / "second", third = root / "third";
+  for (const fs::path& dir : {first, second, third}) fs::create_directories(dir);
+  const RunData run = synthetic_run(root);
+  blast_figure(run, first);
+  // Markers in place of the drawn figures: a copy carries them, a drawing would not.
+  coldblast::common::write_file_atomic(first / "fig1.png", "marker png");
+  coldblast::common::write_file_atomic(first / "fig1.pdf", "marker pdf");
+  CHECK(blast_figure(run, second, true, first).file == "fig1.png");
+  CHECK(coldblast::common::read_text(second / "fig1.png") == "marker png");
+  CHECK(coldblast::common::read_text(second / "fig1.pdf") == "marker pdf");
+  CHECK(coldblast::common::read_text(second / "fig1.gp") == coldblast::common::read_text(first / "fig1.gp"));
+  // The same script over other data there (a particle moved): this one is drawn.
+  const fs::path fourth = root / "fourth";
+  fs::create_directories(fourth);
+  std::string particles = coldblast::common::read_text(first / "fig1_particles_0.dat");
+  particles[0] = particles[0] == '9' ? '8' : '9';
+  coldblast::common::write_file_atomic(first / "fig1_particles_0.dat", particles);
+  blast_figure(run, fourth, true, first);
+  CHECK(coldblast::common::read_text(fourth / "fig1.png").substr(1, 3) == "PNG");
+  // Another run's script there (another E: another title and shock radius): this one is drawn.
+  RunData other = run;
+  other.summary["E"] = 9.0;
+  blast_figure(other, first, false);
+  REQUIRE(coldblast::common::read_text(first / "fig1.gp") != coldblast::common::read_text(second / "fig1.gp"));
+  blast_figure(run, third, true, first);
+  CHECK(coldblast::common::read_text(third / "fig1.png").substr(1, 3) == "PNG");
+  CHECK(coldblast::common::read_text(third / "fig1.pdf").substr(0, 5) == "%PDF-");
+  fs::remove_all(root);
+}
+
+TEST_CASE("blast figure's PDF draws each particle as a point of its disc's size in the frame", "[fast]") {
+  const fs::path dir = fresh_folder("coldblast_test_figure_blast_pdf_points");
+  const BlastFigure figure = blast_figure(synthetic_run(dir), dir, false);
+  REQUIRE(figure.panels.size() == 2);
+  // Two panels side by side on 1440 x 820 pixels (10 x 5.69 in): each plot box is 0.42 of the width
+  // (margins 0.06 and 0.98, spacing 0.08) = 4.2 in, less than its height (0.76 of 5.69 in), so the
+  // square frame of 2 half_width spans 4.2 in. A disc of radius r is 2 r 4.2 / (2 half_width) inches
+  // across, and pdfcairo's point type 7 is 0.0834 ps + 0.003 inches across.
+  const double slope = 2.0 * 4.2 / (2.0 * figure.half_width) / 0.0834, offset = 0.003 / 0.0834;
+  const std::string script = coldblast::common::read_text(dir / "fig1.gp");
+  const std::string key = "disc_ps(r) = (r * ";
+  const std::size_t at = script.find(key);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(script.substr(at + key.size())) == Approx(slope).epsilon(1e-5));
+  const std::string minus = " - ";
+  const std::size_t off = script.find(minus, at);
+  REQUIRE(off != std::string::npos);
+  CHECK(std::stod(script.substr(off + minus.size())) == Approx(offset).epsilon(1e-3));
+  // The PNG keeps circles of the radius in data units; the PDF's points come from disc_ps.
+  CHECK(script.find("u 1:2:3:($4 > 0 ? 0xd62728 : 0x8fb0e8) w circles") != std::string::npos);
+  CHECK(script.find("u 1:2:(disc_ps($3)):($4 > 0 ? 0xd62728 : 0x8fb0e8) w p pt 7 ps variable lw 0.01") !=
+        std::string::npos);
   fs::remove_all(dir);
 }
