@@ -2,9 +2,9 @@
 # The issue-6 campaigns exactly as recorded in docs/verification.md ("Campaign 1" … "Campaign 4"),
 # one per argument: bash scripts/campaigns.sh 2 3 4   (outputs in ./campaigns/, reports beside them).
 # Issue 32's deep campaigns: 5 (2D, R/λ = 307, 128 realizations in 8 shards, about 80 core-hours) and
-# 6 (3D, R/λ = 37, 32 realizations, about 12 hours of both cores); each resumes its runs from their
-# checkpoints when started again. `finish5 DIR...` and `finish6 DIR` do only the analysis, of shards
-# or a run made elsewhere (e.g. the background runs of /work/campaigns), into campaigns/c5 or c6.
+# 6 (3D, R/λ = 37, 32 realizations in 16 shards, about 13 hours of both cores); each resumes its runs
+# from their checkpoints when started again and skips a shard already finished. `finish5 DIR...` and
+# `finish6 DIR...` do only the analysis, of shards made elsewhere, into campaigns/c5 or c6.
 # Wall times on the 2-core development machine: 1: ~1.5 h, 2: 42 min, 3: 61 min, 4: 5 + 12 + 15 min.
 # data/campaign* were made by commit 8ad2c6a's engine; since 8fda9ee trajectories differ by round-off
 # (bookkeeping events no longer re-round positions), so a rerun agrees statistically, not bit for bit.
@@ -18,6 +18,7 @@ obs='observables=["R_imp","V_imp","C_imp","u_imp","u_flow","n0","T0","R","profil
 # A long run: started with --out, or resumed from its checkpoint when one is there.
 run_or_resume() {
   local out=$1; shift
+  if [ -f "$out/manifest.json" ] && [ ! -d "$out/checkpoint" ]; then return 0; fi  # finished earlier
   if [ -d "$out/checkpoint" ]; then $cb md run --resume "$out" --threads 2; else $cb "$@" --out "$out"; fi
 }
 # The merged run, the comparisons and the kinetic tracer (NS background and the MD's own fields)
@@ -40,10 +41,10 @@ analyse_deep() {
     > "$out/tracer-mdfields-vs-md.txt" || true
 }
 finish5() { analyse_deep campaigns/c5 scenes/paper-2d.toml 5 0.6103515625 320000 "$@"; }
-finish6() { analyse_deep campaigns/c6 scenes/paper-3d.toml 6 0.7505950927734375 58498.28719409885 "$1"; }
+finish6() { analyse_deep campaigns/c6 scenes/paper-3d.toml 6 0.7505950927734375 58498.28719409885 "$@"; }
 case "${1:-}" in
   finish5) shift; [ $# -ge 1 ] || { echo "campaigns.sh: finish5 needs the shards' folders" >&2; exit 2; }; finish5 "$@"; exit ;;
-  finish6) [ $# -eq 2 ] || { echo "campaigns.sh: finish6 needs the run's folder" >&2; exit 2; }; finish6 "$2"; exit ;;
+  finish6) shift; [ $# -ge 1 ] || { echo "campaigns.sh: finish6 needs the shards' folders" >&2; exit 2; }; finish6 "$@"; exit ;;
 esac
 for c in "$@"; do
   case "$c" in
@@ -77,9 +78,13 @@ for c in "$@"; do
            --threads 2 --seed 51 --set t_min=0.6103515625 --set t_max=320000 --set "$obs" --shard $s/8
        done
        finish5 campaigns/c5-2d-deep-shard{0,1,2,3,4,5,6,7} ;;
-    6) run_or_resume campaigns/c6-3d-deep md run scenes/paper-3d.toml --realizations 32 --set block_size=1 --threads 2 \
-         --seed 61 --set t_min=0.7505950927734375 --set t_max=58498.28719409885 --set "$obs"
-       finish6 campaigns/c6-3d-deep ;;
+    6) # 16 shards of 2 realizations (the same seeds as one run of 32): a finished shard is a small folder
+       # that can be kept (data/campaign6-3d-deep/shards) while the rest runs; an unfinished one resumes.
+       for s in $(seq 0 15); do
+         run_or_resume campaigns/c6-3d-deep-shard$s md run scenes/paper-3d.toml --realizations 32 --set block_size=1 \
+           --threads 2 --seed 61 --set t_min=0.7505950927734375 --set t_max=58498.28719409885 --set "$obs" --shard $s/16
+       done
+       finish6 campaigns/c6-3d-deep-shard{0..15} ;;
     *) echo "campaigns.sh: campaign '$c' is not one of 1, 2, 3, 4, 5, 6 (or, first and alone: finish5 DIR..., finish6 DIR)" >&2; exit 2 ;;
   esac
 done
