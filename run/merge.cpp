@@ -41,6 +41,10 @@ std::map<long long, BlockSums> read_block_sums(const fs::path& dir, const Observ
     s.sum_squares.assign(layout.size(), 0.0);
     blocks[common::parse_count(row.fields[0], where)] = s;
   }
+  if (!fs::exists(dir / "accumulators.csv"))
+    throw std::invalid_argument("md merge DIR file = " + (dir / "accumulators.csv").string() +
+                                " is missing: md merge adds the blocks' sums it holds, so a copy of a run that kept "
+                                "only observables, blocks and profiles cannot be merged (rerun its realizations)");
   const common::CsvTable accumulators =
       common::parse_csv(common::read_text(dir / "accumulators.csv", "md merge DIR file"),
                         (dir / "accumulators.csv").string(), accumulator_header);

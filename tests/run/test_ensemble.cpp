@@ -81,6 +81,40 @@ TEST_CASE("shards merged equal the unsharded run", "[slow]") {
   fs::remove_all(root);
 }
 
+TEST_CASE("shards of different counts, and merged folders, merge exactly; a copy without accumulators.csv is refused",
+          "[slow]") {
+  // The deep campaigns' layout (scripts/campaigns.sh): one coarse shard plus finer ones that fill its
+  // gaps, kept as folders and merged later, possibly with an earlier merge among the inputs.
+  const BlastConfig scene = small_scene();  // blocks 0..3
+  const fs::path root = coldblast::test::unique_temp_path("coldblast_test_mixed_shards");
+  fs::remove_all(root);
+  const auto shard = [&](int index, int count, const char* name) {
+    RunOptions o;
+    o.shard_index = index;
+    o.shard_count = count;
+    write_blast_outputs(run_blast(scene, o), root / name);
+  };
+  write_blast_outputs(run_blast(scene, RunOptions{}), root / "all");
+  shard(0, 2, "coarse");  // blocks 0, 2
+  shard(1, 4, "fine1");   // block 1
+  shard(3, 4, "fine3");   // block 3
+  write_blast_outputs(merge_blast_outputs({root / "fine1", root / "coarse"}), root / "partial");
+  write_blast_outputs(merge_blast_outputs({root / "partial", root / "fine3"}), root / "merged");
+  for (const char* file : {"observables.csv", "blocks.csv", "profiles.csv", "p_imp.csv", "accumulators.csv"}) {
+    INFO(file);
+    CHECK(data_lines(root / "all" / file) == data_lines(root / "merged" / file));
+  }
+  CHECK(partial_merge_note(merge_blast_outputs({root / "merged"})).empty());
+  // A block in two inputs (the coarse shard and a merge that holds it) is refused.
+  CHECK_THROWS(merge_blast_outputs({root / "partial", root / "coarse", root / "fine3"}));
+  // data/ once kept a campaign without its accumulators.csv: the error says what is missing and why.
+  fs::remove(root / "fine3" / "accumulators.csv");
+  CHECK_THROWS_WITH(merge_blast_outputs({root / "partial", root / "fine3"}),
+                    Catch::Contains((root / "fine3" / "accumulators.csv").string()) && Catch::Contains("is missing") &&
+                        Catch::Contains("cannot be merged"));
+  fs::remove_all(root);
+}
+
 TEST_CASE("shard specs are validated", "[fast]") {
   CHECK(parse_shard("1/3") == std::pair<int, int>{1, 3});
   CHECK_THROWS_WITH(parse_shard("3/2"), Catch::Contains("--shard"));
