@@ -5,6 +5,9 @@
 # 6 (3D, R/λ = 37, 32 realizations in 16 shards, about 13 hours of both cores); each resumes its runs
 # from their checkpoints when started again and skips a shard already finished. `finish5 DIR...` and
 # `finish6 DIR...` do only the analysis, of shards made elsewhere, into campaigns/c5 or c6.
+# `--keep DIR` (first): each finished shard of 5 and 6 is copied whole into DIR/shards and logged in
+# DIR/provenance.log (scripts/keep_shard.sh), e.g. on a disk that outlives the machine; a shard found
+# there finished and missing here is copied back instead of run again (a new machine resumes from DIR).
 # Wall times on the 2-core development machine: 1: ~1.5 h, 2: 42 min, 3: 61 min, 4: 5 + 12 + 15 min.
 # data/campaign* were made by commit 8ad2c6a's engine; since 8fda9ee trajectories differ by round-off
 # (bookkeeping events no longer re-round positions), so a rerun agrees statistically, not bit for bit.
@@ -14,12 +17,32 @@ cd "$(dirname "$0")/.."
 cb=./build/bin/coldblast
 [ -x "$cb" ] || { echo "campaigns.sh: $cb missing: run scripts/bootstrap.sh first" >&2; exit 2; }
 mkdir -p campaigns
+keep=""
+if [ "${1:-}" = --keep ]; then
+  [ $# -ge 3 ] || { echo "campaigns.sh: --keep needs a folder and then the campaigns (5 or 6)" >&2; exit 2; }
+  keep=$2; shift 2
+fi
 obs='observables=["R_imp","V_imp","C_imp","u_imp","u_flow","n0","T0","R","profiles","p_imp"]'
 # A long run: started with --out, or resumed from its checkpoint when one is there.
+# With --keep, a finished shard is kept (once: keep_shard.sh leaves a kept copy alone), and one kept
+# but absent here is copied back.
 run_or_resume() {
-  local out=$1; shift
-  if [ -f "$out/manifest.json" ] && [ ! -d "$out/checkpoint" ]; then return 0; fi  # finished earlier
-  if [ -d "$out/checkpoint" ]; then $cb md run --resume "$out" --threads 2; else $cb "$@" --out "$out"; fi
+  local out=$1 kept
+  shift
+  kept=${keep:+$keep/shards/$(basename "$out")}
+  if [ -n "$kept" ] && [ ! -e "$out" ] && [ -f "$kept/manifest.json" ] && [ ! -e "$kept/checkpoint" ]; then
+    cp -rp "$kept" "$out"
+  fi
+  if [ -f "$out/manifest.json" ] && [ ! -d "$out/checkpoint" ]; then
+    :  # finished earlier
+  elif [ -d "$out/checkpoint" ]; then
+    $cb md run --resume "$out" --threads 2
+  else
+    $cb "$@" --out "$out"
+  fi
+  if [ -n "$kept" ]; then
+    bash scripts/keep_shard.sh "$out" "$keep/shards" "$keep/provenance.log" "$(uname -n), $(nproc) CPUs, load $(cut -d' ' -f1-3 /proc/loadavg)"
+  fi
 }
 # The merged run, the comparisons and the kinetic tracer (NS background and the MD's own fields)
 # against it: $1 = output folder, $2 = scene, $3 = tracer seed, $4 = t_min, $5 = t_max, the rest: run folders.
