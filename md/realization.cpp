@@ -217,6 +217,7 @@ class RealizationRun {
     blast_ = std::make_unique<GrowingBlast<D, Queue>>(scene_, index_, growths, in);
     observer_ = std::make_unique<BlastObserver<D, Queue>>(scene_, layout_, blast_->engine(), extras_.paths, in);
     if (in.remaining() != 0) in.fail("bytes left over");
+    out_.resumed_collisions = blast_->engine().collision_count();
   }
 
   const ResolvedScene& scene_;

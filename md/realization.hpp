@@ -134,6 +134,9 @@ struct RealizationExtras {
 struct RealizationOutput {
   std::vector<double> record;  ///< ObservableLayout order
   std::uint64_t collisions = 0;
+  /// Of `collisions`, those of the mid-run state it resumed from (InFlight::resume; 0 from t = 0):
+  /// done by an earlier process, so not counted in this one's rate.
+  std::uint64_t resumed_collisions = 0;
   double energy_error = 0.0;   ///< |E_kin(t_max) - E|/E
   int growths = 0;             ///< times the region grew (run_realization)
   double region_radius = 0.0;  ///< the region it ran in (length)

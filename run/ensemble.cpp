@@ -115,6 +115,7 @@ BlockProgress run_block(const md::ResolvedScene& scene, const std::string& run_i
       common::throw_if_stop_requested();  // SIGINT/SIGTERM or a host's Ctrl-C: what is done is saved
       const md::RealizationOutput out = run_one(scene, layout, r, callbacks, save);
       md::add_realization(s, out.record, out.collisions, out.energy_error);
+      progress.resumed_in_flight += out.resumed_collisions;
       if (out.growths > 0 && callbacks.note) {
         static std::mutex one_at_a_time;
         const std::lock_guard<std::mutex> lock(one_at_a_time);
@@ -244,6 +245,7 @@ BlastResult run_blast(const md::BlastConfig& config, const RunOptions& options) 
   });
   for (std::size_t slot = 0; slot < owned.size(); ++slot) {
     result.blocks[owned[slot]] = std::move(blocks[slot].sums);
+    result.resumed_collisions += blocks[slot].resumed_in_flight;
     add_files(result.realization_files, blocks[slot].files);
   }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

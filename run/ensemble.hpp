@@ -89,6 +89,10 @@ struct BlockProgress {
   md::BlockSums sums;
   NamedFiles files;             ///< the single realizations' files of those realizations
   std::size_t files_saved = 0;  ///< files[0, files_saved) are in the checkpoint
+  /// The collisions of the mid-run states its realizations resumed from in this process (not run
+  /// here: BlastResult::resumed_collisions); not saved in the checkpoint, whose finished
+  /// realizations all count as resumed when the run resumes again.
+  std::uint64_t resumed_in_flight = 0;
 };
 /// What a block reports as it runs; each may be empty.
 struct BlockCallbacks {

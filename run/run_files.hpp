@@ -38,7 +38,8 @@ struct BlastResult {
   std::map<long long, md::BlockSums> blocks;  ///< by block index
   double wall_seconds = 0.0;
   /// Realizations and collisions of blocks loaded from a checkpoint (`--resume`), not run in
-  /// wall_seconds: the cost figures of the summary leave them out.
+  /// wall_seconds: the cost figures of the summary leave them out. The collisions include those of
+  /// the mid-run states resumed (md::RealizationOutput::resumed_collisions).
   long long resumed_realizations = 0;
   std::uint64_t resumed_collisions = 0;
   int threads = 1, shard_index = 0, shard_count = 1;

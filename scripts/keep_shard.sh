@@ -40,6 +40,10 @@ s = json.load(open(sys.argv[1]))
 line = (f"{sys.argv[3]} {sys.argv[2]} kept (run {s['run_id']}, shard {s.get('shard', '-')}): "
         f"{s['realizations']} realizations, {s['collisions_total']} collisions, {s['wall_seconds']:.1f} s "
         f"since the last start with {s['threads']} threads; energy error <= {s['energy_error_max']:.1e}")
+if s.get("resumed_collisions", 0) > 0:  # a resumed run: its time covers only the collisions after the states
+    r = s["resumed_realizations"]
+    line += (f"; resumed ({r} finished realization{'' if r == 1 else 's'} and {s['resumed_collisions']} "
+             f"collisions done before), {s['collisions_per_second']:.3g} collisions/s since")
 print(line + (f"; {sys.argv[4]}" if sys.argv[4] else ""))
 PY
 echo "keep_shard.sh: kept $run in $dest/$name" >&2

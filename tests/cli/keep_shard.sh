@@ -27,6 +27,22 @@ for want in "s0 kept" "shard 0/2" "2 realizations" "$(collisions s0/summary.json
   [[ $line == *"$want"* ]] || fail "log line lacks '$want': $line"
 done
 ls -a kept/shards | grep -q partial && fail "a temporary copy was left in kept/shards"
+# A resumed run (here s0's folder with a resumed run's summary fields) says what came before the
+# last start, whose time covers only the rest.
+cp -r s0 s2
+/usr/bin/python3 - s2/summary.json <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+s.update(run_id="resumed-run", resumed_realizations=1, resumed_collisions=1234, collisions_per_second=5678.0)
+json.dump(s, open(sys.argv[1], "w"))
+PY
+sed -i 's/"run_id": *"[^"]*"/"run_id": "resumed-run"/' s2/manifest.json
+bash "$keep" s2 kept/shards kept/provenance.log 2>err || fail "keep s2: $(cat err)"
+line=$(tail -1 kept/provenance.log)
+want="; resumed (1 finished realization and 1234 collisions done before), 5.68e+03 collisions/s since"
+[[ $line == *"$want"* ]] || fail "the resumed run's line lacks '$want': $line"
+[[ $(head -1 kept/provenance.log) == *resumed* ]] && fail "s0's line says resumed"
+rm -r kept/shards/s2 s2 && sed -i '$d' kept/provenance.log
 
 # The kept copies merge to exactly what the originals merge to (accumulators.csv came along).
 "$binary" md merge s0 s1 --out merged >/dev/null 2>&1 || fail "md merge of the originals"

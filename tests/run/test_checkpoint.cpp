@@ -219,6 +219,15 @@ TEST_CASE("a stop mid-realization saves its state, and the run resumed from it e
     CHECK(resumed.blocks.at(b).sum_squares == s.sum_squares);
     CHECK(resumed.blocks.at(b).collisions == s.collisions);
   }
+  // Done before this process: realization 0 (block 0's file) and, unless its state was refused,
+  // the part of realization 1 before its state; the summary's rate counts only the rest.
+  const std::uint64_t loaded = saved.partial.at(0).collisions;
+  if (damaged) {
+    CHECK(resumed.resumed_collisions == loaded);
+  } else {
+    CHECK(resumed.resumed_collisions > loaded);
+    CHECK(resumed.resumed_collisions < full.blocks.at(0).collisions);
+  }
   bool refused = false;
   for (const std::string& note : notes) refused |= note.find("runs again from t = 0") != std::string::npos;
   CHECK(refused == damaged);
