@@ -99,7 +99,8 @@ void print_amplitudes(const compare::CompareResult& result) {
 
 /// A tracer run against its MD run at their last common time.
 void print_tracer_md(const compare::TracerMdComparison& c) {
-  std::printf("\ntracer%s against the MD run %s%s (tracer/MD - 1, combined jackknife error):\n",
+  std::printf("\ntracer%s%s against the MD run %s%s (tracer/MD - 1, combined jackknife error):\n",
+              c.background.empty() ? "" : (" " + c.background).c_str(),
               c.tracer_from_md_states
                   ? (" (started from its impurities at t = " + common::format_number(c.start_time) + ")").c_str()
                   : "",

@@ -337,6 +337,7 @@ std::string tracer_md_markdown(const TracerMdComparison& c, bool figures) {
      << (c.md_recollisions_off ? " (with recollisions switched off, impurities.recollide = false: a numerical "
                                  "experiment, not hard-sphere dynamics)"
                                : "")
+     << (c.background.empty() ? "" : "; the tracer ran " + c.background)
      << (c.tracer_from_md_states ? "; the tracer started from the MD's impurities at t = " +
                                        common::format_number(c.start_time) + " (`--start states`)"
                                  : std::string())

@@ -57,6 +57,26 @@ double tracer_start_time(const RunData& tracer) {
   return found != tracer.summary.end() && found->is_number() ? found->get<double>() : 0.0;
 }
 
+}  // namespace
+
+std::string tracer_background_phrase(const common::Json& tracer_summary, const common::Json& md_summary) {
+  const std::string background = tracer_summary.value("background", std::string());
+  const std::string transport = tracer_summary.value("transport", std::string());
+  if (background == "ns")
+    return transport == "enskog" ? "in the dense NS background (Enskog transport)"
+                                 : "in the dilute NS background (Chapman-Enskog transport)";
+  if (background == "tvns") return "in the TvNS background";
+  if (background == "equilibrium") return "in an equilibrium gas";
+  if (background == "md") {
+    const std::string id = tracer_summary.value("md_run_id", std::string());
+    return !id.empty() && id == md_summary.value("run_id", std::string()) ? "in this MD run's own fields"
+                                                                          : "in the fields of MD run " + id;
+  }
+  return "";
+}
+
+namespace {
+
 TracerMdSeries compare_series(const RunData& tracer, const RunData& md, const std::string& name) {
   const BlockSeries &a = tracer.series.at(name), &b = md.series.at(name);
   const auto [va, ea] = values_with_errors(a);
@@ -153,14 +173,16 @@ std::optional<TracerMdDistribution> compare_distribution(const RunData& tracer, 
 std::string observables_figure(const TracerMdComparison& c, const std::string& caption, const fs::path& folder) {
   const std::size_t n = c.series.size();
   std::ostringstream script;
+  const std::string what =
+      "Impurity in " + std::to_string(c.d) + "D: kinetic tracer (Lorentz-Boltzmann, Eq. 36)" +
+      (c.background.empty() ? "" : " " + c.background) + " against MD" +
+      (c.tracer_from_md_states
+           ? ", tracer started at t = " + common::format_significant(c.start_time, 4) + " from the MD impurities"
+           : std::string()) +
+      (c.md_recollisions_off ? " (MD without recollisions)" : "");
   script << figure_terminal("tracer_vs_md", {620 * static_cast<int>(n), 940, 13}) << "set multiplot title "
-         << gnuplot_quoted(caption) << " . \"\\n\" . 'Impurity in " << c.d
-         << "D: kinetic tracer (Lorentz-Boltzmann, Eq. 36) against MD"
-         << (c.tracer_from_md_states
-                 ? ", tracer started at t = " + common::format_significant(c.start_time, 4) + " from the MD impurities"
-                 : std::string())
-         << (c.md_recollisions_off ? " (MD without recollisions)" : "")
-         << "; 1{/Symbol s} error bars (block jackknife), mostly smaller than the symbols'\n";
+         << gnuplot_quoted(caption) << " . \"\\n\" . " << gnuplot_quoted(what)
+         << " . \"\\n\" . '1{/Symbol s} error bars (block jackknife), mostly smaller than the symbols'\n";
   for (std::size_t i = 0; i < n; ++i) {
     const TracerMdSeries& s = c.series[i];
     const std::string file = "tracer_md_" + s.observable + ".dat";
@@ -214,6 +236,7 @@ std::string distribution_figure(const TracerMdComparison& c, const std::string& 
   std::ostringstream script;
   script << figure_terminal("tracer_p_imp", {1300, 760, 13}) << "set title " << gnuplot_quoted(caption) << " . \"\\n"
          << p << "(r) at t = " << common::format_significant(h.t, 4)
+         << (c.background.empty() ? "" : ", tracer " + c.background)
          << ": <r^4>/<r^2>^2 = " << common::format_measurement(h.ratio_tracer, h.ratio_tracer_error, 1) << " (tracer), "
          << common::format_measurement(h.ratio_md, h.ratio_md_error, 1) << " (MD), " << format_number(h.ratio_gaussian)
          << " (Gaussian)\"\n"
@@ -249,6 +272,7 @@ TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& 
   c.md_recollisions_off = md.summary.contains(recollide) && md.summary.at(recollide) == false;
   c.tracer_from_md_states = tracer.summary.value("start", std::string()) == "states";
   c.start_time = tracer_start_time(tracer);
+  c.background = tracer_background_phrase(tracer.summary, md.summary);
   c.tracer_directory = tracer.directory;
   c.md_directory = md.directory;
   const std::vector<std::string> names = theory::observable_names(theory::is_tracer_prefactor);

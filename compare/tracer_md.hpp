@@ -56,6 +56,9 @@ struct TracerMdComparison {
   /// start time (summary.json's start_time, 0 if absent) are left out.
   bool tracer_from_md_states = false;
   double start_time = 0.0;
+  /// The tracer's background in words for titles and reports (tracer_background_phrase), "" when its
+  /// summary.json does not say.
+  std::string background;
   std::vector<TracerMdSeries> series;                ///< R_imp, V_imp, C_imp (those both runs record)
   std::optional<TracerMdDistribution> distribution;  ///< when both runs have p_imp.csv at a common time
 };
@@ -65,6 +68,12 @@ struct TracerMdComparison {
 /// std::invalid_argument naming --md-run when the runs differ in d or in their scenes' physics (n, a, E, the
 /// impurities' count, mass and radius), share no recording time or no impurity observable, or their p_imp bins differ.
 TracerMdComparison compare_tracer_with_md(const RunData& tracer, const RunData& md);
+
+/// The background the tracer ran in, from its summary.json (background, transport, md_run_id), as a
+/// phrase: "in the dense NS background (Enskog transport)", "in this MD run's own fields" (its md_run_id
+/// is the MD run's run_id), "in the fields of MD run ID", "in the TvNS background", "in an equilibrium
+/// gas"; "" when the summary has no background (runs written before it was recorded).
+std::string tracer_background_phrase(const common::Json& tracer_summary, const common::Json& md_summary);
 
 /// tracer_vs_md.csv: t, observable, tracer, tracer_stderr, md, md_stderr, ratio_minus_1, its stderr.
 std::string tracer_md_csv(const TracerMdComparison& comparison);

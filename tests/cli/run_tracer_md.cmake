@@ -27,8 +27,10 @@ if(NOT recorded_id STREQUAL md_id OR NOT recorded_path STREQUAL "${WORK}/md"
   message(FATAL_ERROR "summary.json: md_run_id '${recorded_id}' (the MD's is ${md_id}), md_run '${recorded_path}', "
                       "background_description '${description}'")
 endif()
-expect("compare the tracer against the md run" 0 "tracer against the MD run .*C_imp" ${BINARY} compare
+expect("compare the tracer against the md run" 0 "tracer in this MD run.s own fields against the MD run .*C_imp" ${BINARY} compare
        ${WORK}/reference --md-run ${WORK}/md --sigma 10 --allowance 1 --no-figures --no-report)
+expect("compare the tracer against another md run" 0 "tracer in the fields of MD run ${md_id} against the MD run .*md-other"
+       ${BINARY} compare ${WORK}/reference --md-run ${WORK}/md-other --sigma 10 --allowance 1 --no-figures --no-report)
 
 set(keys ${coldblast_tracer_summary_keys} md_run md_run_id)
 foreach(shard 0 1)

@@ -208,3 +208,38 @@ TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_im
   CHECK_THROWS_WITH(compare_tracer_with_md(tracer, read_run(root / "md3")), Catch::Contains("--md-run: d = 3"));
   fs::remove_all(root);
 }
+
+TEST_CASE("tracer against MD: the tracer's background named in words, its own MD run's fields told apart", "[fast]") {
+  using coldblast::common::Json;
+  const Json md = Json::parse(R"({"run_id": "20261128T165428Z-d5d162b2"})");
+  CHECK(tracer_background_phrase(Json::parse(R"({"background": "ns", "transport": "enskog"})"), md) ==
+        "in the dense NS background (Enskog transport)");
+  CHECK(tracer_background_phrase(Json::parse(R"({"background": "ns", "transport": "dilute"})"), md) ==
+        "in the dilute NS background (Chapman-Enskog transport)");
+  CHECK(tracer_background_phrase(Json::parse(R"({"background": "tvns"})"), md) == "in the TvNS background");
+  CHECK(tracer_background_phrase(Json::parse(R"({"background": "equilibrium"})"), md) == "in an equilibrium gas");
+  CHECK(tracer_background_phrase(Json::parse(R"({"background": "md", "md_run_id": "20261128T165428Z-d5d162b2"})"),
+                                 md) == "in this MD run's own fields");
+  CHECK(tracer_background_phrase(Json::parse(R"({"background": "md", "md_run_id": "20261127T000000Z-00000000"})"),
+                                 md) == "in the fields of MD run 20261127T000000Z-00000000");
+  CHECK(tracer_background_phrase(Json::parse(R"({"scene": {"d": 2}})"), md).empty());  // older runs
+
+  // The comparison carries it into the figure's title, and gnuplot draws the apostrophe.
+  const fs::path root = coldblast::test::unique_temp_path("coldblast_test_tracer_md_background");
+  BlockSeries C = synthetic_series(13, 8, 40, 6, 0.7, 0.3, 0.6);
+  C.observable = "C_imp";
+  write_synthetic_run(root / "md", 2, {{"C_imp", C}});
+  write_synthetic_run(root / "tracer", 2, {{"C_imp", C}});
+  coldblast::common::write_file_atomic(root / "tracer" / "summary.json",
+                                       R"({"scene": {"d": 2}, "background": "ns", "transport": "enskog"})");
+  TracerMdComparison c = compare_tracer_with_md(read_run(root / "tracer"), read_run(root / "md"));
+  CHECK(c.background == "in the dense NS background (Enskog transport)");
+  c.background = "in this MD run's own fields";
+  const TracerMdFigures figures = write_tracer_md_figures(c, "caption", root / "figures");
+  CHECK(fs::file_size(root / "figures" / figures.observables) > 10000);
+  std::ifstream script(root / "figures" / "tracer_vs_md.gp");
+  std::stringstream text;
+  text << script.rdbuf();
+  CHECK(text.str().find("Eq. 36) in this MD run''s own fields against MD") != std::string::npos);
+  fs::remove_all(root);
+}
