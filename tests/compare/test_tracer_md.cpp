@@ -64,6 +64,17 @@ std::vector<std::vector<double>> read_dat(const fs::path& path) {
   return rows;
 }
 
+// Draws the tracer-vs-MD figures of c into folder (the PNG must be drawn: > 10 kB) and returns
+// the text of their gnuplot script.
+std::string drawn_figure_script(const TracerMdComparison& c, const std::string& caption, const fs::path& folder) {
+  const TracerMdFigures figures = write_tracer_md_figures(c, caption, folder);
+  CHECK(fs::file_size(folder / figures.observables) > 10000);
+  std::ifstream script(folder / "tracer_vs_md.gp");
+  std::stringstream text;
+  text << script.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
 TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_imp and figures", "[fast]") {
@@ -190,12 +201,8 @@ TEST_CASE("tracer against MD: exact ratios, jackknife errors, common times, p_im
   CHECK(later.start_time == Approx(R.t[3]).epsilon(1e-12));
   CHECK_FALSE(c.tracer_from_md_states);
   // Its figure says so, and gnuplot draws it (a quote in the title once broke the script).
-  const TracerMdFigures later_figures = write_tracer_md_figures(later, "a caption with a quote: it's", root / "later");
-  CHECK(fs::file_size(root / "later" / later_figures.observables) > 10000);
-  std::ifstream script(root / "later" / "tracer_vs_md.gp");
-  std::stringstream script_text;
-  script_text << script.rdbuf();
-  CHECK(script_text.str().find("tracer started at t = ") != std::string::npos);
+  CHECK(drawn_figure_script(later, "a caption with a quote: it's", root / "later").find("tracer started at t = ") !=
+        std::string::npos);
   for (const auto& s : later.series) {
     REQUIRE(s.points.size() == static_cast<std::size_t>(tracer_times - 3));
     CHECK(s.points.front().t == R.t[3]);
@@ -235,11 +242,7 @@ TEST_CASE("tracer against MD: the tracer's background named in words, its own MD
   TracerMdComparison c = compare_tracer_with_md(read_run(root / "tracer"), read_run(root / "md"));
   CHECK(c.background == "in the dense NS background (Enskog transport)");
   c.background = "in this MD run's own fields";
-  const TracerMdFigures figures = write_tracer_md_figures(c, "caption", root / "figures");
-  CHECK(fs::file_size(root / "figures" / figures.observables) > 10000);
-  std::ifstream script(root / "figures" / "tracer_vs_md.gp");
-  std::stringstream text;
-  text << script.rdbuf();
-  CHECK(text.str().find("Eq. 36) in this MD run''s own fields against MD") != std::string::npos);
+  CHECK(drawn_figure_script(c, "caption", root / "figures").find("Eq. 36) in this MD run''s own fields against MD") !=
+        std::string::npos);
   fs::remove_all(root);
 }
