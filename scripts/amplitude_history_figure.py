@@ -23,6 +23,19 @@ PANELS = [("n(centre)/n", "n(centre)/n_∞"), ("H/R", "H/R"), ("T(centre)/Rdot^2
 COLOURS = ["#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e"]
 
 
+def layout(panels, columns):
+    """The multiplot's grid in screen fractions: (rows, panel height, legend origin, legend size). The
+    panels fill 0.9 of the height under the title, from the top left; the legend takes the first free
+    slot, or, when every slot holds a panel, a strip of its own between the title and the panels."""
+    rows = (panels + columns - 1) // columns
+    if panels < rows * columns:
+        height = 0.9 / rows
+        return rows, height, ((panels % columns) / columns, 0.9 - (panels // columns + 1) * height), \
+            (1 / columns, height)
+    height = 0.82 / rows
+    return rows, height, (0.0, 0.82), (1.0, 0.08)
+
+
 def read_history(path, start):
     """{amplitude: [(R/λ, 100 (MD/NS - 1), its error, 100 bound)]}, sorted in R/λ."""
     with open(path) as f:
@@ -71,7 +84,7 @@ def main():
                     f.write("%.10g %.10g %.10g %.10g\n" % row)
                 f.write("\n\n")
         columns = 3
-        rows = (len(panels) + columns - 1) // columns
+        rows, height, legend_origin, legend_size = layout(len(panels), columns)
         lines = []
         for fmt, ext in (("pngcairo size 1800,%d font ',12'" % (520 * rows + 120), "png"),
                          ("pdfcairo size 12.5in,%gin font ',12'" % ((520 * rows + 120) / 144), "pdf")):
@@ -80,10 +93,9 @@ def main():
             title = (args.title + "\\n" if args.title else "") + \
                 "points: MD/NS - 1 with 1{/Symbol s} (jackknife); grey: the continuum bound Kn^2 (R: {/Symbol l}/R)"
             lines += ['set multiplot title "%s"' % title.replace('"', "'")]
-            height = 0.9 / rows
             for k, (name, label) in enumerate(panels):
                 block = k * (len(tables) + 1)
-                lines += ["reset", "set origin %g,%g" % ((k % columns) / columns, 0.9 - (k // columns + 1) * height),
+                lines += ["reset", "set origin %g,%g" % ((k % columns) / columns, (rows - 1 - k // columns) * height),
                           "set size %g,%g" % (1 / columns, height), "set logscale x",
                           "set xtics (10, 20, 30, 50, 100, 200, 300, 500, 1000)",
                           "set grid lt 1 lw 0.6 lc rgb '#d0d0d0' dt 3", "set xlabel 'R/{/Symbol l}'",
@@ -99,13 +111,11 @@ def main():
                     plot.append("'%s' index %d u 1:2:3 w yerrorbars pt 7 ps 0.8 lc rgb '%s' t ''"
                                 % (data, block + i, COLOURS[i % len(COLOURS)]))
                 lines.append("plot " + ", ".join(plot))
-            # the legend in the first free slot, or under the title when every slot holds a panel
-            k = len(panels)
-            origin = ("%g,%g" % ((k % columns) / columns, 0.9 - (k // columns + 1) * height)
-                      if k < rows * columns else "0,0.9")
-            lines += ["reset", "set origin " + origin, "set size %g,%g" % (1 / columns, height), "unset border",
-                      "unset tics", "set xrange [0:1]", "set yrange [0:1]",
-                      "set key at graph 0.05,0.9 left top Left reverse box spacing 1.4 font ',12'"]
+            key = ("set key at graph 0.05,0.9 left top Left reverse box spacing 1.4 font ',12'"
+                   if legend_size[0] < 1 else "set key at graph 0.5,0.5 center center Left reverse box horizontal "
+                   "maxrows 1 width 2 font ',12'")
+            lines += ["reset", "set origin %g,%g" % legend_origin, "set size %g,%g" % legend_size, "unset border",
+                      "unset tics", "set xrange [0:1]", "set yrange [0:1]", key]
             entries = ["2 w p pt 7 ps 1.2 lc rgb '%s' t '%s'" % (COLOURS[i % len(COLOURS)], lab)
                        for i, lab in enumerate(args.labels)]
             entries.append("2 w l lw 14 lc rgb '#e3e3e3' t 'continuum bound: Kn^2 of the NS core (R: {/Symbol l}/R)'")

@@ -320,3 +320,44 @@ def test_amplitude_history_figure_draws_the_files_numbers(tmp_path):
                     "--from", "25"], capture_output=True, text=True, check=True)
     assert (tmp_path / "h.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert (tmp_path / "h.pdf").read_bytes()[:5] == b"%PDF-"
+
+
+def test_replication_compares_nearest_times_in_combined_sigma(tmp_path):
+    """scripts/replication.py reads two amplitudes.csv as compare writes them, picks each file's
+    recorded R/λ nearest to --at, and prints (a - b)/sqrt(σa² + σb²): here (0.05 - 0.01)/0.05 = +0.8σ
+    from a 3-4-5 triangle of errors; a bad --at is refused."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import replication
+    head = "# comment\nt,R_over_lambda,amplitude,md_over_ns_minus_1,md_over_ns_minus_1_stderr\n"
+    (tmp_path / "a.csv").write_text(head + "1,99,H/R,0.05,0.03\n2,300,H/R,0.0,0.01\n")
+    (tmp_path / "b.csv").write_text(head + "1,102,H/R,0.01,0.04\n2,310,H/R,0.02,0.01\n")
+    a, b = replication.read(str(tmp_path / "a.csv")), replication.read(str(tmp_path / "b.csv"))
+    assert replication.nearest(a, 100) == 99 and replication.nearest(b, 100) == 102
+    assert abs(replication.difference(a[(99, "H/R")], b[(102, "H/R")]) - 0.8) < 1e-12
+    out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "replication.py"), str(tmp_path / "a.csv"),
+                          str(tmp_path / "b.csv"), "--at", "100", "307", "--amplitudes", "H/R"],
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    assert out[2] == "| 99 | H/R | +5.00 ± 3.00 | +1.00 ± 4.00 | +0.8 |"
+    assert out[3] == "| 300 | H/R | +0.00 ± 1.00 | +2.00 ± 1.00 | −1.4 |"
+    bad = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "replication.py"), str(tmp_path / "a.csv"),
+                          str(tmp_path / "b.csv"), "--at", "0"], capture_output=True, text=True)
+    assert bad.returncode == 2 and "--at: each R/λ must be > 0" in bad.stderr
+
+
+def test_amplitude_history_layout_keeps_the_legend_on_the_canvas():
+    """The legend of scripts/amplitude_history_figure.py takes the first free slot of the panel grid,
+    or its own strip under the title when the panels fill the grid (6 of 3 × 2: it was once drawn off
+    the canvas there). For 1 to 9 panels the legend lies inside [0, 1]² and overlaps no panel."""
+    sys.path.insert(0, os.path.join(REPO, "scripts"))
+    import amplitude_history_figure as ahf
+    for n in range(1, 10):
+        rows, height, (lx, ly), (lw, lh) = ahf.layout(n, 3)
+        assert rows == (n + 2) // 3
+        assert 0 <= lx and lx + lw <= 1 + 1e-12 and 0 <= ly and ly + lh <= 0.9 + 1e-12, n
+        for k in range(n):
+            px, py = (k % 3) / 3, (rows - 1 - k // 3) * height
+            overlap_x = min(px + 1 / 3, lx + lw) - max(px, lx)
+            overlap_y = min(py + height, ly + lh) - max(py, ly)
+            assert overlap_x <= 1e-12 or overlap_y <= 1e-12, (n, k)
+            assert py >= -1e-12 and py + height <= 0.9 + 1e-12
+    assert ahf.layout(6, 3)[3] == (1.0, 0.08) and ahf.layout(5, 3)[2] == (2 / 3, 0.0)
