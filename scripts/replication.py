@@ -56,16 +56,28 @@ def rows(a, b, at, amplitudes):
 
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("a")
-    p.add_argument("b")
-    p.add_argument("--labels", nargs=2, default=["A", "B"])
+    p.add_argument("a", metavar="A.csv", help="amplitudes.csv of the first ensemble")
+    p.add_argument("b", metavar="B.csv", help="amplitudes.csv of the second, independent ensemble")
+    p.add_argument("--labels", nargs=2, default=["A", "B"], metavar=("A", "B"), help="the columns' names")
     p.add_argument("--at", nargs="+", type=float, default=[36, 50, 71, 100, 141, 200, 259, 307],
                    help="R/λ at which to compare (the nearest recorded time in each file)")
-    p.add_argument("--amplitudes", nargs="+", default=AMPLITUDES, choices=AMPLITUDES)
+    p.add_argument("--amplitudes", nargs="+", default=AMPLITUDES, choices=AMPLITUDES, metavar="NAME",
+                   help="which rows (default: all): " + ", ".join(AMPLITUDES))
     args = p.parse_args(argv)
     if any(x <= 0 for x in args.at):
         p.error("--at: each R/λ must be > 0")
-    a, b = read(args.a), read(args.b)
+    tables = []
+    for path in (args.a, args.b):
+        try:
+            tables.append(read(path))
+        except OSError as e:
+            p.error(f"{path}: {e.strerror}")
+        except (KeyError, ValueError) as e:
+            p.error(f"{path}: not an amplitudes.csv of `coldblast compare --against hydro` ({e!r})")
+    for path, table in zip((args.a, args.b), tables):
+        if not table:
+            p.error(f"{path}: no rows")
+    a, b = tables
     print(f"| R/λ | amplitude | {args.labels[0]}: MD/NS − 1 (%) | {args.labels[1]} | difference (σ) |")
     print("|---|---|---|---|---|")
     print("\n".join(rows(a, b, args.at, args.amplitudes)))

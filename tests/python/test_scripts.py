@@ -342,6 +342,13 @@ def test_replication_compares_nearest_times_in_combined_sigma(tmp_path):
     bad = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "replication.py"), str(tmp_path / "a.csv"),
                           str(tmp_path / "b.csv"), "--at", "0"], capture_output=True, text=True)
     assert bad.returncode == 2 and "--at: each R/λ must be > 0" in bad.stderr
+    missing = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "replication.py"),
+                              str(tmp_path / "a.csv"), str(tmp_path / "none.csv")], capture_output=True, text=True)
+    assert missing.returncode == 2 and "none.csv: No such file or directory" in missing.stderr
+    (tmp_path / "empty.csv").write_text(head)
+    empty = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "replication.py"),
+                            str(tmp_path / "empty.csv"), str(tmp_path / "b.csv")], capture_output=True, text=True)
+    assert empty.returncode == 2 and "empty.csv: no rows" in empty.stderr
 
 
 def test_amplitude_history_layout_keeps_the_legend_on_the_canvas():
