@@ -28,7 +28,7 @@ struct CompareOptions {
   bool no_figures = false;
   Format format = Format::table;
   compare::CompareConfig config;
-  std::string hydro_eos, hydro_transport;
+  std::string hydro_eos, hydro_transport, hydro_viscosity;
   std::string hydro_config;  // --hydro-config FILE: its [hydro] table (flags win)
   double hydro_phi = 0;
   CLI::Option* hydro_phi_option = nullptr;
@@ -152,11 +152,18 @@ compare::HydroModelOptions hydro_model(const CompareOptions& options) {
     if (keys.phi) model.phi = *keys.phi, model.phi_name = "hydro.phi";
     if (keys.transport)
       model.transport = hydro::transport_from_string(*keys.transport, model.transport_name = "hydro.transport");
+    if (keys.viscosity) model.viscosity = *keys.viscosity, model.viscosity_name = "hydro.viscosity";
   }
   if (!options.hydro_eos.empty()) model.eos = hydro::eos_from_string(options.hydro_eos, model.eos_name = "--hydro-eos");
   if (!options.hydro_transport.empty())
     model.transport = hydro::transport_from_string(options.hydro_transport, model.transport_name = "--hydro-transport");
   if (options.hydro_phi_option->count() > 0) model.phi = options.hydro_phi, model.phi_name = "--hydro-phi";
+  if (!options.hydro_viscosity.empty()) {
+    if (options.hydro_viscosity != "on" && options.hydro_viscosity != "off")
+      throw std::invalid_argument("--hydro-viscosity = " + options.hydro_viscosity + " is not one of on, off");
+    model.viscosity = options.hydro_viscosity == "on";
+    model.viscosity_name = "--hydro-viscosity";
+  }
   return model;
 }
 
@@ -238,8 +245,9 @@ void add_compare_command(CLI::App& app) {
                    "Navier–Stokes cells for --against hydro, [16, 100000]")
       ->capture_default_str();
   command->add_option("--hydro-config", options->hydro_config,
-                      "TOML file whose [hydro] table sets eos, phi, transport of --against hydro (a scene file may "
-                      "carry it; --hydro-eos/--hydro-phi/--hydro-transport win; docs/hydro.md)");
+                      "TOML file whose [hydro] table sets eos, phi, transport, viscosity of --against hydro (a scene "
+                      "file may carry it; --hydro-eos/--hydro-phi/--hydro-transport/--hydro-viscosity win; "
+                      "docs/hydro.md)");
   command->add_option("--hydro-eos", options->hydro_eos,
                       "NS equation of state for --against hydro: ideal, henderson (2D), carnahan-starling (3D); "
                       "default: the run's hard-particle EOS");
@@ -248,6 +256,9 @@ void add_compare_command(CLI::App& app) {
                           "NS ambient packing fraction (hard-particle EOS only); default: the run's phi");
   command->add_option("--hydro-transport", options->hydro_transport,
                       "NS transport: enskog (dense, needs a hard-particle EOS) or dilute; default enskog");
+  command->add_option("--hydro-viscosity", options->hydro_viscosity,
+                      "NS shear (and Enskog bulk) viscosity for --against hydro: on or off; default off, the "
+                      "paper's conduction-only core (Eq. 15; docs/verification.md, \"Viscosity in the comparison\")");
   CLI::Option* out_option = command->add_option("--out", options->out,
                                                 "Report directory (report.md, verdict.json, exponents.csv, figures/ as "
                                                 "PNG and PDF); default: RUN_DIR/compare-AGAINST");

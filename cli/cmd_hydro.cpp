@@ -23,7 +23,7 @@ namespace {
 struct HydroOptions {
   hydro::HydroOptions library;
   std::string viscosity = "off";  // on | off (core), the library's bool
-  std::string config_file;        // --config FILE: its [hydro] table's eos, phi, transport, start, r0 (flags win)
+  std::string config_file;        // --config FILE: its [hydro] model keys (docs/hydro.md; flags win)
   hydro::HydroModelKeys file_keys;
   std::string out;
   Format format = Format::table;
@@ -142,10 +142,9 @@ void add_common_options(CLI::App& command, HydroOptions& options, const char* un
   command.add_option("--outer-margin", options.library.outer_margin,
                      "Outer grid edge / shock radius, [1.05, 2] (0 or none: 1.15; raise it when heat conduction "
                      "outruns the shock at the start, as in dense gases near close packing)");
-  command.add_option(
-      "--config", options.config_file,
-      "TOML file whose [hydro] table sets eos, phi, transport, start, r0 (a scene file may carry it; flags win; "
-      "docs/hydro.md)");
+  command.add_option("--config", options.config_file,
+                     "TOML file whose [hydro] table sets eos, phi, transport, viscosity, start, r0 (a scene file may "
+                     "carry it; flags win; docs/hydro.md)");
   command.add_option("--out", options.out, "Folder for samples.csv, exponents.csv, profile.csv (none if empty)");
   add_format_option(command, options.format);
 }
@@ -157,9 +156,10 @@ void read_config_keys(const CLI::App& command, HydroOptions& options) {
       common::read_text(options.config_file, "--config", common::text_size_limit), options.config_file);
   if (command.count("--eos")) options.file_keys.eos.reset();
   if (command.count("--phi")) options.file_keys.phi.reset();
-  // core only: --transport, --start, --r0
+  // core only: --transport, --viscosity, --start, --r0
   const auto given = [&](const char* flag) { return command.get_option_no_throw(flag) && command.count(flag) > 0; };
   if (given("--transport")) options.file_keys.transport.reset();
+  if (given("--viscosity")) options.file_keys.viscosity.reset();
   if (given("--start")) options.file_keys.start.reset();
   if (given("--r0")) options.file_keys.r0.reset();
 }

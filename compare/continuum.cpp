@@ -18,12 +18,13 @@ std::string HydroModel::describe() const {
   const std::string hot = start == hydro::Start::hotspot
                               ? ", hot-spot start r0 = " + common::format_significant(r0_over_lambda, 4) + " lambda"
                               : "";
+  const std::string viscous = viscosity ? ", viscous)" : ")";
   if (eos == hydro::Eos::ideal)
     return std::string("dilute NS (ideal gas, ") +
-           (transport == hydro::Transport::dilute ? "Chapman-Enskog transport)" : "enskog transport)") + hot;
+           (transport == hydro::Transport::dilute ? "Chapman-Enskog transport" : "enskog transport") + viscous + hot;
   return std::string(transport == hydro::Transport::enskog ? "dense NS (" : "NS (") + hydro::to_string(eos) +
          " EOS at phi = " + common::format_significant(phi, 4) + ", " +
-         (transport == hydro::Transport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport)" + hot;
+         (transport == hydro::Transport::enskog ? "Enskog" : "dilute Chapman-Enskog") + " transport" + viscous + hot;
 }
 
 std::string HydroModel::describe_start() const {
@@ -65,6 +66,7 @@ HydroModel resolve_hydro_model(const HydroModelOptions& options, int d, double r
     model.phi = *options.phi;
   }
   if (options.transport) model.transport = *options.transport;
+  if (options.viscosity) model.viscosity = *options.viscosity;
   if (model.eos == hydro::Eos::ideal && model.transport == hydro::Transport::enskog)
     throw std::invalid_argument(options.transport_name + " = enskog needs a hard-particle " + options.eos_name +
                                 " (its contact value chi comes from the EOS); allowed with " + options.eos_name +
@@ -112,6 +114,7 @@ hydro::NavierStokesConfig hydro_model_config(int d, const HydroModel& model, dou
   config.physics.eos = model.eos;
   config.physics.phi = model.phi;
   config.physics.transport = model.transport;
+  config.physics.viscosity = model.viscosity;  // shear (and Enskog's bulk) viscosity; off: Eq. (15)'s conduction only
   config.physics.start = model.start;
   config.physics.r0_over_lambda = model.r0_over_lambda;
   config.numerics.cells = cells;

@@ -22,27 +22,35 @@ struct HydroModel {
   hydro::Eos eos = hydro::Eos::ideal;
   double phi = 0.0;  ///< ambient packing fraction (0 for the ideal gas)
   hydro::Transport transport = hydro::Transport::dilute;
+  /// Shear viscosity (and, with Enskog transport, bulk viscosity) beside heat conduction. Off by
+  /// default: the paper's core model is heat conduction only (Eq. 15); on, it is the full
+  /// Navier-Stokes blast (docs/verification.md, "Viscosity in the comparison").
+  bool viscosity = false;
   /// How E enters (with_run_start): self_similar for the MD's kick and single starts, hotspot (of
   /// radius r0_over_lambda mean free paths, times from the deposition) for its hot spot.
   hydro::Start start = hydro::Start::self_similar;
   double r0_over_lambda = 0.0;
   /// "dense NS (henderson EOS at phi = 0.1178, enskog transport)" or "dilute NS (ideal gas, ...)",
-  /// followed by ", hot-spot start r0 = 1 lambda" for a hotspot start.
+  /// with "... transport, viscous)" when viscosity is on, followed by ", hot-spot start r0 = 1 lambda"
+  /// for a hotspot start.
   std::string describe() const;
   /// "self-similar" or "hotspot r0/lambda = 1" (reports and verdict.json).
   std::string describe_start() const;
   bool dilute() const { return eos == hydro::Eos::ideal && transport == hydro::Transport::dilute; }
 };
 
-/// What the user asked for (CLI --hydro-eos, --hydro-phi, --hydro-transport); unset fields take
-/// the run's defaults: the hard-particle EOS of the run's d at the run's φ with Enskog transport.
+/// What the user asked for (CLI --hydro-eos, --hydro-phi, --hydro-transport, --hydro-viscosity);
+/// unset fields take the run's defaults: the hard-particle EOS of the run's d at the run's φ with
+/// Enskog transport, no viscosity.
 struct HydroModelOptions {
   std::optional<hydro::Eos> eos;
   std::optional<double> phi;
   std::optional<hydro::Transport> transport;
+  std::optional<bool> viscosity;
   /// How messages name each field: the flag, or hydro.<key> for a value from --hydro-config's file.
-  std::string eos_name = "--hydro-eos", phi_name = "--hydro-phi", transport_name = "--hydro-transport";
-  bool any() const { return eos || phi || transport; }
+  std::string eos_name = "--hydro-eos", phi_name = "--hydro-phi", transport_name = "--hydro-transport",
+              viscosity_name = "--hydro-viscosity";
+  bool any() const { return eos || phi || transport || viscosity; }
 };
 
 /// The dense default for a run of dimension d at packing fraction phi: Henderson (d = 2) or

@@ -79,6 +79,7 @@ common::Json hydro_model_json(const CompareResult& result) {
           {"eos", hydro::to_string(m.eos)},
           {"phi", m.phi},
           {"transport", hydro::to_string(m.transport)},
+          {"viscosity", m.viscosity},
           {"start", hydro::to_string(m.start)},
           {"r0_over_lambda", m.r0_over_lambda},
           {"cells", result.continuum->ns.config.numerics.cells}};

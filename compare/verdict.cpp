@@ -58,9 +58,10 @@ void CompareConfig::validate() const {
                                 " must be a positive finite time (0: all times)");
   common::require_integer_in_range("--hydro-cells", hydro_cells, 16, 100000);
   if (against != Reference::hydro && hydro_model.any()) {
-    const std::string& option = hydro_model.eos   ? hydro_model.eos_name
-                                : hydro_model.phi ? hydro_model.phi_name
-                                                  : hydro_model.transport_name;
+    const std::string& option = hydro_model.eos         ? hydro_model.eos_name
+                                : hydro_model.phi       ? hydro_model.phi_name
+                                : hydro_model.transport ? hydro_model.transport_name
+                                                        : hydro_model.viscosity_name;
     throw std::invalid_argument(option +
                                 " chooses the Navier-Stokes model of --against hydro; the "
                                 "comparison is --against " +

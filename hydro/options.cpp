@@ -86,13 +86,18 @@ HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::st
       keys.transport = text();
     else if (key == "start")
       keys.start = text();
-    else if (key == "phi")
+    else if (key == "viscosity") {
+      if (const std::optional<bool> on = value.value<bool>(); on && value.is_boolean())
+        keys.viscosity = *on;
+      else
+        throw std::invalid_argument("hydro.viscosity in " + source + " must be true or false");
+    } else if (key == "phi")
       keys.phi = number();
     else if (key == "r0")
       keys.r0 = number();
     else
       throw std::invalid_argument("unknown key hydro." + key + " in " + source +
-                                  " (allowed: eos, phi, transport, start, r0)");
+                                  " (allowed: eos, phi, transport, viscosity, start, r0)");
   }
   return keys;
 }
@@ -108,6 +113,7 @@ NavierStokesConfig navier_stokes_config(const HydroOptions& flags, bool euler, c
   if (file.eos) options.eos = *file.eos, from_file("eos");
   if (file.phi) options.phi = *file.phi, from_file("phi");
   if (file.transport) options.transport = *file.transport, from_file("transport");
+  if (file.viscosity) options.viscosity = *file.viscosity;
   if (file.start) options.start = *file.start, from_file("start");
   if (file.r0) options.r0 = *file.r0, from_file("r0");
   // NavierStokesConfig::validate holds the rules; the flags and keys only rename its fields.

@@ -44,11 +44,13 @@ struct HydroOptions {
   double r0 = 0.0;                     ///< hot-spot radius r0/lambda, > 0 with start = hotspot
 };
 /// The Navier–Stokes model keys of a TOML file's [hydro] table (docs/hydro.md): the same values as
-/// --eos, --phi, --transport, --start, --r0. An unset key leaves the flag's value.
+/// --eos, --phi, --transport, --viscosity (a TOML boolean), --start, --r0. An unset key leaves the
+/// flag's value.
 struct HydroModelKeys {
   std::optional<std::string> eos;
   std::optional<double> phi;
   std::optional<std::string> transport;
+  std::optional<bool> viscosity;
   std::optional<std::string> start;
   std::optional<double> r0;
 };
@@ -61,8 +63,8 @@ HydroModelKeys read_hydro_model_keys(const std::string& toml_text, const std::st
 inline constexpr double default_core_until = 1e4;
 inline constexpr double default_euler_until = 500;
 /// The validated NavierStokesConfig of core (euler = false) or Euler (kappa = mu = 0) mode, with the
-/// keys of `file` replacing the options' eos, phi, transport, start and r0 (the caller drops the keys
-/// whose flag was given). Throws std::invalid_argument naming the flag (--d, --cells, --until, --eos,
+/// keys of `file` replacing the options' eos, phi, transport, viscosity (core mode), start and r0 (the caller drops the
+/// keys whose flag was given). Throws std::invalid_argument naming the flag (--d, --cells, --until, --eos,
 /// --phi, --transport, --kappa-prefactor, --start, --r0), or hydro.<key> for a value taken from the file.
 NavierStokesConfig navier_stokes_config(const HydroOptions& options, bool euler, const HydroModelKeys& file = {});
 

@@ -448,8 +448,9 @@ py::object read_run_summary(const std::string& directory) {
 py::object compare_run(const std::string& run_dir, const std::string& against, double sigma,
                        std::optional<double> allowance, double window_decades, double until,
                        const std::vector<std::string>& observables, int hydro_cells, const std::string& hydro_eos,
-                       std::optional<double> hydro_phi, const std::string& hydro_transport, const std::string& md_run,
-                       const std::string& out, bool figures, const py::object& progress_callback) {
+                       std::optional<double> hydro_phi, const std::string& hydro_transport,
+                       std::optional<bool> hydro_viscosity, const std::string& md_run, const std::string& out,
+                       bool figures, const py::object& progress_callback) {
   if (!out.empty()) compare::report_folder(out);
   compare::CompareConfig config;
   config.run_dir = run_dir;
@@ -464,6 +465,7 @@ py::object compare_run(const std::string& run_dir, const std::string& against, d
   if (!hydro_transport.empty())
     config.hydro_model.transport = hydro::transport_from_string(hydro_transport, "--hydro-transport");
   if (hydro_phi) config.hydro_model.phi = *hydro_phi;
+  if (hydro_viscosity) config.hydro_model.viscosity = *hydro_viscosity;
   config.md_run = md_run;
   config.continuum_for_figures = !out.empty() && figures;
   Progress progress(progress_callback);
@@ -567,8 +569,8 @@ void bind_md(py::module_& m) {
 void bind_compare(py::module_& m) {
   m.def("compare", &compare_run, py::arg("run_dir"), py::arg("against"), py::arg("sigma"), py::arg("allowance"),
         py::arg("window_decades"), py::arg("until"), py::arg("observables"), py::arg("hydro_cells"),
-        py::arg("hydro_eos"), py::arg("hydro_phi"), py::arg("hydro_transport"), py::arg("md_run"), py::arg("out"),
-        py::arg("figures"), py::arg("progress"));
+        py::arg("hydro_eos"), py::arg("hydro_phi"), py::arg("hydro_transport"), py::arg("hydro_viscosity"),
+        py::arg("md_run"), py::arg("out"), py::arg("figures"), py::arg("progress"));
   m.def("reproduce", &reproduce, py::arg("scale"), py::arg("out"), py::arg("threads"), py::arg("seed"),
         py::arg("realizations"), py::arg("hydro_until"), py::arg("md_run"), py::arg("tracer_trajectories"),
         py::arg("figures"), py::arg("progress"));

@@ -8,7 +8,7 @@ from . import _progress
 
 def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades=0.5, until=None,
             observables=None, hydro_cells=_coldblast.default_core_cells, hydro_eos=None, hydro_phi=None,
-            hydro_transport=None, md_run=None, out=None, figures=True):
+            hydro_transport=None, hydro_viscosity=None, md_run=None, out=None, figures=True):
     """Compare a run directory's running exponents with a reference (the same call as ``coldblast compare``).
 
     Parameters
@@ -33,6 +33,9 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
     hydro_eos, hydro_phi, hydro_transport : str, float, str or None
         The Navier-Stokes model for against="hydro" (``--hydro-eos --hydro-phi --hydro-transport``);
         None: the default (the hard-particle EOS at the run's phi, Enskog transport; docs/compare.md).
+    hydro_viscosity : bool or None
+        Shear (and Enskog bulk) viscosity in that model (``--hydro-viscosity on|off``); None: off, the
+        paper's conduction-only core (docs/verification.md, "Viscosity in the comparison").
     md_run : str, os.PathLike or None
         For a tracer run_dir (``coldblast tracer --out``): an MD run of the same scene, compared at
         every common time (``--md-run``: the verdict's "tracer_md" key; figures tracer_vs_md.png and
@@ -54,5 +57,6 @@ def compare(run_dir, against="theory", sigma=2.0, allowance=None, window_decades
                               "" if hydro_eos is None else text(hydro_eos, "--hydro-eos"),
                               None if hydro_phi is None else number(hydro_phi, "--hydro-phi"),
                               "" if hydro_transport is None else text(hydro_transport, "--hydro-transport"),
+                              None if hydro_viscosity is None else flag(hydro_viscosity, "--hydro-viscosity"),
                               "" if md_run is None else os.fspath(md_run), "" if out is None else os.fspath(out),
                               flag(figures, "figures"), None)

@@ -144,3 +144,22 @@ TEST_CASE("start options through the flags and the [hydro] table name --start, -
   CHECK_THROWS_WITH(hydro::read_hydro_model_keys("[hydro]\nr0 = \"big\"\n", "scene.toml"),
                     Catch::Contains("hydro.r0 in scene.toml must be a number"));
 }
+
+TEST_CASE("viscosity as a hydro key: a TOML boolean that replaces --viscosity, core mode only", "[fast]") {
+  const hydro::HydroModelKeys on = hydro::read_hydro_model_keys("[hydro]\nviscosity = true\n", "scene.toml");
+  REQUIRE(on.viscosity);
+  CHECK(*on.viscosity);
+  CHECK_FALSE(hydro::read_hydro_model_keys("[hydro]\neos = \"ideal\"\n", "scene.toml").viscosity);
+  hydro::HydroOptions options;  // --viscosity off (the flag's default)
+  CHECK_FALSE(hydro::navier_stokes_config(options, false).physics.viscosity);
+  CHECK(hydro::navier_stokes_config(options, false, on).physics.viscosity);
+  CHECK_FALSE(hydro::navier_stokes_config(options, true, on).physics.viscosity);  // Euler: no transport at all
+  options.viscosity = true;
+  const hydro::HydroModelKeys off = hydro::read_hydro_model_keys("[hydro]\nviscosity = false\n", "scene.toml");
+  CHECK_FALSE(hydro::navier_stokes_config(options, false, off).physics.viscosity);
+  for (const char* bad : {"\"on\"", "1"})
+    CHECK_THROWS_WITH(hydro::read_hydro_model_keys(std::string("[hydro]\nviscosity = ") + bad + "\n", "scene.toml"),
+                      Catch::Contains("hydro.viscosity in scene.toml must be true or false"));
+  CHECK_THROWS_WITH(hydro::read_hydro_model_keys("[hydro]\nviscous = true\n", "scene.toml"),
+                    Catch::Contains("allowed: eos, phi, transport, viscosity, start, r0"));
+}

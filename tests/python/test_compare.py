@@ -33,6 +33,7 @@ def test_subset_and_report(tmp_path):
     ({"observables": ["speed"]}, ["--observables", "speed"]),
     ({"against": "hydro"}, ["--against", "hydro"]),  # the fixture has no lambda in summary.json
     ({"hydro_eos": "vdw"}, ["--hydro-eos", "vdw"]),
+    ({"hydro_viscosity": True}, ["--hydro-viscosity", "on"]),  # a model option without --against hydro
     ({"allowance": -1}, ["--allowance", -1]),  # not the "default" sentinel it once was
 ])
 def test_bad_input_is_the_cli_error(kwargs, flags):
@@ -90,3 +91,13 @@ def test_observables_as_one_string_are_the_command_line_list():
     as_text = coldblast.compare(FIXTURE, observables="R_imp,n0", until=200, figures=False)
     assert [v["name"] for v in as_text["observables"]] == ["R_imp", "n0"]
     assert as_text == as_list
+
+
+def test_viscous_hydro_verdict_equals_cli():
+    """hydro_viscosity=True is --hydro-viscosity on: the same verdict, its model named viscous."""
+    run = os.path.join(REPO, "data", "paper-2d")
+    expected = cli_json("compare", "--no-report", run, "--against", "hydro", "--hydro-viscosity", "on", expect=3)
+    verdict = coldblast.compare(run, against="hydro", hydro_viscosity=True, figures=False)
+    assert verdict == expected
+    assert verdict["hydro_model"]["viscosity"] is True
+    assert verdict["hydro_model"]["description"].endswith("Enskog transport, viscous)")
