@@ -54,6 +54,8 @@ analyse_deep() {
     [ $ref = paper ] && [[ $scene == *3d* ]] && continue  # the paper's Table 1 is 2D
     $cb compare "$out/md" --against $ref --out "$out/vs-$ref" > "$out/vs-$ref.txt" || true
   done
+  # the full NS (viscous) beside the paper's conduction-only core (docs/verification.md, "Viscosity in the comparison")
+  $cb compare "$out/md" --against hydro --hydro-viscosity on --out "$out/vs-hydro-viscous" > "$out/vs-hydro-viscous.txt" || true
   local tobs='observables=["R_imp","V_imp","C_imp","p_imp"]'
   $cb tracer "$scene" --transport enskog --trajectories 131072 --threads 2 --seed "$seed" --set t_min="$tmin" \
     --set t_max="$tmax" --set "$tobs" --out "$out/tracer"
