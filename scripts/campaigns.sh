@@ -64,6 +64,8 @@ analyse_deep() {
   $cb compare "$out/tracer" --md-run "$out/md" --out "$out/tracer-vs-md" > "$out/tracer-vs-md.txt" || true
   $cb compare "$out/tracer-mdfields" --md-run "$out/md" --out "$out/tracer-mdfields-vs-md" \
     > "$out/tracer-mdfields-vs-md.txt" || true
+  # the tables of docs/verification.md's campaign section, from these files (R/λ and t: the defaults)
+  /usr/bin/python3 "$(dirname "$0")/campaign_tables.py" "$out" > "$out/tables.md" || true
 }
 finish5() { analyse_deep campaigns/c5 scenes/paper-2d.toml 5 0.6103515625 320000 "$@"; }
 finish6() { analyse_deep campaigns/c6 scenes/paper-3d.toml 6 0.7505950927734375 58498.28719409885 "$@"; }

@@ -35,3 +35,25 @@ def test_python_md_runs(tmp_path, monkeypatch):
     history = namespace["history"]
     assert history.R_over_lambda.min() >= 10 and history.t.max() == namespace["hydro"]["until"]
     assert set(history.name) == {"n0/n", "T0/Rdot^2", "R"}  # the tour records no profiles: no H, no centre
+
+
+def test_campaign_tables_in_the_docs_are_the_datas():
+    """Every `scripts/campaign_tables.py ...` command that docs/verification.md shows is run, and every
+    table row it prints must be a line of the page: the campaign tables there are data/'s numbers,
+    not retyped ones."""
+    import shlex
+    import subprocess
+    import sys
+    with open(os.path.join(REPO, "docs", "verification.md")) as f:
+        text = f.read()
+    lines = {line.strip() for line in text.splitlines()}
+    commands = re.findall(r"^(scripts/campaign_tables\.py .*)$", text, flags=re.M)
+    assert commands, "docs/verification.md shows no scripts/campaign_tables.py command"
+    for command in commands:
+        argv = shlex.split(command)
+        out = subprocess.run([sys.executable, os.path.join(REPO, argv[0])] + argv[1:], cwd=REPO,
+                             capture_output=True, text=True, check=True).stdout
+        rows = [row for row in out.splitlines() if row.startswith("|")]
+        assert len(rows) >= 4
+        missing = [row for row in rows if row not in lines]
+        assert not missing, f"{command}: rows not in docs/verification.md: {missing}"

@@ -368,3 +368,38 @@ def test_amplitude_history_layout_keeps_the_legend_on_the_canvas():
             assert overlap_x <= 1e-12 or overlap_y <= 1e-12, (n, k)
             assert py >= -1e-12 and py + height <= 0.9 + 1e-12
     assert ahf.layout(6, 3)[3] == (1.0, 0.08) and ahf.layout(5, 3)[2] == (2 / 3, 0.0)
+
+
+def test_campaign_tables_select_and_format_what_compare_wrote(tmp_path):
+    """scripts/campaign_tables.py prints compare's own numbers: the last time's amplitudes with
+    their verdicts, MD/NS - 1 at the recorded R/λ nearest to --at (errors to two significant figures),
+    and the tracer's ratio in both backgrounds; without the tracer folders only the amplitude tables;
+    a missing folder or a bad --at is refused with exit code 2."""
+    head = ("# comment\nt,R_over_lambda,amplitude,md,md_stderr,ns,md_over_ns_minus_1,"
+            "md_over_ns_minus_1_stderr,deviation_sigma,continuum_bound,verdict\n")
+    (tmp_path / "c" / "vs-hydro").mkdir(parents=True)
+    (tmp_path / "c" / "vs-hydro" / "amplitudes.csv").write_text(
+        head + "100,10,H/R,0.5,0.01,0.52,-0.0384615,0.0192,-2.0,0.5,miss\n"
+        "400,20,H/R,0.42,0.0043,0.45,-0.0666667,0.00956,-6.98,0.3,miss\n"
+        "400,20,T0/Rdot^2,1.383,0.061,1.3733,0.00706,0.0445,0.16,0.3,pass\n")
+    script = [sys.executable, os.path.join(REPO, "scripts", "campaign_tables.py")]
+    out = subprocess.run(script + [str(tmp_path / "c"), "--at", "9", "30"],
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    assert out[0] == "At t = 400 (R/λ = 20.0):"
+    assert out[4] == "| H/R | 0.4200 ± 0.0043 | −6.67 % (−7.0) | miss | 0.45 |"
+    assert out[5] == "| T0/Ṙ² (100-particle ball) | 1.383 ± 0.061 | +0.71 % (+0.2) | pass | 1.3733 |"
+    assert out[9] == "| R/λ | 10.0 | 20.0 |"
+    assert out[11] == "| H/R | −3.8 ± 1.9 | −6.67 ± 0.96 |"
+    assert out[12] == "| T0/Ṙ² (100-particle ball) | – | +0.7 ± 4.5 |"
+    assert len(out) == 13  # no tracer folders: no tracer table
+    tracer_head = "# c\nt,observable,tracer,tracer_stderr,md,md_stderr,ratio_minus_1,ratio_minus_1_stderr\n"
+    for name, ratio in (("tracer-vs-md", "0.264"), ("tracer-mdfields-vs-md", "0.061")):
+        (tmp_path / "c" / name).mkdir()
+        (tmp_path / "c" / name / "tracer_vs_md.csv").write_text(tracer_head + f"398,C_imp,1,0,1,0,{ratio},0.021\n")
+    out = subprocess.run(script + [str(tmp_path / "c"), "--times", "400"],
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    assert out[-1] == "| 398 | 20 | +0.264 ± 0.021 | +0.061 ± 0.021 | – | – | – | – |"
+    bad = subprocess.run(script + [str(tmp_path / "c"), "--at", "0"], capture_output=True, text=True)
+    assert bad.returncode == 2 and "--at and --times: each value must be > 0" in bad.stderr
+    missing = subprocess.run(script + [str(tmp_path / "none")], capture_output=True, text=True)
+    assert missing.returncode == 2 and "none/vs-hydro/amplitudes.csv: No such file or directory" in missing.stderr
