@@ -9,6 +9,8 @@ import re
 import subprocess
 import sys
 
+import pytest
+
 from conftest import REPO
 
 HEAVY = os.path.join(REPO, "data", "recollisions", "heavy")
@@ -339,6 +341,13 @@ def test_replication_compares_nearest_times_in_combined_sigma(tmp_path):
                          capture_output=True, text=True, check=True).stdout.splitlines()
     assert out[2] == "| 99 | H/R | +5.00 ± 3.00 | +1.00 ± 4.00 | +0.8 |"
     assert out[3] == "| 300 | H/R | +0.00 ± 1.00 | +2.00 ± 1.00 | −1.4 |"
+    # --pooled: the inverse-variance mean, (0.05/9 + 0.01/16)/(1/9 + 1/16) = 0.0356 ± (1/9 + 1/16)^(-1/2) = 0.024
+    assert replication.pooled((0.05, 0.03), (0.01, 0.04)) == pytest.approx((0.0356, 0.024), rel=1e-12)
+    out = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "replication.py"), str(tmp_path / "a.csv"),
+                          str(tmp_path / "b.csv"), "--at", "100", "--amplitudes", "H/R", "--pooled"],
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    assert out[0].endswith("| difference (σ) | pooled |") and out[1] == "|---|---|---|---|---|---|"
+    assert out[2] == "| 99 | H/R | +5.00 ± 3.00 | +1.00 ± 4.00 | +0.8 | +3.56 ± 2.40 |"
     bad = subprocess.run([sys.executable, os.path.join(REPO, "scripts", "replication.py"), str(tmp_path / "a.csv"),
                           str(tmp_path / "b.csv"), "--at", "0"], capture_output=True, text=True)
     assert bad.returncode == 2 and "--at: each R/λ must be > 0" in bad.stderr
