@@ -38,17 +38,17 @@ def test_python_md_runs(tmp_path, monkeypatch):
 
 
 def test_campaign_tables_in_the_docs_are_the_datas():
-    """Every `scripts/campaign_tables.py ...` command that docs/verification.md shows is run, and every
-    table row it prints must be a line of the page: the campaign tables there are data/'s numbers,
-    not retyped ones."""
+    """Every `scripts/campaign_tables.py ...` and `scripts/replication.py ...` command that
+    docs/verification.md shows on a line of its own is run, and every table row it prints must be a
+    line of the page: the campaign tables there are data/'s numbers, not retyped ones."""
     import shlex
     import subprocess
     import sys
     with open(os.path.join(REPO, "docs", "verification.md")) as f:
         text = f.read()
     lines = {line.strip() for line in text.splitlines()}
-    commands = re.findall(r"^(scripts/campaign_tables\.py .*)$", text, flags=re.M)
-    assert commands, "docs/verification.md shows no scripts/campaign_tables.py command"
+    commands = re.findall(r"^(scripts/(?:campaign_tables|replication)\.py .*)$", text, flags=re.M)
+    assert {c.split()[0] for c in commands} == {"scripts/campaign_tables.py", "scripts/replication.py"}
     for command in commands:
         argv = shlex.split(command)
         out = subprocess.run([sys.executable, os.path.join(REPO, argv[0])] + argv[1:], cwd=REPO,
