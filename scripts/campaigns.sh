@@ -4,7 +4,8 @@
 # Issue 32's deep campaigns: 5 (2D, R/λ = 307, 128 realizations in 64 shards, about 100 core-hours) and
 # 6 (3D, R/λ = 37, 32 realizations in 16 shards, about 13 hours of both cores); each resumes its runs
 # from their checkpoints when started again and skips a shard already finished. `finish5 DIR...` and
-# `finish6 DIR...` do only the analysis, of shards made elsewhere, into campaigns/c5 or c6.
+# `finish6 DIR...` do only the analysis, of shards made elsewhere, into campaigns/c5 or c6; `interim5`
+# looks at campaign 5 midway (data/campaign5-2d-deep/interim, from the shards kept there).
 # `--keep DIR` (first): each finished shard of 5 and 6 is copied whole into DIR/shards and logged in
 # DIR/provenance.log (scripts/keep_shard.sh), e.g. on a disk that outlives the machine; a shard found
 # there finished and missing here is copied back instead of run again (a new machine resumes from DIR).
@@ -68,10 +69,40 @@ analyse_deep() {
   /usr/bin/python3 "$(dirname "$0")/campaign_tables.py" "$out" > "$out/tables.md" || true
 }
 finish5() { analyse_deep campaigns/c5 scenes/paper-2d.toml 5 0.6103515625 320000 "$@"; }
+# Campaign 5 midway: the kept shards k/64 with k not a multiple of 8 (they share no realization with
+# shard 0/8's 16, so the two are independent ensembles) merged, compared with the dense NS (without and
+# with viscosity) and theory, and set against shard 0: replaces data/campaign5-2d-deep/interim whole.
+interim5() {
+  local d=data/campaign5-2d-deep out=campaigns/c5-interim dirs=() k n
+  for k in $(seq 1 63); do
+    if [ $((k % 8)) -ne 0 ] && [ -f "$d/shards/c5-2d-deep-shard$k-of-64/manifest.json" ]; then
+      dirs+=("$d/shards/c5-2d-deep-shard$k-of-64")
+    fi
+  done
+  n=${#dirs[@]}
+  [ "$n" -ge 2 ] || { echo "campaigns.sh: interim5 needs at least 2 kept shards in $d/shards (found $n)" >&2; exit 2; }
+  rm -rf "$out"; mkdir -p "$out/interim"
+  $cb md merge "${dirs[@]}" --out "$out/md" 2>&1 | head -3 > "$out/interim/merge.txt"
+  $cb compare "$out/md" --against hydro --out "$out/vs-hydro" > "$out/interim/vs-hydro.txt" 2>/dev/null || true
+  $cb compare "$out/md" --against hydro --hydro-viscosity on --out "$out/vs-hydro-viscous" \
+    > "$out/interim/vs-hydro-viscous.txt" 2>/dev/null || true
+  $cb compare "$out/md" --against theory --out "$out/vs-theory" > "$out/interim/vs-theory.txt" 2>/dev/null || true
+  cp "$out/vs-hydro/amplitudes.csv" "$out/interim/amplitudes.csv"
+  cp "$out/vs-hydro-viscous/amplitudes.csv" "$out/interim/amplitudes-viscous.csv"
+  /usr/bin/python3 scripts/replication.py "$out/interim/amplitudes.csv" "$d/vs-hydro/amplitudes.csv" \
+    --labels "shards k/64 ($((2 * n)))" "shard 0 of 8 (16)" > "$out/interim/replication.md"
+  /usr/bin/python3 scripts/amplitude_history_figure.py "$out/interim/amplitudes.csv" "$d/vs-hydro/amplitudes.csv" \
+    --labels "shards k/64 ($((2 * n)) new realizations)" "shard 0 of 8 (16 realizations)" --from 25 \
+    --out "$out/interim/replication.png" \
+    --title "Campaign 5 (2D, paper scene, kick start): two independent ensembles against the dense NS" >&2
+  rm -rf "$d/interim"; cp -r "$out/interim" "$d/interim"
+  echo "campaigns.sh interim5: $n shards ($((2 * n)) realizations) into $d/interim"
+}
 finish6() { analyse_deep campaigns/c6 scenes/paper-3d.toml 6 0.7505950927734375 58498.28719409885 "$@"; }
 case "${1:-}" in
   finish5) shift; [ $# -ge 1 ] || { echo "campaigns.sh: finish5 needs the shards' folders" >&2; exit 2; }; finish5 "$@"; exit ;;
   finish6) shift; [ $# -ge 1 ] || { echo "campaigns.sh: finish6 needs the shards' folders" >&2; exit 2; }; finish6 "$@"; exit ;;
+  interim5) [ $# -eq 1 ] || { echo "campaigns.sh: interim5 takes no argument" >&2; exit 2; }; interim5; exit ;;
 esac
 for c in "$@"; do
   case "$c" in
@@ -117,6 +148,6 @@ for c in "$@"; do
            --threads 2 --seed 61 --set t_min=0.7505950927734375 --set t_max=58498.28719409885 --set "$obs" --shard $s/16
        done
        finish6 campaigns/c6-3d-deep-shard{0..15} ;;
-    *) echo "campaigns.sh: campaign '$c' is not one of 1, 2, 3, 4, 5, 6 (or, first and alone: finish5 DIR..., finish6 DIR)" >&2; exit 2 ;;
+    *) echo "campaigns.sh: campaign '$c' is not one of 1, 2, 3, 4, 5, 6 (or, first and alone: finish5 DIR..., finish6 DIR..., interim5)" >&2; exit 2 ;;
   esac
 done
