@@ -22,18 +22,22 @@ PANELS = [("n(centre)/n", "n(centre)/n_∞"), ("H/R", "H/R"), ("T(centre)/Rdot^2
           ("n0/n", "n_0/n_∞ (100-particle ball)"), ("T0/Rdot^2", "T_0/Ṙ^2 (100-particle ball)"), ("R", "R (front)")]
 COLOURS = ["#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e"]
 
+TOP = 0.93  # the panels' and the legend's top, in screen fractions: the title's two lines sit above
+LEGEND_STRIP = 0.06  # the legend's own strip when the panels fill the grid
+
 
 def layout(panels, columns):
     """The multiplot's grid in screen fractions: (rows, panel height, legend origin, legend size). The
-    panels fill 0.9 of the height under the title, from the top left; the legend takes the first free
-    slot, or, when every slot holds a panel, a strip of its own between the title and the panels."""
+    panels fill the height under the title's two lines (TOP), from the top left; the legend takes the
+    first free slot, or, when every slot holds a panel, a strip of its own between the title and the
+    panels."""
     rows = (panels + columns - 1) // columns
     if panels < rows * columns:
-        height = 0.9 / rows
-        return rows, height, ((panels % columns) / columns, 0.9 - (panels // columns + 1) * height), \
+        height = TOP / rows
+        return rows, height, ((panels % columns) / columns, TOP - (panels // columns + 1) * height), \
             (1 / columns, height)
-    height = 0.82 / rows
-    return rows, height, (0.0, 0.82), (1.0, 0.08)
+    height = (TOP - LEGEND_STRIP) / rows
+    return rows, height, (0.0, TOP - LEGEND_STRIP), (1.0, LEGEND_STRIP)
 
 
 def read_history(path, start):

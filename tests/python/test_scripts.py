@@ -369,14 +369,17 @@ def test_amplitude_history_layout_keeps_the_legend_on_the_canvas():
     for n in range(1, 10):
         rows, height, (lx, ly), (lw, lh) = ahf.layout(n, 3)
         assert rows == (n + 2) // 3
-        assert 0 <= lx and lx + lw <= 1 + 1e-12 and 0 <= ly and ly + lh <= 0.9 + 1e-12, n
+        assert 0 <= lx and lx + lw <= 1 + 1e-12 and 0 <= ly and ly + lh <= ahf.TOP + 1e-12, n
         for k in range(n):
             px, py = (k % 3) / 3, (rows - 1 - k // 3) * height
             overlap_x = min(px + 1 / 3, lx + lw) - max(px, lx)
             overlap_y = min(py + height, ly + lh) - max(py, ly)
             assert overlap_x <= 1e-12 or overlap_y <= 1e-12, (n, k)
-            assert py >= -1e-12 and py + height <= 0.9 + 1e-12
-    assert ahf.layout(6, 3)[3] == (1.0, 0.08) and ahf.layout(5, 3)[2] == (2 / 3, 0.0)
+            assert py >= -1e-12 and py + height <= ahf.TOP + 1e-12
+    # the panels fill the space under the title (and the legend's strip), leaving no gap
+    assert ahf.TOP <= 0.95
+    assert abs(ahf.layout(6, 3)[1] * 2 + ahf.LEGEND_STRIP - ahf.TOP) < 1e-12
+    assert ahf.layout(6, 3)[3] == (1.0, ahf.LEGEND_STRIP) and ahf.layout(5, 3)[2] == (2 / 3, 0.0)
 
 
 def test_campaign_tables_select_and_format_what_compare_wrote(tmp_path):
