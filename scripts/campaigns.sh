@@ -89,9 +89,9 @@ interim5() {
   $cb compare "$out/md" --against theory --out "$out/vs-theory" > "$out/interim/vs-theory.txt" 2>/dev/null || true
   cp "$out/vs-hydro/amplitudes.csv" "$out/interim/amplitudes.csv"
   cp "$out/vs-hydro-viscous/amplitudes.csv" "$out/interim/amplitudes-viscous.csv"
-  /usr/bin/python3 scripts/replication.py "$out/interim/amplitudes.csv" "$d/vs-hydro/amplitudes.csv" \
+  /usr/bin/python3 scripts/replication.py "$out/interim/amplitudes.csv" "$d/shard0-of-8/vs-hydro/amplitudes.csv" \
     --labels "shards k/64 ($((2 * n)))" "shard 0 of 8 (16)" > "$out/interim/replication.md"
-  /usr/bin/python3 scripts/amplitude_history_figure.py "$out/interim/amplitudes.csv" "$d/vs-hydro/amplitudes.csv" \
+  /usr/bin/python3 scripts/amplitude_history_figure.py "$out/interim/amplitudes.csv" "$d/shard0-of-8/vs-hydro/amplitudes.csv" \
     --labels "shards k/64 ($((2 * n)) new realizations)" "shard 0 of 8 (16 realizations)" --from 25 \
     --out "$out/interim/replication.png" \
     --title "Campaign 5 (2D, paper scene, kick start): two independent ensembles against the dense NS" >&2
