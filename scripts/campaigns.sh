@@ -1,7 +1,7 @@
 #!/bin/bash
 # The issue-6 campaigns exactly as recorded in docs/verification.md ("Campaign 1" … "Campaign 4"),
 # one per argument: bash scripts/campaigns.sh 2 3 4   (outputs in ./campaigns/, reports beside them).
-# Issue 32's deep campaigns: 5 (2D, R/λ = 307, 128 realizations in 64 shards, about 100 core-hours) and
+# Issue 32's deep campaigns: 5 (2D, R/λ = 307, 128 realizations in 64 shards, about 20 hours of both cores) and
 # 6 (3D, R/λ = 37, 32 realizations in 16 shards, about 13 hours of both cores); each resumes its runs
 # from their checkpoints when started again and skips a shard already finished. `finish5 DIR...` and
 # `finish6 DIR...` do only the analysis, of shards made elsewhere, into campaigns/c5 or c6; `interim5`
@@ -133,8 +133,9 @@ for c in "$@"; do
        done ;;
     5) # 64 shards k/64 (blocks k and k + 64), 2 realizations each, so that a finished one is a small
        # folder kept in data/ (with its accumulators.csv, which md merge needs) while the rest runs. The
-       # shards k = 0, 8, ..., 56 hold the realizations of data/campaign5-2d-deep (shard 0/8, whose
-       # accumulators.csv was not kept, so it cannot be merged): they run last.
+       # shards k = 0, 8, ..., 56 hold the realization numbers of data/campaign5-2d-deep/shard0-of-8 (whose
+       # accumulators.csv was not kept, so it cannot be merged; its build placed the gas differently, so
+       # these are new microstates, not copies): they run last.
        c5() { run_or_resume campaigns/c5-2d-deep-shard$1-of-64 md run scenes/paper-2d.toml --realizations 128 \
                 --set block_size=1 --threads 2 --seed 51 --set t_min=0.6103515625 --set t_max=320000 --set "$obs" \
                 --shard $1/64; }
